@@ -1,0 +1,106 @@
+//! Discrete element method for spheres (METHOD.md §2).
+//!
+//! `Dem` holds the state of the granular phase: spheres, walls, materials and the laws between
+//! them, contact history and the neighbour list. The order of the phases of a step lives in
+//! `crate::simulation`; this module provides the phases.
+
+pub mod contact;
+pub mod contacts;
+pub mod domain;
+pub mod forces;
+pub mod insertion;
+pub mod integrate;
+pub mod material;
+pub mod neighbor;
+pub mod spheres;
+pub mod timestep;
+pub mod walls;
+
+use serde::{Deserialize, Serialize};
+
+use crate::math::Vec3;
+use contacts::PairContacts;
+use domain::Domain;
+use material::{Material, PairLaw};
+use neighbor::NeighborList;
+use spheres::Spheres;
+use walls::{Wall, WallContact, WallSlots};
+
+/// Wall slots of a sphere that touches no wall.
+pub const WALL_SLOTS_EMPTY: WallSlots = [WallContact::EMPTY; walls::WALL_SLOTS];
+
+/// Bounds beyond which a run is declared unstable.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Limits {
+    /// Largest plausible sphere speed [m s⁻¹].
+    pub max_speed: f64,
+    /// Largest plausible overlap as a fraction of the smaller radius [-].
+    pub max_overlap_ratio: f64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits { max_speed: 100.0, max_overlap_ratio: 0.5 }
+    }
+}
+
+/// Counters of the last force evaluation.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Stats {
+    /// Touching sphere-sphere pairs.
+    pub pair_contacts: usize,
+    /// Sphere-wall contacts.
+    pub wall_contacts: usize,
+    /// Largest overlap / smaller radius [-].
+    pub max_overlap_ratio: f64,
+    /// Slot of the sphere with the largest overlap ratio.
+    pub max_overlap_slot: usize,
+    /// Wall contacts dropped because a sphere touched more than `WALL_SLOTS` surfaces.
+    pub dropped_wall_contacts: usize,
+    /// Spheres removed so far because they left the domain.
+    pub spheres_lost: usize,
+}
+
+/// The granular phase.
+#[derive(Clone, Debug)]
+pub struct Dem {
+    /// All spheres.
+    pub spheres: Spheres,
+    /// Materials, indexed by `MaterialIndex`.
+    pub materials: Vec<Material>,
+    /// Contact laws, `laws[a * n + b]` for materials a, b.
+    pub laws: Vec<PairLaw>,
+    /// Walls.
+    pub walls: Vec<Wall>,
+    /// The box, with its periodic axes.
+    pub domain: Domain,
+    /// Gravitational acceleration [m s⁻²].
+    pub gravity: Vec3,
+    /// Time step Δt [s].
+    pub dt: f64,
+    /// Instability bounds.
+    pub limits: Limits,
+    /// Verlet list.
+    pub neighbors: NeighborList,
+    /// Pair history and reactions.
+    pub contacts: PairContacts,
+    /// Wall contact history, one set of slots per sphere.
+    pub wall_slots: Vec<WallSlots>,
+    /// Mesh triangles near each sphere: CSR over spheres, for each mesh wall.
+    pub mesh_candidates: forces::MeshCandidates,
+    /// Counters of the last force evaluation.
+    pub stats: Stats,
+}
+
+impl Dem {
+    /// The law between materials a and b.
+    #[inline]
+    pub fn law(&self, a: u16, b: u16) -> &PairLaw {
+        &self.laws[a as usize * self.materials.len() + b as usize]
+    }
+
+    /// Index of the material with this name.
+    pub fn material_index(&self, name: &str) -> Option<u16> {
+        self.materials.iter().position(|m| m.name == name).map(|i| i as u16)
+    }
+}

@@ -1,0 +1,442 @@
+//! VTK XML files for ParaView: particles (.vtu), surfaces (.vtp) and uniform
+//! grids (.vti).
+//!
+//! All files use "raw appended" encoding: a small XML header followed by one
+//! binary block of little-endian data, each array prefixed by its byte count
+//! as a UInt64. That is the most compact form ParaView reads without a
+//! compression library, and it stores every f64 exactly. Each file is written
+//! atomically, so ParaView never loads a half-written frame.
+
+use super::{invalid_input, write_atomically, xml_escape};
+use glam::DVec3;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// The values of one data array: one entry per point or per cell.
+#[derive(Debug, Clone, Copy)]
+pub enum Values<'a> {
+    /// One f64 per item (written as Float64, one component).
+    Scalars(&'a [f64]),
+    /// One 3-vector per item (Float64, three components), e.g. velocity [m/s].
+    Vectors(&'a [DVec3]),
+    /// One integer per item (Int64), e.g. particle ids or material indices.
+    Ints(&'a [i64]),
+}
+
+impl Values<'_> {
+    /// Number of items (points or cells) the array covers.
+    pub fn len(&self) -> usize {
+        match self {
+            Values::Scalars(v) => v.len(),
+            Values::Vectors(v) => v.len(),
+            Values::Ints(v) => v.len(),
+        }
+    }
+
+    /// True when the array has no items.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// A named data array attached to points or cells; the name is what ParaView
+/// shows in its colouring menu (put units in it, e.g. `"velocity_m_s"`).
+#[derive(Debug, Clone, Copy)]
+pub struct Array<'a> {
+    /// Array name as shown in ParaView.
+    pub name: &'a str,
+    /// The values, one per point or cell.
+    pub values: Values<'a>,
+}
+
+/// VTK cell type id of a single-point cell.
+const VTK_VERTEX: u8 = 1;
+
+/// Writes particles as an UnstructuredGrid (.vtu): one point per particle at
+/// `positions` [m], one VTK_VERTEX cell each, and `point_data` arrays with one
+/// value per particle. Spheres: ParaView's Point Gaussian or Glyph filter,
+/// scaled by a radius array, shows them.
+///
+/// Errors with `InvalidInput`, naming the array, when an array's length is not
+/// `positions.len()`. An empty `positions` gives a valid file with no points.
+pub fn write_points(path: &Path, positions: &[DVec3], point_data: &[Array]) -> std::io::Result<()> {
+    let n = positions.len();
+    check_lengths(point_data, n, "points")?;
+    let mut f = VtkFile::new("UnstructuredGrid", "");
+    let _ = writeln!(f.xml, r#"    <Piece NumberOfPoints="{n}" NumberOfCells="{n}">"#);
+    f.attributes("PointData", point_data);
+    f.xml.push_str("      <CellData>\n      </CellData>\n");
+    f.points(positions);
+    f.xml.push_str("      <Cells>\n");
+    f.array_i64("connectivity", 1, n, 0..n as i64);
+    f.array_i64("offsets", 1, n, 1..=n as i64);
+    f.begin_array("UInt8", Some("types"), 1, n);
+    f.data.resize(f.data.len() + n, VTK_VERTEX);
+    f.xml.push_str("      </Cells>\n    </Piece>\n");
+    f.finish(path)
+}
+
+/// Writes a triangulated surface as PolyData (.vtp): `vertices` [m],
+/// `triangles` as indices into `vertices`, and `cell_data` arrays with one
+/// value per triangle (e.g. wall force or wear).
+///
+/// Errors with `InvalidInput` when an array's length is not
+/// `triangles.len()` (naming the array) or a triangle refers to a vertex that
+/// does not exist; ParaView would crash or draw garbage on such a file.
+pub fn write_surface(
+    path: &Path,
+    vertices: &[DVec3],
+    triangles: &[[u32; 3]],
+    cell_data: &[Array],
+) -> std::io::Result<()> {
+    check_lengths(cell_data, triangles.len(), "triangles")?;
+    if let Some((i, t)) = triangles
+        .iter()
+        .enumerate()
+        .find(|(_, t)| t.iter().any(|&v| v as usize >= vertices.len()))
+    {
+        return Err(invalid_input(format!(
+            "triangle {i} {t:?} refers to a vertex >= the vertex count {}",
+            vertices.len()
+        )));
+    }
+    let (nv, nt) = (vertices.len(), triangles.len());
+    let mut f = VtkFile::new("PolyData", "");
+    let _ = writeln!(
+        f.xml,
+        r#"    <Piece NumberOfPoints="{nv}" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="{nt}">"#
+    );
+    f.xml.push_str("      <PointData>\n      </PointData>\n");
+    f.attributes("CellData", cell_data);
+    f.points(vertices);
+    f.xml.push_str("      <Polys>\n");
+    let conn = triangles.iter().flat_map(|t| t.map(i64::from));
+    f.array_i64("connectivity", 1, 3 * nt, conn);
+    f.array_i64("offsets", 1, nt, (1..=nt as i64).map(|i| 3 * i));
+    f.xml.push_str("      </Polys>\n    </Piece>\n");
+    f.finish(path)
+}
+
+/// Writes a uniform grid as ImageData (.vti) with `n = [nx, ny, nz]` cells,
+/// the grid's lowest corner at `origin` [m] and cell size `spacing` [m].
+/// `cell_data` arrays hold one value per cell, x fastest, then y, then z
+/// (index `i + nx * (j + ny * k)`).
+///
+/// Errors with `InvalidInput` when an array's length is not `nx * ny * nz`
+/// (naming the array), or when `origin` or `spacing` is not finite.
+pub fn write_image(
+    path: &Path,
+    n: [usize; 3],
+    origin: DVec3,
+    spacing: DVec3,
+    cell_data: &[Array],
+) -> std::io::Result<()> {
+    if !origin.is_finite() || !spacing.is_finite() {
+        return Err(invalid_input(format!(
+            "image origin {origin} and spacing {spacing} must be finite"
+        )));
+    }
+    let cells = n[0]
+        .checked_mul(n[1])
+        .and_then(|c| c.checked_mul(n[2]))
+        .ok_or_else(|| invalid_input(format!("image size {n:?} overflows")))?;
+    check_lengths(cell_data, cells, "cells")?;
+    // Extents count points, so n cells span points 0..=n.
+    let extent = format!("0 {} 0 {} 0 {}", n[0], n[1], n[2]);
+    let grid = format!(
+        r#"WholeExtent="{extent}" Origin="{} {} {}" Spacing="{} {} {}""#,
+        origin.x, origin.y, origin.z, spacing.x, spacing.y, spacing.z
+    );
+    let mut f = VtkFile::new("ImageData", &grid);
+    let _ = writeln!(f.xml, r#"    <Piece Extent="{extent}">"#);
+    f.xml.push_str("      <PointData>\n      </PointData>\n");
+    f.attributes("CellData", cell_data);
+    f.xml.push_str("    </Piece>\n");
+    f.finish(path)
+}
+
+/// Errors unless every array has exactly `n` items.
+fn check_lengths(arrays: &[Array], n: usize, what: &str) -> std::io::Result<()> {
+    for a in arrays {
+        if a.values.len() != n {
+            return Err(invalid_input(format!(
+                "VTK array '{}' has {} values but there are {n} {what}",
+                a.name,
+                a.values.len()
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// A VTK XML file under construction: the header text and the appended
+/// binary block that the header's `offset` attributes point into.
+struct VtkFile {
+    xml: String,
+    data: Vec<u8>,
+    kind: &'static str,
+}
+
+impl VtkFile {
+    /// Starts a file of dataset type `kind`; `attrs` go on the dataset element.
+    fn new(kind: &'static str, attrs: &str) -> Self {
+        let mut xml = String::from("<?xml version=\"1.0\"?>\n");
+        let _ = writeln!(
+            xml,
+            r#"<VTKFile type="{kind}" version="1.0" byte_order="LittleEndian" header_type="UInt64">"#
+        );
+        let sep = if attrs.is_empty() { "" } else { " " };
+        let _ = writeln!(xml, "  <{kind}{sep}{attrs}>");
+        VtkFile {
+            xml,
+            data: Vec::new(),
+            kind,
+        }
+    }
+
+    /// Declares a DataArray at the current end of the binary block and writes
+    /// its UInt64 byte-count header; the caller appends the values next.
+    fn begin_array(&mut self, ty: &str, name: Option<&str>, comps: usize, tuples: usize) {
+        let width = match ty {
+            "UInt8" => 1,
+            _ => 8,
+        };
+        let name = name
+            .map(|n| format!(r#" Name="{}""#, xml_escape(n)))
+            .unwrap_or_default();
+        let _ = writeln!(
+            self.xml,
+            r#"        <DataArray type="{ty}"{name} NumberOfComponents="{comps}" format="appended" offset="{}"/>"#,
+            self.data.len()
+        );
+        let bytes = (tuples * comps * width) as u64;
+        self.data.extend_from_slice(&bytes.to_le_bytes());
+        self.data.reserve(bytes as usize);
+    }
+
+    fn array_f64(&mut self, name: Option<&str>, comps: usize, tuples: usize, v: impl Iterator<Item = f64>) {
+        self.begin_array("Float64", name, comps, tuples);
+        v.for_each(|x| self.data.extend_from_slice(&x.to_le_bytes()));
+    }
+
+    fn array_i64(&mut self, name: &str, comps: usize, tuples: usize, v: impl Iterator<Item = i64>) {
+        self.begin_array("Int64", Some(name), comps, tuples);
+        v.for_each(|x| self.data.extend_from_slice(&x.to_le_bytes()));
+    }
+
+    /// Writes a `<PointData>` or `<CellData>` section holding `arrays`.
+    fn attributes(&mut self, section: &str, arrays: &[Array]) {
+        let _ = writeln!(self.xml, "      <{section}>");
+        for a in arrays {
+            let name = Some(a.name);
+            match a.values {
+                Values::Scalars(v) => self.array_f64(name, 1, v.len(), v.iter().copied()),
+                Values::Vectors(v) => self.array_f64(name, 3, v.len(), flatten(v)),
+                Values::Ints(v) => {
+                    self.begin_array("Int64", name, 1, v.len());
+                    v.iter().for_each(|x| self.data.extend_from_slice(&x.to_le_bytes()));
+                }
+            }
+        }
+        let _ = writeln!(self.xml, "      </{section}>");
+    }
+
+    /// Writes the `<Points>` section.
+    fn points(&mut self, positions: &[DVec3]) {
+        self.xml.push_str("      <Points>\n");
+        self.array_f64(Some("Points"), 3, positions.len(), flatten(positions));
+        self.xml.push_str("      </Points>\n");
+    }
+
+    /// Closes the XML, appends the binary block and writes the file atomically.
+    fn finish(mut self, path: &Path) -> std::io::Result<()> {
+        let _ = write!(
+            self.xml,
+            "  </{}>\n  <AppendedData encoding=\"raw\">\n   _",
+            self.kind
+        );
+        let mut bytes = self.xml.into_bytes();
+        bytes.reserve(self.data.len() + 40);
+        bytes.extend_from_slice(&self.data);
+        bytes.extend_from_slice(b"\n  </AppendedData>\n</VTKFile>\n");
+        write_atomically(path, &bytes)
+    }
+}
+
+fn flatten(v: &[DVec3]) -> impl Iterator<Item = f64> + '_ {
+    v.iter().flat_map(|p| p.to_array())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::test_dir;
+    use std::collections::HashMap;
+
+    /// One parsed DataArray: its attributes and its raw payload bytes.
+    struct Parsed {
+        attrs: HashMap<String, String>,
+        payload: Vec<u8>,
+    }
+
+    /// Reads a file written above back: checks the XML header's tags nest,
+    /// then follows each DataArray's offset into the appended block.
+    fn parse(path: &Path) -> (String, Vec<Parsed>) {
+        let bytes = std::fs::read(path).unwrap();
+        let marker = b"<AppendedData encoding=\"raw\">";
+        let pos = bytes.windows(marker.len()).position(|w| w == marker).unwrap();
+        let underscore = pos + bytes[pos..].iter().position(|&b| b == b'_').unwrap();
+        let data = &bytes[underscore + 1..];
+        let header = std::str::from_utf8(&bytes[..pos]).unwrap().to_string();
+        assert!(bytes.ends_with(b"\n  </AppendedData>\n</VTKFile>\n"));
+        check_nesting(&header);
+        let mut arrays = Vec::new();
+        for tag in header.split('<').filter(|t| t.starts_with("DataArray ")) {
+            let attrs = attributes(tag);
+            let off: usize = attrs["offset"].parse().unwrap();
+            let len = u64::from_le_bytes(data[off..off + 8].try_into().unwrap()) as usize;
+            let payload = data[off + 8..off + 8 + len].to_vec();
+            arrays.push(Parsed { attrs, payload });
+        }
+        (header, arrays)
+    }
+
+    fn attributes(tag: &str) -> HashMap<String, String> {
+        let mut out = HashMap::new();
+        let mut rest = tag;
+        while let Some(eq) = rest.find("=\"") {
+            let key = rest[..eq].rsplit(' ').next().unwrap().to_string();
+            let end = rest[eq + 2..].find('"').unwrap();
+            out.insert(key, rest[eq + 2..eq + 2 + end].to_string());
+            rest = &rest[eq + 2 + end + 1..];
+        }
+        out
+    }
+
+    /// Every opened element is closed in order (self-closing ones excepted);
+    /// the AppendedData and VTKFile elements are still open at the marker.
+    fn check_nesting(header: &str) {
+        let mut stack: Vec<String> = Vec::new();
+        for tag in header.split('<').skip(1) {
+            let tag = &tag[..tag.find('>').unwrap()];
+            let name: String = tag.chars().take_while(|c| !c.is_whitespace() && *c != '/').collect();
+            if tag.starts_with('?') || tag.ends_with('/') {
+                continue;
+            } else if let Some(closed) = tag.strip_prefix('/') {
+                assert_eq!(stack.pop().as_deref(), Some(closed), "in {header}");
+            } else {
+                stack.push(name);
+            }
+        }
+        assert_eq!(stack, ["VTKFile"], "in {header}");
+    }
+
+    fn find<'a>(arrays: &'a [Parsed], name: &str) -> &'a Parsed {
+        arrays.iter().find(|a| a.attrs.get("Name").map(String::as_str) == Some(name)).unwrap()
+    }
+
+    fn f64s(p: &Parsed) -> Vec<f64> {
+        assert_eq!(p.attrs["type"], "Float64");
+        p.payload.chunks_exact(8).map(|c| f64::from_le_bytes(c.try_into().unwrap())).collect()
+    }
+
+    fn i64s(p: &Parsed) -> Vec<i64> {
+        assert_eq!(p.attrs["type"], "Int64");
+        p.payload.chunks_exact(8).map(|c| i64::from_le_bytes(c.try_into().unwrap())).collect()
+    }
+
+    #[test]
+    fn points_round_trip() {
+        let path = test_dir("vtk_points").join("p.vtu");
+        let pos = [DVec3::new(0.1, -2.0, 3.5e-7), DVec3::new(1.0 / 3.0, 5.0, -0.0)];
+        let radius = [0.01, 0.0125];
+        let vel = [DVec3::X, DVec3::new(-1.0, 2.0, f64::MAX)];
+        let ids = [7, -3];
+        let arrays = [
+            Array { name: "radius", values: Values::Scalars(&radius) },
+            Array { name: "velocity <m/s>", values: Values::Vectors(&vel) },
+            Array { name: "id", values: Values::Ints(&ids) },
+        ];
+        write_points(&path, &pos, &arrays).unwrap();
+        let (header, a) = parse(&path);
+        assert!(header.contains(r#"type="UnstructuredGrid""#));
+        assert!(header.contains(r#"NumberOfPoints="2" NumberOfCells="2""#));
+        assert!(header.contains(r#"Name="velocity &lt;m/s&gt;""#));
+        assert_eq!(f64s(find(&a, "Points")), [0.1, -2.0, 3.5e-7, 1.0 / 3.0, 5.0, -0.0]);
+        assert_eq!(f64s(find(&a, "radius")), radius);
+        assert_eq!(find(&a, "velocity &lt;m/s&gt;").attrs["NumberOfComponents"], "3");
+        assert_eq!(f64s(find(&a, "velocity &lt;m/s&gt;")), [1.0, 0.0, 0.0, -1.0, 2.0, f64::MAX]);
+        assert_eq!(i64s(find(&a, "id")), ids);
+        assert_eq!(i64s(find(&a, "connectivity")), [0, 1]);
+        assert_eq!(i64s(find(&a, "offsets")), [1, 2]);
+        assert_eq!(find(&a, "types").payload, [VTK_VERTEX, VTK_VERTEX]);
+    }
+
+    #[test]
+    fn empty_points_still_valid() {
+        let path = test_dir("vtk_empty").join("p.vtu");
+        let arrays = [Array { name: "radius", values: Values::Scalars(&[]) }];
+        write_points(&path, &[], &arrays).unwrap();
+        let (header, a) = parse(&path);
+        assert!(header.contains(r#"NumberOfPoints="0""#));
+        assert_eq!(a.len(), 5);
+        assert!(a.iter().all(|p| p.payload.is_empty()));
+    }
+
+    #[test]
+    fn mismatched_lengths_are_invalid_input() {
+        let dir = test_dir("vtk_bad");
+        let arrays = [Array { name: "radius", values: Values::Scalars(&[1.0]) }];
+        let err = write_points(&dir.join("p.vtu"), &[DVec3::ZERO; 2], &arrays).unwrap_err();
+        assert_eq!(err.kind(), std::io::ErrorKind::InvalidInput);
+        assert!(err.to_string().contains("radius"), "{err}");
+        let err = write_surface(&dir.join("s.vtp"), &[DVec3::ZERO; 3], &[[0, 1, 3]], &[]).unwrap_err();
+        assert_eq!(err.kind(), std::io::ErrorKind::InvalidInput);
+        let err = write_image(&dir.join("g.vti"), [2, 2, 2], DVec3::ZERO, DVec3::ONE, &arrays).unwrap_err();
+        assert!(err.to_string().contains("radius"), "{err}");
+        let err = write_image(&dir.join("g.vti"), [usize::MAX, 2, 1], DVec3::ZERO, DVec3::ONE, &[]);
+        assert_eq!(err.unwrap_err().kind(), std::io::ErrorKind::InvalidInput);
+        assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
+    }
+
+    #[test]
+    fn surface_round_trip() {
+        let path = test_dir("vtk_surface").join("s.vtp");
+        let v = [DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::new(1.0, 1.0, 0.25)];
+        let tris = [[0, 1, 2], [1, 3, 2]];
+        let force = [DVec3::new(0.0, 0.0, -9.81), DVec3::new(1e-300, 0.0, 2.5)];
+        let wear = [0.5, 1.5];
+        let arrays = [
+            Array { name: "force", values: Values::Vectors(&force) },
+            Array { name: "wear", values: Values::Scalars(&wear) },
+        ];
+        write_surface(&path, &v, &tris, &arrays).unwrap();
+        let (header, a) = parse(&path);
+        assert!(header.contains(r#"NumberOfPoints="4""#) && header.contains(r#"NumberOfPolys="2""#));
+        let pts: Vec<f64> = v.iter().flat_map(|p| p.to_array()).collect();
+        assert_eq!(f64s(find(&a, "Points")), pts);
+        assert_eq!(i64s(find(&a, "connectivity")), [0, 1, 2, 1, 3, 2]);
+        assert_eq!(i64s(find(&a, "offsets")), [3, 6]);
+        assert_eq!(f64s(find(&a, "force")), [0.0, 0.0, -9.81, 1e-300, 0.0, 2.5]);
+        assert_eq!(f64s(find(&a, "wear")), wear);
+    }
+
+    #[test]
+    fn image_round_trip() {
+        let path = test_dir("vtk_image").join("g.vti");
+        let n = [3, 2, 1];
+        let p: Vec<f64> = (0..6).map(|i| i as f64 * 0.1).collect();
+        let u: Vec<DVec3> = (0..6).map(|i| DVec3::splat(i as f64)).collect();
+        let arrays = [
+            Array { name: "p", values: Values::Scalars(&p) },
+            Array { name: "u", values: Values::Vectors(&u) },
+        ];
+        write_image(&path, n, DVec3::new(-1.0, 0.0, 0.5), DVec3::new(0.1, 0.2, 0.3), &arrays).unwrap();
+        let (header, a) = parse(&path);
+        assert!(header.contains(r#"WholeExtent="0 3 0 2 0 1" Origin="-1 0 0.5" Spacing="0.1 0.2 0.3""#));
+        assert!(header.contains(r#"<Piece Extent="0 3 0 2 0 1">"#));
+        assert_eq!(f64s(find(&a, "p")), p);
+        let flat: Vec<f64> = u.iter().flat_map(|v| v.to_array()).collect();
+        assert_eq!(f64s(find(&a, "u")), flat);
+    }
+}

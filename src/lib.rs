@@ -1,0 +1,27 @@
+//! # riprap
+//!
+//! Sand grains and concrete armour blocks under water: a 3D discrete element method (DEM) for
+//! spheres and rigid blocks built from spheres, with (in progress) a large-eddy simulation of the
+//! water coupled in both directions. The method, with its equation numbers, is
+//! `shared/spec/METHOD.md`; doc comments cite those numbers in brackets, e.g. [9].
+//!
+//! Module map (a module uses what is above it, never what is below):
+//!
+//! * [`math`], [`units`]: vector types and named SI constants
+//! * [`geometry`]: where a sphere touches a plane, box, cylinder or triangle mesh
+//! * [`dem`]: spheres, materials, contact laws, neighbour search, walls, integration
+//! * [`simulation`]: the order of the phases of a time step
+//! * [`scenario`]: TOML scenario files and the checks and derived quantities of `riprap check`
+//! * [`io`]: VTK and `.pvd` output, CSV time series, plots, checkpoints
+//! * [`run`]: a run with its outputs, checkpoints and progress, as the CLI drives it
+
+#![warn(missing_docs)]
+
+pub mod dem;
+pub mod geometry;
+pub mod io;
+pub mod math;
+pub mod run;
+pub mod scenario;
+pub mod simulation;
+pub mod units;

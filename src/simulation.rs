@@ -1,0 +1,181 @@
+//! `Simulation`: the one place that orders the phases of a time step.
+//!
+//! A DEM step (velocity Verlet, see `dem::integrate`):
+//!
+//! 1. half kick of v and ω with the forces of the last evaluation [1][2]
+//! 2. drift of the positions
+//! 3. boundaries: wrap periodic axes; remove spheres that left the domain
+//! 4. insertion: feeders add the spheres due
+//! 5. neighbour list: rebuild when a sphere moved more than skin/2 (history carried over)
+//! 6. forces at t + Δt: contacts [6]-[14] with walls as infinite spheres, gravity
+//! 7. half kick with the new forces
+//! 8. stability checks: NaN, absurd speed, overlap beyond bound
+//!
+//! ARCHITECTURE.md repeats this order; keep the two in step.
+
+use crate::dem::forces::{compute_forces, MeshCandidates};
+use crate::dem::insertion::Feeder;
+use crate::dem::integrate::{drift, half_kick};
+use crate::dem::{Dem, WALL_SLOTS_EMPTY};
+use crate::math::is_finite;
+
+/// Why a run stopped before its end.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("run became unstable at t = {time:.6e} s (step {step}): {what}\nlikely cause: {cause}")]
+pub struct Instability {
+    /// Simulated time [s].
+    pub time: f64,
+    /// Step number.
+    pub step: u64,
+    /// What was seen.
+    pub what: String,
+    /// The likely cause, in words.
+    pub cause: String,
+}
+
+/// A running simulation.
+#[derive(Clone, Debug)]
+pub struct Simulation {
+    /// The granular phase.
+    pub dem: Dem,
+    /// Continuous feeders.
+    pub feeders: Vec<Feeder>,
+    /// Simulated time [s].
+    pub time: f64,
+    /// Steps taken.
+    pub step: u64,
+    /// Shortest contact-spring period T of [22] over the pairings present [s] (for diagnoses).
+    pub min_period: f64,
+}
+
+impl Simulation {
+    /// Prepares a simulation: builds the neighbour list and evaluates the initial forces.
+    pub fn new(dem: Dem, feeders: Vec<Feeder>, min_period: f64) -> Self {
+        let mut sim = Simulation { dem, feeders, time: 0.0, step: 0, min_period };
+        sim.refresh_lists();
+        compute_forces(&mut sim.dem, sim.time);
+        sim
+    }
+
+    /// Prepares a simulation restored from a checkpoint: its forces and history are already
+    /// those of the saved step, so they are not evaluated again (that would advance the history).
+    pub fn resumed(dem: Dem, feeders: Vec<Feeder>, min_period: f64, time: f64, step: u64) -> Self {
+        let mut sim = Simulation { dem, feeders, time, step, min_period };
+        sim.refresh_lists();
+        sim
+    }
+
+    /// Rebuilds the neighbour list, the pair history index and the mesh candidates.
+    fn refresh_lists(&mut self) {
+        let d = &mut self.dem;
+        d.wall_slots.resize(d.spheres.len(), WALL_SLOTS_EMPTY);
+        d.neighbors.build(&d.spheres, &d.domain);
+        d.contacts.rebuild(&d.neighbors.pairs, &d.spheres);
+        d.mesh_candidates = MeshCandidates::build(d, self.time);
+    }
+
+    /// Advances one time step Δt.
+    pub fn step(&mut self) -> Result<(), Instability> {
+        let dt = self.dem.dt;
+        half_kick(&mut self.dem.spheres, dt);
+        drift(&mut self.dem.spheres, dt);
+        let t_new = self.time + dt;
+        let mut changed = self.apply_boundaries();
+        for f in &mut self.feeders {
+            let added = f.feed(&mut self.dem.spheres, &self.dem.domain, t_new);
+            changed |= added > 0;
+        }
+        self.time = t_new;
+        self.step += 1;
+        if changed
+            || self.dem.neighbors.needs_rebuild(&self.dem.spheres, &self.dem.domain)
+            || self.dem.mesh_candidates.stale(&self.dem, self.time)
+        {
+            self.refresh_lists();
+        }
+        compute_forces(&mut self.dem, self.time);
+        half_kick(&mut self.dem.spheres, dt);
+        self.check()
+    }
+
+    /// Wraps periodic axes and removes spheres outside the domain; true if any was removed.
+    fn apply_boundaries(&mut self) -> bool {
+        let d = &mut self.dem;
+        let domain = d.domain;
+        let mut lost = 0;
+        let keep: Vec<bool> = d
+            .spheres
+            .position
+            .iter_mut()
+            .map(|x| {
+                *x = domain.wrap(*x);
+                let inside = domain.contains(*x) || !is_finite(*x);
+                lost += usize::from(!inside);
+                inside
+            })
+            .collect();
+        if lost == 0 {
+            return false;
+        }
+        d.spheres.retain(&keep);
+        let mut k = 0;
+        d.wall_slots.retain(|_| {
+            k += 1;
+            keep[k - 1]
+        });
+        d.stats.spheres_lost += lost;
+        true
+    }
+
+    /// Declares the run unstable on NaN, absurd speed or excessive overlap, naming the sphere.
+    fn check(&self) -> Result<(), Instability> {
+        let s = &self.dem.spheres;
+        let lim = self.dem.limits;
+        let ratio = self.min_period / self.dem.dt;
+        let steps = format!(
+            "the time step Δt = {:.3e} s is {:.1} steps per contact period T = {:.3e} s ([22] asks \
+             for 10-20)",
+            self.dem.dt, ratio, self.min_period
+        );
+        let fail = |what: String, cause: String| {
+            Err(Instability { time: self.time, step: self.step, what, cause })
+        };
+        for i in 0..s.len() {
+            if !is_finite(s.position[i]) || !is_finite(s.velocity[i]) || !is_finite(s.angular_velocity[i]) {
+                return fail(
+                    format!("sphere {} has a non-finite position or velocity", s.id[i]),
+                    format!("numerical blow-up: {steps}; or a sphere of zero size or mass"),
+                );
+            }
+            let v = s.velocity[i].length();
+            if v > lim.max_speed {
+                return fail(
+                    format!(
+                        "sphere {} moves at {:.3e} m/s, above the limit {} m/s, at ({:.4}, {:.4}, {:.4}) m",
+                        s.id[i], v, lim.max_speed, s.position[i].x, s.position[i].y, s.position[i].z
+                    ),
+                    format!(
+                        "contact forces too large for the step: {steps}; or spheres that overlapped \
+                         heavily when inserted"
+                    ),
+                );
+            }
+        }
+        let st = &self.dem.stats;
+        if st.max_overlap_ratio > lim.max_overlap_ratio {
+            let id = s.id.get(st.max_overlap_slot).copied().unwrap_or(u32::MAX);
+            return fail(
+                format!(
+                    "an overlap at sphere {id} reached {:.2} of the smaller radius (limit {})",
+                    st.max_overlap_ratio, lim.max_overlap_ratio
+                ),
+                format!(
+                    "springs too soft for the loads or speeds (raise the Young's modulus or \
+                     stiffness), or {steps}"
+                ),
+            );
+        }
+        Ok(())
+    }
+}
+
