@@ -17,6 +17,7 @@
 
 #![warn(missing_docs)]
 
+pub mod bench;
 pub mod dem;
 pub mod geometry;
 pub mod io;

@@ -34,11 +34,54 @@ enum Command {
         #[arg(long)]
         steps: Option<u64>,
     },
+    /// Benchmarks on problems shared with LIGGGHTS and LAMMPS (shared/bench/README.md).
+    Bench {
+        #[command(subcommand)]
+        case: BenchCase,
+    },
     /// Validate a scenario and print the derived quantities (contact time, time step, ...).
     Check {
         /// Scenario file (TOML); the built-in default when omitted.
         scenario: Option<PathBuf>,
     },
+}
+
+#[derive(Subcommand)]
+enum BenchCase {
+    /// B1 "box-settle": N Hertz-Mindlin spheres settling in a box.
+    B1 {
+        /// Number of spheres (10000, 100000 and 1000000 use the README's lattices).
+        #[arg(long, default_value_t = 10_000)]
+        n: usize,
+        /// Steps (the benchmark specifies 10000).
+        #[arg(long, default_value_t = 10_000)]
+        steps: u64,
+    },
+}
+
+fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
+    use riprap::bench::{b1_lattice, peak_memory, run_b1};
+    let lattice = b1_lattice(n);
+    let threads = rayon::current_num_threads();
+    println!("B1 box-settle: lattice {lattice:?}, {steps} steps, {threads} thread(s)");
+    let r = run_b1(lattice, steps, 2000)?;
+    println!("{:>6} {:>12} {:>12} {:>10} {:>10} {:>10}", "step", "KE [J]", "KE rot [J]", "mean z", "max z", "contacts");
+    for row in &r.rows {
+        println!(
+            "{:>6} {:>12.4e} {:>12.4e} {:>10.5} {:>10.5} {:>10.3}",
+            row.step, row.kinetic, row.rotational, row.mean_z, row.max_z, row.contacts_per_sphere
+        );
+    }
+    let rate = r.n as f64 * r.steps as f64 / r.loop_seconds;
+    println!("spheres: {}", r.n);
+    println!("loop time: {:.2} s", r.loop_seconds);
+    println!("neighbour rebuilds: {}", r.rebuilds);
+    println!("particle-steps/s: {rate:.4e}");
+    println!("particle-steps/s per thread: {:.4e}", rate / threads as f64);
+    if let Some(m) = peak_memory() {
+        println!("peak memory: {:.1} MB ({:.0} bytes per sphere)", m as f64 / 1e6, m as f64 / r.n as f64);
+    }
+    Ok(())
 }
 
 fn source(path: &Option<PathBuf>) -> Result<Source, riprap::scenario::ScenarioError> {
@@ -77,6 +120,7 @@ fn main() -> ExitCode {
             eprintln!("view: paraview {}/spheres.pvd", s.output_dir.display());
             Ok::<(), anyhow::Error>(())
         })(),
+        Command::Bench { case: BenchCase::B1 { n, steps } } => bench_b1(n, steps),
         Command::Check { scenario } => (|| {
             let src = source(&scenario)?;
             let built = build(&src)?;

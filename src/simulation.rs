@@ -50,7 +50,11 @@ pub struct Simulation {
 
 impl Simulation {
     /// Prepares a simulation: builds the neighbour list and evaluates the initial forces.
-    pub fn new(dem: Dem, feeders: Vec<Feeder>, min_period: f64) -> Self {
+    pub fn new(mut dem: Dem, feeders: Vec<Feeder>, min_period: f64) -> Self {
+        if dem.neighbors.skin <= 0.0 {
+            let d_max = dem.spheres.radius.iter().fold(0.0f64, |a, &r| a.max(2.0 * r));
+            dem.neighbors.skin = 0.2 * d_max;
+        }
         let mut sim = Simulation { dem, feeders, time: 0.0, step: 0, min_period };
         sim.refresh_lists();
         compute_forces(&mut sim.dem, sim.time);

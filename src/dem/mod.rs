@@ -104,3 +104,40 @@ impl Dem {
         self.materials.iter().position(|m| m.name == name).map(|i| i as u16)
     }
 }
+
+impl Dem {
+    /// A granular phase with no spheres nor walls, for research code and tests: the laws
+    /// between all pairs of `materials` follow `model`. Gravity is (0, 0, -9.81) m s⁻²; the
+    /// neighbour skin is set to 0.2 of the largest diameter when the simulation starts, unless
+    /// set before.
+    pub fn new(materials: Vec<Material>, model: material::ContactModel, domain: Domain, dt: f64) -> Dem {
+        let n = materials.len();
+        let mut laws = Vec::with_capacity(n * n);
+        for a in &materials {
+            for b in &materials {
+                laws.push(PairLaw::new(&model, a, b, material::PairOverride::default()));
+            }
+        }
+        Dem {
+            spheres: Spheres::default(),
+            materials,
+            laws,
+            walls: Vec::new(),
+            domain,
+            gravity: Vec3::new(0.0, 0.0, -9.81),
+            dt,
+            limits: Limits::default(),
+            neighbors: NeighborList::new(0.0),
+            contacts: PairContacts::default(),
+            wall_slots: Vec::new(),
+            mesh_candidates: forces::MeshCandidates::default(),
+            stats: Stats::default(),
+        }
+    }
+
+    /// Adds a sphere of material `material` (density taken from it); returns its id.
+    pub fn add_sphere(&mut self, position: Vec3, velocity: Vec3, angular_velocity: Vec3, radius: f64, material: u16) -> spheres::SphereId {
+        let density = self.materials[material as usize].density;
+        self.spheres.push(spheres::NewSphere { position, velocity, angular_velocity, radius, material, density, fixed: false })
+    }
+}

@@ -93,11 +93,15 @@ impl Cuboid {
             centre.z - self.min.z,
             self.max.z - centre.z,
         ];
-        let (f, depth) = depths
-            .iter()
-            .copied()
-            .enumerate()
-            .fold((0, f64::INFINITY), |m, (i, x)| if x < m.1 { (i, x) } else { m });
+        let (f, depth) =
+            depths
+                .iter()
+                .copied()
+                .enumerate()
+                .fold(
+                    (0, f64::INFINITY),
+                    |m, (i, x)| if x < m.1 { (i, x) } else { m },
+                );
         let n = face_normal(f);
         out.extend(Some(SurfaceContact {
             point: centre + depth * n,
@@ -146,7 +150,11 @@ mod tests {
 
     #[test]
     fn container() {
-        let b = Cuboid { min: DVec3::ZERO, max: MAX, inside: true };
+        let b = Cuboid {
+            min: DVec3::ZERO,
+            max: MAX,
+            inside: true,
+        };
         assert!(contacts(&b, DVec3::new(1.0, 1.5, 2.0), 0.5).is_empty());
         // Near corner (0, 3, 4): -x and +z touched, +y exactly tangent (no contact).
         let v = contacts(&b, DVec3::new(0.25, 2.5, 3.875), 0.5);
@@ -158,17 +166,27 @@ mod tests {
         assert_eq!(v[1].normal, DVec3::Z);
         // Touching all three faces at the corner.
         let v = contacts(&b, DVec3::new(0.25, 2.75, 3.75), 0.5);
-        assert_eq!(v.iter().map(|c| c.element).collect::<Vec<_>>(), vec![0, 3, 5]);
+        assert_eq!(
+            v.iter().map(|c| c.element).collect::<Vec<_>>(),
+            vec![0, 3, 5]
+        );
         assert!(v.iter().all(|c| (c.overlap - 0.25).abs() < 1e-15));
         // Escaped through +x: still pushed back in.
         let v = contacts(&b, DVec3::new(2.5, 1.5, 2.0), 0.25);
         assert_eq!(v.len(), 1);
-        assert_eq!((v[0].element, v[0].overlap, v[0].normal), (1, 0.75, DVec3::X));
+        assert_eq!(
+            (v[0].element, v[0].overlap, v[0].normal),
+            (1, 0.75, DVec3::X)
+        );
     }
 
     #[test]
     fn obstacle() {
-        let b = Cuboid { min: DVec3::ZERO, max: MAX, inside: false };
+        let b = Cuboid {
+            min: DVec3::ZERO,
+            max: MAX,
+            inside: false,
+        };
         // Face -z.
         let v = contacts(&b, DVec3::new(1.0, 1.0, -0.25), 0.5);
         assert_eq!(v.len(), 1);
@@ -182,7 +200,7 @@ mod tests {
         assert!(close(v[0].normal, DVec3::new(-0.6, -0.8, 0.0)));
         assert!((v[0].overlap - 0.1).abs() < 1e-14);
         assert_eq!(v[0].element, 3); // dominant separation along +y
-        // Corner (0, 0, 0): distance sqrt(3) * 0.1.
+                                     // Corner (0, 0, 0): distance sqrt(3) * 0.1.
         let v = contacts(&b, DVec3::splat(-0.1), 0.2);
         assert!(close(v[0].point, DVec3::ZERO));
         assert!(close(v[0].normal, DVec3::ONE.normalize()));
@@ -200,7 +218,11 @@ mod tests {
 
     #[test]
     fn surface_is_closed_and_outward() {
-        let b = Cuboid { min: DVec3::ZERO, max: MAX, inside: true };
+        let b = Cuboid {
+            min: DVec3::ZERO,
+            max: MAX,
+            inside: true,
+        };
         let (pts, tris) = b.surface(DVec3::ZERO, DVec3::ZERO);
         assert_eq!((pts.len(), tris.len()), (8, 12));
         // Divergence theorem: sum over faces of (centroid . n) area / 3 = volume, if outward.

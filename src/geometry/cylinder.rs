@@ -47,7 +47,7 @@ impl Cylinder {
     pub fn sphere_contact(&self, centre: DVec3, radius: f64) -> Option<SurfaceContact> {
         let axis = self.end - self.start;
         let len = axis.length();
-        if !(len > 0.0) {
+        if len.is_nan() || len <= 0.0 {
             return None;
         }
         let u = axis / len;
@@ -169,15 +169,31 @@ mod tests {
         let rot = DMat3::from_quat(DQuat::from_euler(glam::EulerRot::XYZ, 0.3, -1.1, 2.0));
         let off = DVec3::new(1.0, -2.0, 0.5);
         for (m, o) in [(DMat3::IDENTITY, DVec3::ZERO), (rot, off)] {
-            let cyl = Cylinder { start: o, end: o + m * DVec3::new(0.0, 0.0, 2.0), radius: 1.0, inside };
+            let cyl = Cylinder {
+                start: o,
+                end: o + m * DVec3::new(0.0, 0.0, 2.0),
+                radius: 1.0,
+                inside,
+            };
             for &(c, r, p, n, ov) in cases {
                 let k = one(&cyl, o + m * c, r).unwrap_or_else(|| panic!("no contact at {c}"));
-                assert!((k.point - (o + m * p)).length() < 1e-14, "{c}: point {}", k.point);
-                assert!((k.normal - m * n).length() < 1e-14, "{c}: normal {}", k.normal);
+                assert!(
+                    (k.point - (o + m * p)).length() < 1e-14,
+                    "{c}: point {}",
+                    k.point
+                );
+                assert!(
+                    (k.normal - m * n).length() < 1e-14,
+                    "{c}: normal {}",
+                    k.normal
+                );
                 assert!((k.overlap - ov).abs() < 1e-14, "{c}: overlap {}", k.overlap);
             }
             for &(c, r) in misses {
-                assert!(one(&cyl, o + m * c, r).is_none(), "unexpected contact at {c}");
+                assert!(
+                    one(&cyl, o + m * c, r).is_none(),
+                    "unexpected contact at {c}"
+                );
             }
         }
     }
@@ -189,14 +205,42 @@ mod tests {
             true,
             &[
                 // Lateral wall.
-                (DVec3::new(0.7, 0.0, 1.0), 0.5, DVec3::new(1.0, 0.0, 1.0), DVec3::X, 0.2),
-                (DVec3::new(0.0, -0.6, 0.0), 0.5, DVec3::new(0.0, -1.0, 0.0), -DVec3::Y, 0.1),
+                (
+                    DVec3::new(0.7, 0.0, 1.0),
+                    0.5,
+                    DVec3::new(1.0, 0.0, 1.0),
+                    DVec3::X,
+                    0.2,
+                ),
+                (
+                    DVec3::new(0.0, -0.6, 0.0),
+                    0.5,
+                    DVec3::new(0.0, -1.0, 0.0),
+                    -DVec3::Y,
+                    0.1,
+                ),
                 // Escaped sideways: pushed back in.
-                (DVec3::new(1.2, 0.0, 1.0), 0.1, DVec3::new(1.0, 0.0, 1.0), DVec3::X, 0.3),
+                (
+                    DVec3::new(1.2, 0.0, 1.0),
+                    0.1,
+                    DVec3::new(1.0, 0.0, 1.0),
+                    DVec3::X,
+                    0.3,
+                ),
                 // Beyond the open end, touching the rim.
-                (DVec3::new(0.9, 0.0, 2.1), 0.2, DVec3::new(1.0, 0.0, 2.0), DVec3::new(0.1, 0.0, -0.1) / s, 0.2 - s),
+                (
+                    DVec3::new(0.9, 0.0, 2.1),
+                    0.2,
+                    DVec3::new(1.0, 0.0, 2.0),
+                    DVec3::new(0.1, 0.0, -0.1) / s,
+                    0.2 - s,
+                ),
             ],
-            &[(DVec3::new(0.0, 0.0, 1.0), 0.5), (DVec3::new(0.0, 0.0, 2.6), 0.5), (DVec3::new(0.5, 0.0, -0.6), 0.5)],
+            &[
+                (DVec3::new(0.0, 0.0, 1.0), 0.5),
+                (DVec3::new(0.0, 0.0, 2.6), 0.5),
+                (DVec3::new(0.5, 0.0, -0.6), 0.5),
+            ],
         );
     }
 
@@ -206,24 +250,68 @@ mod tests {
             false,
             &[
                 // Lateral surface.
-                (DVec3::new(1.2, 0.0, 1.0), 0.5, DVec3::new(1.0, 0.0, 1.0), -DVec3::X, 0.3),
+                (
+                    DVec3::new(1.2, 0.0, 1.0),
+                    0.5,
+                    DVec3::new(1.0, 0.0, 1.0),
+                    -DVec3::X,
+                    0.3,
+                ),
                 // End cap.
-                (DVec3::new(0.3, 0.4, 2.2), 0.5, DVec3::new(0.3, 0.4, 2.0), -DVec3::Z, 0.3),
-                (DVec3::new(0.3, 0.4, -0.1), 0.5, DVec3::new(0.3, 0.4, 0.0), DVec3::Z, 0.4),
+                (
+                    DVec3::new(0.3, 0.4, 2.2),
+                    0.5,
+                    DVec3::new(0.3, 0.4, 2.0),
+                    -DVec3::Z,
+                    0.3,
+                ),
+                (
+                    DVec3::new(0.3, 0.4, -0.1),
+                    0.5,
+                    DVec3::new(0.3, 0.4, 0.0),
+                    DVec3::Z,
+                    0.4,
+                ),
                 // Rim edge: 0.3 out, 0.4 beyond the end.
-                (DVec3::new(1.3, 0.0, 2.4), 0.6, DVec3::new(1.0, 0.0, 2.0), DVec3::new(-0.6, 0.0, -0.8), 0.1),
+                (
+                    DVec3::new(1.3, 0.0, 2.4),
+                    0.6,
+                    DVec3::new(1.0, 0.0, 2.0),
+                    DVec3::new(-0.6, 0.0, -0.8),
+                    0.1,
+                ),
                 // Centre inside, nearest the lateral surface (0.1 deep).
-                (DVec3::new(0.9, 0.0, 1.0), 0.2, DVec3::new(1.0, 0.0, 1.0), -DVec3::X, 0.3),
+                (
+                    DVec3::new(0.9, 0.0, 1.0),
+                    0.2,
+                    DVec3::new(1.0, 0.0, 1.0),
+                    -DVec3::X,
+                    0.3,
+                ),
                 // Centre inside, nearest the start cap (0.05 deep): pushed out along -z.
-                (DVec3::new(0.0, 0.2, 0.05), 0.2, DVec3::new(0.0, 0.2, 0.0), DVec3::Z, 0.25),
+                (
+                    DVec3::new(0.0, 0.2, 0.05),
+                    0.2,
+                    DVec3::new(0.0, 0.2, 0.0),
+                    DVec3::Z,
+                    0.25,
+                ),
             ],
-            &[(DVec3::new(1.6, 0.0, 1.0), 0.5), (DVec3::new(1.3, 0.0, 2.4), 0.45)],
+            &[
+                (DVec3::new(1.6, 0.0, 1.0), 0.5),
+                (DVec3::new(1.3, 0.0, 2.4), 0.45),
+            ],
         );
     }
 
     #[test]
     fn surface_sizes_and_area() {
-        let mut cyl = Cylinder { start: DVec3::ZERO, end: DVec3::new(0.0, 3.0, 0.0), radius: 2.0, inside: true };
+        let mut cyl = Cylinder {
+            start: DVec3::ZERO,
+            end: DVec3::new(0.0, 3.0, 0.0),
+            radius: 2.0,
+            inside: true,
+        };
         let (p, t) = cyl.surface(DVec3::ZERO, DVec3::ZERO);
         assert_eq!((p.len(), t.len()), (96, 96));
         cyl.inside = false;

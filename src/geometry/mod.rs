@@ -25,6 +25,7 @@ pub use stl::StlError;
 pub use triangle::{closest_point_on_triangle, Feature};
 
 use glam::DVec3;
+use serde::{Deserialize, Serialize};
 
 /// Where a sphere touches a surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -120,13 +121,17 @@ impl ContactBuf {
         }
         self.dropped += 1;
         // Keep the deepest contacts; shifting (not swapping) keeps the order of the rest.
-        let (k, min) = self.items.iter().enumerate().fold((0, f64::INFINITY), |m, (i, c)| {
-            if c.overlap < m.1 {
-                (i, c.overlap)
-            } else {
-                m
-            }
-        });
+        let (k, min) = self
+            .items
+            .iter()
+            .enumerate()
+            .fold((0, f64::INFINITY), |m, (i, c)| {
+                if c.overlap < m.1 {
+                    (i, c.overlap)
+                } else {
+                    m
+                }
+            });
         if contact.overlap > min {
             self.items.copy_within(k + 1.., k);
             self.items[CONTACT_BUF_CAPACITY - 1] = contact;
@@ -147,6 +152,122 @@ impl<'a> IntoIterator for &'a ContactBuf {
     type IntoIter = std::slice::Iter<'a, SurfaceContact>;
     fn into_iter(self) -> Self::IntoIter {
         self.iter()
+    }
+}
+
+/// Uniform grid of cubic cells over a set of axis-aligned boxes (e.g. of triangles), each box
+/// registered in every cell it overlaps; `start[k]..start[k + 1]` indexes `items` for cell `k`.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub(crate) struct BoxGrid {
+    origin: DVec3,
+    cell: f64,
+    dims: [usize; 3],
+    start: Vec<u32>,
+    items: Vec<u32>,
+}
+
+/// Limits on a [`BoxGrid`]; its cell grows until both hold.
+const MAX_CELLS: f64 = (1u64 << 22) as f64;
+const MAX_ENTRIES: f64 = (1u64 << 25) as f64;
+
+impl BoxGrid {
+    /// A grid with cells of `cell_size` [m] (enlarged if the grid would get too big; the size
+    /// of the whole set if not positive) over `boxes` (`[min, max]` [m]), numbered from 0.
+    pub(crate) fn new(boxes: &[[DVec3; 2]], cell_size: f64) -> BoxGrid {
+        let (lo, hi) = boxes.iter().fold((DVec3::MAX, DVec3::MIN), |(l, h), b| {
+            (l.min(b[0]), h.max(b[1]))
+        });
+        let ext = (hi - lo).max(DVec3::ZERO);
+        let mut cell = if cell_size > 0.0 && cell_size.is_finite() {
+            cell_size
+        } else {
+            ext.max_element()
+        };
+        cell = cell.max(1e-9 * ext.max_element()).max(f64::MIN_POSITIVE);
+        let mut grid = loop {
+            let dims = ((ext / cell).floor() + 1.0).min(DVec3::splat(MAX_CELLS));
+            let g = BoxGrid {
+                origin: lo,
+                cell,
+                dims: dims.as_usizevec3().to_array(),
+                start: Vec::new(),
+                items: Vec::new(),
+            };
+            if dims.element_product() <= MAX_CELLS {
+                let volume = |(a, b): ([usize; 3], [usize; 3])| {
+                    (0..3).map(|k| (b[k] - a[k] + 1) as f64).product::<f64>()
+                };
+                let entries: f64 = boxes
+                    .iter()
+                    .filter_map(|x| g.range(x[0], x[1]))
+                    .map(volume)
+                    .sum();
+                if entries <= MAX_ENTRIES {
+                    break g;
+                }
+            }
+            cell *= 1.5;
+        };
+        // Counting sort of the boxes into the cells.
+        let ncells = grid.dims.iter().product::<usize>();
+        let mut start = vec![0u32; ncells + 1];
+        for x in boxes {
+            grid.cells(x[0], x[1]).for_each(|k| start[k + 1] += 1);
+        }
+        for k in 0..ncells {
+            start[k + 1] += start[k];
+        }
+        let mut fill = start.clone();
+        let mut items = vec![0u32; start[ncells] as usize];
+        for (i, x) in boxes.iter().enumerate() {
+            for k in grid.cells(x[0], x[1]) {
+                items[fill[k] as usize] = i as u32;
+                fill[k] += 1;
+            }
+        }
+        grid.start = start;
+        grid.items = items;
+        grid
+    }
+
+    /// Edge length [m] of the cells.
+    pub(crate) fn cell_size(&self) -> f64 {
+        self.cell
+    }
+
+    /// Calls `f` with every box registered in a cell that overlaps `[lo, hi]` [m] (a box
+    /// spanning several such cells comes several times).
+    pub(crate) fn for_each_near(&self, lo: DVec3, hi: DVec3, mut f: impl FnMut(u32)) {
+        for k in self.cells(lo, hi) {
+            let cell = &self.items[self.start[k] as usize..self.start[k + 1] as usize];
+            cell.iter().for_each(|&i| f(i));
+        }
+    }
+
+    /// Inclusive cell ranges covering `[lo, hi]`, or None if it misses the grid.
+    fn range(&self, lo: DVec3, hi: DVec3) -> Option<([usize; 3], [usize; 3])> {
+        let a = ((lo - self.origin) / self.cell).floor();
+        let b = ((hi - self.origin) / self.cell).floor();
+        let mut r = ([0; 3], [0; 3]);
+        for k in 0..3 {
+            let top = (self.dims[k] - 1) as f64;
+            // Written so that NaN also misses.
+            if !(b[k] >= 0.0 && a[k] <= top) {
+                return None;
+            }
+            r.0[k] = a[k].max(0.0) as usize;
+            r.1[k] = b[k].min(top) as usize;
+        }
+        Some(r)
+    }
+
+    /// Indices of the cells overlapping `[lo, hi]`.
+    fn cells(&self, lo: DVec3, hi: DVec3) -> impl Iterator<Item = usize> + '_ {
+        let [nx, ny, _] = self.dims;
+        let (a, b) = self.range(lo, hi).unwrap_or(([1; 3], [0; 3])); // empty if missed
+        (a[2]..=b[2]).flat_map(move |z| {
+            (a[1]..=b[1]).flat_map(move |y| (a[0]..=b[0]).map(move |x| x + nx * (y + ny * z)))
+        })
     }
 }
 
@@ -206,10 +327,10 @@ pub(crate) mod test_util {
 
     /// Asserts that spheres above the unit square mesh `mesh` (made by [`square_grid`] with
     /// `n` cells a side) see exactly what they see on the plane z = 0: moving in small steps
-    /// across and along edges, through shared vertices, bouncing on an edge, and at random
-    /// points (many snapped onto edges and vertices).
+    /// across and along edges, through shared vertices, bouncing on a vertex, at random points
+    /// (many snapped onto edges and vertices), and at tiny distances from every vertex. The
+    /// same again with everything rotated and moved.
     pub fn assert_like_plane(mesh: &TriMesh, n: usize) {
-        let plane = Plane::new(DVec3::ZERO, DVec3::Z);
         let r = 0.1;
         let h = 1.0 / n as f64;
         let mut centres = Vec::new();
@@ -220,7 +341,7 @@ pub(crate) mod test_util {
             centres.push(DVec3::new(t, t, 0.07)); // along the diagonal, through vertices
             centres.push(DVec3::new(1.0 - t, t, 0.03)); // the other diagonal
             centres.push(DVec3::new(h, t, 0.05)); // along a grid line
-            centres.push(DVec3::new(0.5, 0.5, r * (1.0 - t) + 1e-9)); // bouncing on a vertex
+            centres.push(DVec3::new(0.5, 0.5, 0.999 * r * (1.0 - t) + 1e-9)); // bouncing on a vertex
         }
         let mut rng = Rng(12345);
         for _ in 0..3000 {
@@ -233,19 +354,47 @@ pub(crate) mod test_util {
             }
             centres.push(q);
         }
-        let mut mesh_b = mesh.clone();
-        mesh_b.build_bins(0.13);
-        let mut scratch = Vec::new();
-        for c in centres {
-            let want = plane.sphere_contact(c, r).unwrap();
-            for m in [mesh, &mesh_b] {
-                let mut got = Vec::new();
-                m.contacts_near(c, r, &mut scratch, &mut got);
-                assert_eq!(got.len(), 1, "centre {c}: {got:?}");
-                let g = got[0];
-                assert!((g.overlap - want.overlap).abs() <= 1e-12, "centre {c}: {g:?}");
-                assert!((g.normal - want.normal).length() <= 1e-12, "centre {c}: {g:?}");
-                assert!((g.point - want.point).length() <= 1e-12, "centre {c}: {g:?}");
+        for i in 0..=n {
+            for j in 0..=n {
+                for e in [
+                    0.0, 1e-15, 1e-13, 1e-11, 1e-10, 3e-10, 1e-9, 3e-9, 1e-8, 1e-6, 1e-4,
+                ] {
+                    let a = std::f64::consts::TAU * rng.next();
+                    let p = DVec3::new(i as f64 * h + e * a.cos(), j as f64 * h + e * a.sin(), 0.0);
+                    centres.push(p.clamp(DVec3::ZERO, DVec3::ONE) + DVec3::new(0.0, 0.0, 0.05));
+                }
+            }
+        }
+        let rot =
+            glam::DMat3::from_quat(glam::DQuat::from_euler(glam::EulerRot::ZXY, 0.4, 1.3, -0.7));
+        let off = DVec3::new(0.3, -1.7, 2.2);
+        for (m, o) in [(glam::DMat3::IDENTITY, DVec3::ZERO), (rot, off)] {
+            let plane = Plane::new(o, m * DVec3::Z);
+            let mesh_a = mesh.transformed(1.0, m, o);
+            let mut mesh_b = mesh_a.clone();
+            mesh_b.build_bins(0.13);
+            let mut scratch = Vec::new();
+            for &c in &centres {
+                let c = m * c + o;
+                let want = plane.sphere_contact(c, r).unwrap();
+                for mesh in [&mesh_a, &mesh_b] {
+                    let mut got = Vec::new();
+                    mesh.contacts_near(c, r, &mut scratch, &mut got);
+                    assert_eq!(got.len(), 1, "centre {c}: {got:?}");
+                    let g = got[0];
+                    assert!(
+                        (g.overlap - want.overlap).abs() <= 1e-12,
+                        "centre {c}: {g:?}"
+                    );
+                    assert!(
+                        (g.normal - want.normal).length() <= 1e-12,
+                        "centre {c}: {g:?}"
+                    );
+                    assert!(
+                        (g.point - want.point).length() <= 1e-12,
+                        "centre {c}: {g:?}"
+                    );
+                }
             }
         }
     }

@@ -13,23 +13,46 @@ pub enum StlError {
     /// The file could not be read.
     #[error("{file}: cannot read: {source}")]
     Io {
+        /// The file.
         file: String,
+        /// The system's reason.
         #[source]
         source: io::Error,
     },
-    /// Syntax error in an ASCII file, at `line` (counted from 1).
+    /// Syntax error in an ASCII file.
     #[error("{file}: line {line}: {reason}")]
-    Ascii { file: String, line: usize, reason: String },
-    /// Error in a binary file, at triangle `triangle` (counted from 0).
+    Ascii {
+        /// The file.
+        file: String,
+        /// Line number, counted from 1.
+        line: usize,
+        /// What is wrong.
+        reason: String,
+    },
+    /// Error in a binary file.
     #[error("{file}: binary STL, triangle {triangle} (from 0): {reason}")]
-    Binary { file: String, triangle: usize, reason: String },
+    Binary {
+        /// The file.
+        file: String,
+        /// Triangle index, counted from 0.
+        triangle: usize,
+        /// What is wrong.
+        reason: String,
+    },
     /// Neither a valid binary nor an ASCII file.
     #[error("{file}: {reason}")]
-    Format { file: String, reason: String },
+    Format {
+        /// The file.
+        file: String,
+        /// What is wrong.
+        reason: String,
+    },
     /// The triangles do not make a mesh (e.g. there are none).
     #[error("{file}: {source}")]
     Mesh {
+        /// The file.
         file: String,
+        /// What is wrong.
         #[source]
         source: MeshError,
     },
@@ -42,8 +65,13 @@ pub enum StlError {
 /// with "solid" is ASCII. Facet normals are ignored (corner order defines orientation).
 pub fn parse_stl(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
     let exact_binary = binary_size(bytes) == Some(bytes.len() as u64);
-    let text_start = bytes.iter().position(|b| !b.is_ascii_whitespace()).unwrap_or(bytes.len());
-    let ascii = bytes[text_start..].get(..5).is_some_and(|s| s.eq_ignore_ascii_case(b"solid"));
+    let text_start = bytes
+        .iter()
+        .position(|b| !b.is_ascii_whitespace())
+        .unwrap_or(bytes.len());
+    let ascii = bytes[text_start..]
+        .get(..5)
+        .is_some_and(|s| s.eq_ignore_ascii_case(b"solid"));
     if !exact_binary && ascii {
         parse_ascii(bytes, file)
     } else {
@@ -59,10 +87,15 @@ fn binary_size(bytes: &[u8]) -> Option<u64> {
 
 fn parse_binary(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
     let Some(size) = binary_size(bytes) else {
-        let reason = if bytes.is_empty() { "empty file".into() } else {
+        let reason = if bytes.is_empty() {
+            "empty file".into()
+        } else {
             format!("{} bytes: too short for a binary STL (84-byte header) and not ASCII (no leading 'solid')", bytes.len())
         };
-        return Err(StlError::Format { file: file.into(), reason });
+        return Err(StlError::Format {
+            file: file.into(),
+            reason,
+        });
     };
     let n = ((size - 84) / 50) as usize;
     if (bytes.len() as u64) < size {
@@ -73,14 +106,21 @@ fn parse_binary(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
         });
     }
     // Trailing bytes after the announced triangles are tolerated (some exporters pad).
-    let f = |b: &[u8], k: usize| f64::from(f32::from_le_bytes(b[4 * k..4 * k + 4].try_into().unwrap()));
+    let f =
+        |b: &[u8], k: usize| f64::from(f32::from_le_bytes(b[4 * k..4 * k + 4].try_into().unwrap()));
     let mut tris = Vec::with_capacity(n);
     for (triangle, rec) in bytes[84..size as usize].chunks_exact(50).enumerate() {
         // Skip the 12-byte normal; the 2-byte attribute count at the end is unused.
-        let t: [DVec3; 3] = std::array::from_fn(|v| DVec3::new(f(rec, 3 + 3 * v), f(rec, 4 + 3 * v), f(rec, 5 + 3 * v)));
+        let t: [DVec3; 3] = std::array::from_fn(|v| {
+            DVec3::new(f(rec, 3 + 3 * v), f(rec, 4 + 3 * v), f(rec, 5 + 3 * v))
+        });
         if let Some(v) = t.iter().position(|p| !p.is_finite()) {
             let reason = format!("vertex {} has a non-finite coordinate {}", v + 1, t[v]);
-            return Err(StlError::Binary { file: file.into(), triangle, reason });
+            return Err(StlError::Binary {
+                file: file.into(),
+                triangle,
+                reason,
+            });
         }
         tris.push(t);
     }
@@ -99,7 +139,11 @@ enum State {
 
 fn parse_ascii(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
     let text = String::from_utf8_lossy(bytes);
-    let err = |line: usize, reason: String| StlError::Ascii { file: file.into(), line, reason };
+    let err = |line: usize, reason: String| StlError::Ascii {
+        file: file.into(),
+        line,
+        reason,
+    };
     let mut state = State::Outside;
     let mut corners = [DVec3::ZERO; 3];
     let mut tris = Vec::new();
@@ -114,15 +158,27 @@ fn parse_ascii(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
             // The facet normal is ignored: the corner order defines the orientation.
             (State::Solid, "facet") => State::Facet,
             (State::Solid, "endsolid") => State::Outside,
-            (State::Facet, "outer") if tok.next().is_some_and(|w| w.eq_ignore_ascii_case("loop")) => State::Loop(0),
+            (State::Facet, "outer")
+                if tok.next().is_some_and(|w| w.eq_ignore_ascii_case("loop")) =>
+            {
+                State::Loop(0)
+            }
             (State::Loop(k), "vertex") if k < 3 => {
                 let words: Vec<&str> = tok.collect();
                 if words.len() != 3 {
-                    return Err(err(line_no, format!("expected 3 coordinates after 'vertex', found {}", words.len())));
+                    return Err(err(
+                        line_no,
+                        format!(
+                            "expected 3 coordinates after 'vertex', found {}",
+                            words.len()
+                        ),
+                    ));
                 }
                 let mut xyz = [0.0f64; 3];
                 for (x, w) in xyz.iter_mut().zip(&words) {
-                    *x = w.parse().map_err(|_| err(line_no, format!("invalid number '{w}'")))?;
+                    *x = w
+                        .parse()
+                        .map_err(|_| err(line_no, format!("invalid number '{w}'")))?;
                     if !x.is_finite() {
                         return Err(err(line_no, format!("non-finite coordinate '{w}'")));
                     }
@@ -131,15 +187,26 @@ fn parse_ascii(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
                 State::Loop(k + 1)
             }
             (State::Loop(3), "endloop") => State::EndFacet,
+            (State::Loop(_), "vertex") => {
+                return Err(err(line_no, "more than 3 vertices in a facet".into()))
+            }
             (State::EndFacet, "endfacet") => {
                 tris.push(corners);
                 State::Solid
             }
-            (s, _) => return Err(err(line_no, format!("expected {}, found '{}'", expected(s), line.trim()))),
+            (s, _) => {
+                return Err(err(
+                    line_no,
+                    format!("expected {}, found '{}'", expected(s), line.trim()),
+                ))
+            }
         };
     }
     if matches!(state, State::Facet | State::Loop(_) | State::EndFacet) {
-        return Err(err(last, format!("file ends inside a facet, expected {}", expected(state))));
+        return Err(err(
+            last,
+            format!("file ends inside a facet, expected {}", expected(state)),
+        ));
     }
     Ok(tris)
 }
@@ -150,7 +217,7 @@ fn expected(s: State) -> String {
         State::Solid => "'facet' or 'endsolid'".into(),
         State::Facet => "'outer loop'".into(),
         State::Loop(k) if k < 3 => format!("'vertex' (corner {} of 3)", k + 1),
-        State::Loop(_) => "'endloop' (a facet has exactly 3 vertices)".into(),
+        State::Loop(_) => "'endloop'".into(),
         State::EndFacet => "'endfacet'".into(),
     }
 }
@@ -161,7 +228,11 @@ pub fn write_stl_ascii(w: &mut impl Write, name: &str, triangles: &[[DVec3; 3]])
     writeln!(w, "solid {name}")?;
     for [a, b, c] in triangles {
         let n = (*b - *a).cross(*c - *a).normalize_or_zero();
-        writeln!(w, "  facet normal {:e} {:e} {:e}\n    outer loop", n.x, n.y, n.z)?;
+        writeln!(
+            w,
+            "  facet normal {:e} {:e} {:e}\n    outer loop",
+            n.x, n.y, n.z
+        )?;
         for p in [a, b, c] {
             writeln!(w, "      vertex {:e} {:e} {:e}", p.x, p.y, p.z)?;
         }
@@ -176,7 +247,8 @@ pub fn write_stl_binary(w: &mut impl Write, triangles: &[[DVec3; 3]]) -> io::Res
     let mut header = [b' '; 80];
     header[..23].copy_from_slice(b"binary STL from riprap.");
     w.write_all(&header)?;
-    let n = u32::try_from(triangles.len()).map_err(|_| io::Error::other("too many triangles for STL"))?;
+    let n = u32::try_from(triangles.len())
+        .map_err(|_| io::Error::other("too many triangles for STL"))?;
     w.write_all(&n.to_le_bytes())?;
     for [a, b, c] in triangles {
         let n = (*b - *a).cross(*c - *a).normalize_or_zero();
@@ -194,7 +266,10 @@ impl TriMesh {
     /// Reads an STL file (ASCII or binary), merging duplicate vertices.
     pub fn from_stl(path: &Path) -> Result<TriMesh, StlError> {
         let file = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|source| StlError::Io { file: file.clone(), source })?;
+        let bytes = std::fs::read(path).map_err(|source| StlError::Io {
+            file: file.clone(),
+            source,
+        })?;
         Self::from_named_stl_bytes(&bytes, &file)
     }
 
@@ -206,11 +281,178 @@ impl TriMesh {
     /// Reads STL bytes, naming them `file` in errors.
     pub fn from_named_stl_bytes(bytes: &[u8], file: &str) -> Result<TriMesh, StlError> {
         let soup = parse_stl(bytes, file)?;
-        TriMesh::from_triangle_soup(&soup).map_err(|source| StlError::Mesh { file: file.into(), source })
+        TriMesh::from_triangle_soup(&soup).map_err(|source| StlError::Mesh {
+            file: file.into(),
+            source,
+        })
     }
 
     /// The corners [m] of every triangle, in order (e.g. for [`write_stl_ascii`]).
     pub fn triangle_soup(&self) -> Vec<[DVec3; 3]> {
-        (0..self.triangles().len()).map(|i| self.corners(i)).collect()
+        (0..self.triangles().len())
+            .map(|i| self.corners(i))
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::test_util::{assert_like_plane, square_grid, Rng};
+
+    fn temp_file(name: &str, bytes: &[u8]) -> std::path::PathBuf {
+        let path = std::env::temp_dir().join(format!("riprap_stl_{}_{name}", std::process::id()));
+        std::fs::write(&path, bytes).unwrap();
+        path
+    }
+
+    fn ascii(tris: &[[DVec3; 3]]) -> Vec<u8> {
+        let mut b = Vec::new();
+        write_stl_ascii(&mut b, "test", tris).unwrap();
+        b
+    }
+
+    fn binary(tris: &[[DVec3; 3]]) -> Vec<u8> {
+        let mut b = Vec::new();
+        write_stl_binary(&mut b, tris).unwrap();
+        b
+    }
+
+    fn random_soup(n: usize) -> Vec<[DVec3; 3]> {
+        let mut rng = Rng(99);
+        (0..n)
+            .map(|_| [rng.vec(3.0), rng.vec(3.0), rng.vec(3.0)])
+            .collect()
+    }
+
+    fn err(bytes: &[u8]) -> String {
+        TriMesh::from_named_stl_bytes(bytes, "bad.stl")
+            .unwrap_err()
+            .to_string()
+    }
+
+    #[test]
+    fn ascii_round_trip_is_exact() {
+        let soup = random_soup(20);
+        let mesh = TriMesh::from_stl(&temp_file("rt.stl", &ascii(&soup))).unwrap();
+        assert_eq!(mesh.triangle_soup(), soup);
+    }
+
+    #[test]
+    fn binary_round_trip_in_single_precision() {
+        let soup = random_soup(20);
+        let single: Vec<[DVec3; 3]> = soup
+            .iter()
+            .map(|t| t.map(|p| p.as_vec3().as_dvec3()))
+            .collect();
+        let bytes = binary(&soup);
+        assert_eq!(bytes.len(), 84 + 50 * 20);
+        assert_eq!(
+            TriMesh::from_stl_bytes(&bytes).unwrap().triangle_soup(),
+            single
+        );
+        // A binary file whose header starts with "solid" (as some exporters write) is binary.
+        let mut solid = bytes.clone();
+        solid[..12].copy_from_slice(b"solid  part ");
+        assert_eq!(
+            TriMesh::from_stl_bytes(&solid).unwrap().triangle_soup(),
+            single
+        );
+        // Trailing padding is tolerated when the header does not say "solid".
+        let mut padded = bytes;
+        padded.extend([0u8; 7]);
+        assert_eq!(
+            TriMesh::from_stl_bytes(&padded).unwrap().triangle_soup(),
+            single
+        );
+    }
+
+    #[test]
+    fn example_file_reads() {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/two_triangles_ascii.stl");
+        let mesh = TriMesh::from_stl(&path).unwrap();
+        assert_eq!((mesh.vertices().len(), mesh.triangles().len()), (4, 2));
+        assert!((mesh.area() - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn grid_from_files_acts_as_plane() {
+        let soup = square_grid(4);
+        for (name, bytes) in [
+            ("grid_ascii.stl", ascii(&soup)),
+            ("grid_binary.stl", binary(&soup)),
+        ] {
+            let mesh = TriMesh::from_stl(&temp_file(name, &bytes)).unwrap();
+            assert_eq!(
+                (mesh.vertices().len(), mesh.triangles().len()),
+                (25, 32),
+                "{name}"
+            );
+            assert_like_plane(&mesh, 4);
+        }
+    }
+
+    #[test]
+    fn malformed_ascii_names_the_line() {
+        let good = String::from_utf8(ascii(&square_grid(1))).unwrap();
+        let lines: Vec<&str> = good.lines().collect();
+        // Line 4 is the first "vertex" line.
+        let with = |i: usize, s: &str| {
+            let mut l = lines.clone();
+            l[i - 1] = s;
+            l.join("\n").into_bytes()
+        };
+        let e = err(&with(4, "vertex 1 2 abc"));
+        assert_eq!(e, "bad.stl: line 4: invalid number 'abc'");
+        let e = err(&with(5, "vertex 1 nan 0"));
+        assert_eq!(e, "bad.stl: line 5: non-finite coordinate 'nan'");
+        let e = err(&with(6, "vertex 1 2"));
+        assert_eq!(
+            e,
+            "bad.stl: line 6: expected 3 coordinates after 'vertex', found 2"
+        );
+        let e = err(&with(6, "endloop"));
+        assert_eq!(
+            e,
+            "bad.stl: line 6: expected 'vertex' (corner 3 of 3), found 'endloop'"
+        );
+        let e = err(&with(7, "vertex 0 0 1"));
+        assert_eq!(e, "bad.stl: line 7: more than 3 vertices in a facet");
+        let e = err(&with(3, "inner loop"));
+        assert!(
+            e.starts_with("bad.stl: line 3: expected 'outer loop'"),
+            "{e}"
+        );
+        let cut = lines[..6].join("\n");
+        let e = err(cut.as_bytes());
+        assert_eq!(
+            e,
+            "bad.stl: line 6: file ends inside a facet, expected 'endloop'"
+        );
+        let e = err(b"solid empty\nendsolid empty\n");
+        assert_eq!(e, "bad.stl: the mesh has no triangles");
+    }
+
+    #[test]
+    fn malformed_binary_names_the_triangle() {
+        let mut bytes = binary(&random_soup(5));
+        // Triangle 3, vertex 2, y coordinate: record start + normal (12) + vertex 1 (12) + x (4).
+        let at = 84 + 3 * 50 + 12 + 12 + 4;
+        bytes[at..at + 4].copy_from_slice(&f32::NAN.to_le_bytes());
+        let e = err(&bytes);
+        assert!(
+            e.starts_with("bad.stl: binary STL, triangle 3 (from 0): vertex 2 has a non-finite"),
+            "{e}"
+        );
+        let e = err(&binary(&random_soup(5))[..84 + 3 * 50 + 20]);
+        assert_eq!(e, "bad.stl: binary STL, triangle 3 (from 0): file truncated: the header announces 5 triangles (334 bytes) but the file has 254 bytes");
+        assert_eq!(err(b""), "bad.stl: empty file");
+        assert!(err(b"\x00\x01garbage").contains("too short for a binary STL"));
+        let missing = Path::new("/nonexistent/riprap/missing.stl");
+        let e = TriMesh::from_stl(missing).unwrap_err().to_string();
+        assert!(
+            e.starts_with("/nonexistent/riprap/missing.stl: cannot read"),
+            "{e}"
+        );
     }
 }

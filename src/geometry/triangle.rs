@@ -1,6 +1,9 @@
-//! Closest point of a triangle to a point (Ericson, *Real-Time Collision Detection*, 5.1.5).
+//! Closest point of a triangle to a point (Ericson, *Real-Time Collision Detection*, 5.1.5),
+//! and the contacts of a sphere with a set of triangles forming one surface.
 
 use glam::DVec3;
+
+use super::SurfaceContact;
 
 /// Which part of a triangle `(a, b, c)` the closest point lies on.
 ///
@@ -35,7 +38,8 @@ pub fn closest_point_on_triangle(p: DVec3, a: DVec3, b: DVec3, c: DVec3) -> (DVe
         .length_squared()
         .max(ac.length_squared())
         .max((c - b).length_squared());
-    if !(n.length_squared() > DEGENERATE_SIN2 * lmax2 * lmax2) {
+    let area2 = n.length_squared();
+    if area2.is_nan() || area2 <= DEGENERATE_SIN2 * lmax2 * lmax2 {
         return closest_on_edges(p, [a, b, c]);
     }
 
@@ -110,10 +114,140 @@ fn closest_on_edges(p: DVec3, v: [DVec3; 3]) -> (DVec3, Feature) {
     best
 }
 
+/// Hits held on the stack in [`sphere_triangle_contacts`]; more take a slower path.
+const HIT_CAP: usize = 32;
+
+/// One triangle's answer in [`sphere_triangle_contacts`].
+#[derive(Clone, Copy, Default)]
+struct Hit {
+    tri: u32,
+    face: bool,
+    point: DVec3,
+    normal: DVec3,
+    overlap: f64,
+}
+
+/// The answer of triangle `id` (corners [m], unit normal or zero) to a sphere, if it touches.
+fn hit(id: u32, (t, n): ([DVec3; 3], DVec3), centre: DVec3, radius: f64, tol: f64) -> Option<Hit> {
+    let [a, b, c] = t;
+    let s = (centre - a).dot(n);
+    if s.abs() >= radius {
+        return None; // too far from the plane (never for degenerate triangles: n = 0)
+    }
+    let (p, feature) = closest_point_on_triangle(centre, a, b, c);
+    // An edge or vertex straight below the centre (within rounding) counts as the face, so
+    // that the normal comes from the plane, not from a tiny, noisy offset.
+    let above = n != DVec3::ZERO && (centre - s * n - p).length() <= tol;
+    let side = if s >= 0.0 { -n } else { n };
+    let (point, normal, dist, face) = if feature == Feature::Face || above {
+        // From the plane equation, as for a plane wall: coplanar triangles agree exactly.
+        (centre - s * n, side, s.abs(), true)
+    } else {
+        let dist = (p - centre).length();
+        let normal = if dist > 0.0 {
+            (p - centre) / dist
+        } else {
+            side
+        };
+        (p, normal, dist, false)
+    };
+    let overlap = radius - dist;
+    (overlap > 0.0 && normal != DVec3::ZERO).then_some(Hit {
+        tri: id,
+        face,
+        point,
+        normal,
+        overlap,
+    })
+}
+
+/// Appends to `out` the contacts of a sphere (centre [m], radius [m]) with the triangles `ids`
+/// of one surface (two-sided), in the order of `ids`; `triangle(id)` gives the corners [m] and
+/// the unit normal (zero if degenerate) of triangle `id`, which becomes the contact's
+/// `element`. Allocates nothing.
+///
+/// Triangles sharing a plane must act exactly as that plane, so per-triangle closest points
+/// are merged, keeping only local minima of the distance over the surface: face contacts are
+/// kept (once per point); an edge or vertex contact is dropped if its point lies on another
+/// triangle (within 1e-9 radius) that gave a face contact or whose own closest point is
+/// elsewhere (hence closer), and edge or vertex contacts at the same point are reported once,
+/// by the first in `ids`. A convex edge or corner thus gives one contact, a concave crease one
+/// per face, and a flat region of any number of triangles one. Containment is tested
+/// geometrically, so unmerged vertices and T-junctions behave too. Every triangle containing a
+/// contact point must be in `ids`, as it is when `ids` holds all within `radius`.
+pub fn sphere_triangle_contacts(
+    centre: DVec3,
+    radius: f64,
+    ids: &[u32],
+    triangle: impl Fn(u32) -> ([DVec3; 3], DVec3),
+    out: &mut impl Extend<SurfaceContact>,
+) {
+    let tol = 1e-9 * radius + 1e-14 * centre.abs().max_element();
+    let mut buf = [Hit::default(); HIT_CAP];
+    let mut n = 0;
+    for &id in ids {
+        if let Some(h) = hit(id, triangle(id), centre, radius, tol) {
+            if n == HIT_CAP {
+                // Rare (a sphere much larger than the triangles): recompute instead of storing.
+                let get = |i: usize| hit(ids[i], triangle(ids[i]), centre, radius, tol);
+                return resolve(ids.len(), get, &triangle, tol, out);
+            }
+            buf[n] = h;
+            n += 1;
+        }
+    }
+    resolve(n, |i| Some(buf[i]), &triangle, tol, out);
+}
+
+/// The merging rule of [`sphere_triangle_contacts`] over the hits `get(0..n)`.
+fn resolve(
+    n: usize,
+    get: impl Fn(usize) -> Option<Hit>,
+    triangle: &impl Fn(u32) -> ([DVec3; 3], DVec3),
+    tol: f64,
+    out: &mut impl Extend<SurfaceContact>,
+) {
+    let same = |p: DVec3, q: DVec3| (p - q).length() <= tol;
+    let on_triangle = |p: DVec3, id: u32| {
+        let [a, b, c] = triangle(id).0;
+        let outside_box = (a.min(b).min(c) - p).max(p - a.max(b).max(c)).max_element() > tol;
+        !outside_box && same(closest_point_on_triangle(p, a, b, c).0, p)
+    };
+    for i in 0..n {
+        let Some(h) = get(i) else { continue };
+        let dropped = if h.face {
+            (0..i)
+                .filter_map(&get)
+                .any(|g| g.face && same(g.point, h.point))
+        } else {
+            // Not a local minimum of the distance if another triangle contains the point and
+            // its own closest point is elsewhere (closest points on a triangle are unique).
+            // Comparing points, not distances, leaves no tolerance gap near a vertex, where
+            // distances differ only to second order.
+            (0..n).any(|j| {
+                get(j).is_some_and(|g| {
+                    g.tri != h.tri
+                        && (g.face || j < i || !same(g.point, h.point))
+                        && on_triangle(h.point, g.tri)
+                })
+            })
+        };
+        if !dropped {
+            out.extend(Some(SurfaceContact {
+                point: h.point,
+                normal: h.normal,
+                overlap: h.overlap,
+                element: h.tri,
+            }));
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::test_util::Rng;
+    use crate::geometry::test_util::{assert_like_plane, square_grid, Rng};
+    use crate::geometry::TriMesh;
 
     /// Minimum distance over a dense barycentric grid of the triangle, and the grid spacing.
     fn brute(p: DVec3, a: DVec3, b: DVec3, c: DVec3, n: usize) -> (f64, f64) {
@@ -135,7 +269,11 @@ mod tests {
         for k in 0..400 {
             let (a, b, c) = (rng.vec(2.0), rng.vec(2.0), rng.vec(2.0));
             // Every fifth triangle a sliver: c almost on the line ab.
-            let c = if k % 5 == 0 { a + 0.3 * (b - a) + 1e-7 * c } else { c };
+            let c = if k % 5 == 0 {
+                a + 0.3 * (b - a) + 1e-7 * c
+            } else {
+                c
+            };
             let p = rng.vec(4.0);
             let (q, f) = closest_point_on_triangle(p, a, b, c);
             let d = (q - p).length();
@@ -156,7 +294,10 @@ mod tests {
                 }
                 Feature::Face => {
                     let n = (b - a).cross(c - a).normalize();
-                    assert!((p - q).cross(n).length() < 1e-9, "case {k}: not a projection");
+                    assert!(
+                        (p - q).cross(n).length() < 1e-9,
+                        "case {k}: not a projection"
+                    );
                 }
             }
         }
@@ -166,13 +307,29 @@ mod tests {
     fn regions_of_unit_triangle() {
         let (a, b, c) = (DVec3::ZERO, DVec3::X, DVec3::Y);
         let cases = [
-            (DVec3::new(0.2, 0.2, 1.0), DVec3::new(0.2, 0.2, 0.0), Feature::Face),
+            (
+                DVec3::new(0.2, 0.2, 1.0),
+                DVec3::new(0.2, 0.2, 0.0),
+                Feature::Face,
+            ),
             (DVec3::new(-1.0, -1.0, 0.5), a, Feature::Vertex(0)),
             (DVec3::new(2.0, -0.5, 0.0), b, Feature::Vertex(1)),
             (DVec3::new(-0.1, 3.0, 0.0), c, Feature::Vertex(2)),
-            (DVec3::new(0.5, -1.0, 0.0), DVec3::new(0.5, 0.0, 0.0), Feature::Edge(0)),
-            (DVec3::new(1.0, 1.0, -2.0), DVec3::new(0.5, 0.5, 0.0), Feature::Edge(1)),
-            (DVec3::new(-1.0, 0.25, 0.0), DVec3::new(0.0, 0.25, 0.0), Feature::Edge(2)),
+            (
+                DVec3::new(0.5, -1.0, 0.0),
+                DVec3::new(0.5, 0.0, 0.0),
+                Feature::Edge(0),
+            ),
+            (
+                DVec3::new(1.0, 1.0, -2.0),
+                DVec3::new(0.5, 0.5, 0.0),
+                Feature::Edge(1),
+            ),
+            (
+                DVec3::new(-1.0, 0.25, 0.0),
+                DVec3::new(0.0, 0.25, 0.0),
+                Feature::Edge(2),
+            ),
         ];
         for (p, q, f) in cases {
             let (q2, f2) = closest_point_on_triangle(p, a, b, c);
@@ -197,5 +354,169 @@ mod tests {
         assert_eq!(q, DVec3::new(0.5, 0.0, 0.0));
         assert!(matches!(f, Feature::Edge(_)));
         assert!(q.is_finite());
+    }
+
+    fn all(mesh: &TriMesh, c: DVec3, r: f64) -> Vec<SurfaceContact> {
+        let cand: Vec<u32> = (0..mesh.triangles().len() as u32).collect();
+        let mut v = Vec::new();
+        mesh.sphere_contacts(c, r, &cand, &mut v);
+        v
+    }
+
+    #[test]
+    fn coplanar_square_acts_as_plane() {
+        let two = TriMesh::from_triangle_soup(&square_grid(1)).unwrap();
+        assert_eq!((two.vertices().len(), two.triangles().len()), (4, 2));
+        assert_like_plane(&two, 1);
+        let grid = TriMesh::from_triangle_soup(&square_grid(4)).unwrap();
+        assert_eq!((grid.vertices().len(), grid.triangles().len()), (25, 32));
+        assert_like_plane(&grid, 4);
+    }
+
+    #[test]
+    fn irregular_flat_mesh_acts_as_plane() {
+        // Interior vertices moved in the plane (deterministically): irregular triangles.
+        let n = 6;
+        let jitter = |p: DVec3| {
+            if p.x <= 0.0 || p.x >= 1.0 || p.y <= 0.0 || p.y >= 1.0 {
+                return p;
+            }
+            let (i, j) = ((p.x * n as f64).round(), (p.y * n as f64).round());
+            p + 0.2 / n as f64
+                * DVec3::new((7.0 * i + 3.0 * j).sin(), (5.0 * i - 11.0 * j).cos(), 0.0)
+        };
+        let soup: Vec<[DVec3; 3]> = square_grid(n).iter().map(|t| t.map(jitter)).collect();
+        assert_like_plane(&TriMesh::from_triangle_soup(&soup).unwrap(), n);
+        // Unmerged vertices (no shared indices at all) behave the same.
+        let tris = (0..soup.len() as u32)
+            .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
+            .collect();
+        assert_like_plane(&TriMesh::new(soup.concat(), tris).unwrap(), n);
+    }
+
+    #[test]
+    fn rough_terrain_keeps_the_deepest_contact() {
+        // Random heightfield: convex and concave edges and vertices everywhere.
+        let mut rng = Rng(4242);
+        let heights: Vec<f64> = (0..81).map(|_| 0.3 * rng.next()).collect();
+        let soup: Vec<[DVec3; 3]> = square_grid(8)
+            .iter()
+            .map(|t| {
+                t.map(|p| {
+                    let k = (p.x * 8.0).round() as usize + 9 * (p.y * 8.0).round() as usize;
+                    DVec3::new(p.x, p.y, heights[k])
+                })
+            })
+            .collect();
+        let mut mesh = TriMesh::from_triangle_soup(&soup).unwrap();
+        mesh.build_bins(0.2);
+        let (mut scratch, mut v) = (Vec::new(), Vec::new());
+        for _ in 0..5000 {
+            let c = DVec3::new(rng.next(), rng.next(), 0.6 * rng.next() - 0.1);
+            let r = 0.05 + 0.2 * rng.next();
+            let closest = (0..soup.len())
+                .map(|i| {
+                    let [a, b, d] = soup[i];
+                    (closest_point_on_triangle(c, a, b, d).0 - c).length()
+                })
+                .fold(f64::INFINITY, f64::min);
+            v.clear();
+            mesh.contacts_near(c, r, &mut scratch, &mut v);
+            let deepest = v
+                .iter()
+                .map(|k| k.overlap)
+                .fold(f64::NEG_INFINITY, f64::max);
+            if closest < r {
+                assert!(
+                    (deepest - (r - closest)).abs() < 1e-12,
+                    "centre {c}, r {r}: {v:?}"
+                );
+            } else {
+                assert!(v.is_empty());
+            }
+            for (i, k) in v.iter().enumerate() {
+                assert!((k.normal.length() - 1.0).abs() < 1e-12);
+                assert!(v[..i]
+                    .iter()
+                    .all(|o| (o.point - k.point).length() > 1e-9 * r && o.element < k.element));
+            }
+        }
+    }
+
+    #[test]
+    fn convex_ridge_gives_one_contact() {
+        // Roof along y with the ridge at x = 0, z = 1 and 45° slopes; rolling over it.
+        let (l0, l1) = (DVec3::new(-1.0, 0.0, 0.0), DVec3::new(-1.0, 2.0, 0.0));
+        let (t0, t1) = (DVec3::new(0.0, 0.0, 1.0), DVec3::new(0.0, 2.0, 1.0));
+        let (r0, r1) = (DVec3::new(1.0, 0.0, 0.0), DVec3::new(1.0, 2.0, 0.0));
+        let mesh =
+            TriMesh::from_triangle_soup(&[[l0, t0, t1], [l0, t1, l1], [t0, r0, r1], [t0, r1, t1]])
+                .unwrap();
+        let (r, d) = (0.3, 0.2);
+        for k in -160..=160 {
+            let th = (k as f64 * 0.5).to_radians();
+            let c = t0 + DVec3::new(0.0, 1.0, 0.0) + d * DVec3::new(th.sin(), 0.0, th.cos());
+            let v = all(&mesh, c, r);
+            assert_eq!(v.len(), 1, "angle {}: {v:?}", k as f64 * 0.5);
+            let off = th.abs() - std::f64::consts::FRAC_PI_4;
+            let dist = if off <= 0.0 { d } else { d * off.cos() };
+            assert!(
+                (v[0].overlap - (r - dist)).abs() < 1e-12,
+                "angle {}: {v:?}",
+                k as f64 * 0.5
+            );
+        }
+    }
+
+    #[test]
+    fn concave_crease_gives_two_contacts() {
+        let (a0, a1) = (DVec3::new(-1.0, 0.0, 1.0), DVec3::new(-1.0, 2.0, 1.0));
+        let (m0, m1) = (DVec3::new(0.0, 0.0, 0.0), DVec3::new(0.0, 2.0, 0.0));
+        let (b0, b1) = (DVec3::new(1.0, 0.0, 1.0), DVec3::new(1.0, 2.0, 1.0));
+        let mesh =
+            TriMesh::from_triangle_soup(&[[a0, m0, m1], [a0, m1, a1], [m0, b0, b1], [m0, b1, m1]])
+                .unwrap();
+        let v = all(&mesh, DVec3::new(0.0, 1.0, 0.3), 0.3);
+        assert_eq!(v.len(), 2, "{v:?}");
+        let d = 0.3 / 2f64.sqrt();
+        for c in &v {
+            assert!((c.overlap - (0.3 - d)).abs() < 1e-12);
+        }
+        let s = 0.5f64.sqrt();
+        assert!((v[0].normal - DVec3::new(-s, 0.0, -s)).length() < 1e-12);
+        assert!((v[1].normal - DVec3::new(s, 0.0, -s)).length() < 1e-12);
+        assert!(v[0].element < v[1].element);
+    }
+
+    /// A fan of `n` triangles around the origin, flat or (tip > 0) a cone.
+    fn fan(n: usize, tip: f64) -> TriMesh {
+        let p = |i: usize| {
+            let a = std::f64::consts::TAU * i as f64 / n as f64;
+            DVec3::new(a.cos(), a.sin(), 0.0)
+        };
+        let soup: Vec<_> = (0..n)
+            .map(|i| [DVec3::new(0.0, 0.0, tip), p(i), p(i + 1)])
+            .collect();
+        TriMesh::from_triangle_soup(&soup).unwrap()
+    }
+
+    #[test]
+    fn shared_vertex_of_many_triangles() {
+        // 20 hits fit the stack buffer, 40 take the recomputing path: same answer.
+        for n in [20, 40] {
+            for c in [DVec3::new(0.0, 0.0, 0.05), DVec3::new(0.03, 0.01, 0.05)] {
+                let v = all(&fan(n, 0.0), c, 0.1);
+                assert_eq!(v.len(), 1, "{n} triangles: {v:?}");
+                assert!(
+                    (v[0].overlap - 0.05).abs() < 1e-12
+                        && (v[0].normal + DVec3::Z).length() < 1e-12
+                );
+            }
+            // Convex cone tip: one vertex contact.
+            let v = all(&fan(n, 0.5), DVec3::new(0.0, 0.0, 0.55), 0.1);
+            assert_eq!(v.len(), 1, "{n}-cone: {v:?}");
+            assert_eq!(v[0].point, DVec3::new(0.0, 0.0, 0.5));
+            assert_eq!(v[0].element, 0);
+        }
     }
 }
