@@ -5,6 +5,7 @@ use rayon::prelude::*;
 use super::contact::{contact_force, Pair, Reaction};
 use super::walls::{match_history, Hits, Shape, WALL_SLOTS};
 use super::Dem;
+use crate::geometry::ContactBuf;
 use crate::math::Vec3;
 
 /// Mesh triangles near each sphere, per wall (empty for walls that are not meshes).
@@ -129,8 +130,9 @@ pub fn compute_forces(dem: &mut Dem, t: f64) {
         .map(|(i, ((f, tq), slots))| {
             let (mut fi, mut ti) = c.gather(pairs, i);
             let mut hits = Hits::default();
+            let mut buf = ContactBuf::new();
             for (w, wall) in walls.iter().enumerate() {
-                wall.contacts(w as u32, s.position[i], s.radius[i], t, mc.of(w, i), &mut hits);
+                wall.contacts(w as u32, s.position[i], s.radius[i], t, mc.of(w, i), &mut buf, &mut hits);
             }
             let mut hist = [Vec3::ZERO; WALL_SLOTS];
             match_history(slots, &hits, &mut hist);

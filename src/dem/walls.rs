@@ -175,17 +175,30 @@ impl Hits {
 
 impl Wall {
     /// All contacts of a sphere (centre `c`, radius `r`) with this wall at time `t`.
-    /// `candidates` lists mesh triangles near the sphere (ignored for other shapes).
-    pub fn contacts(&self, index: u32, c: Vec3, r: f64, t: f64, candidates: &[u32], out: &mut Hits) {
-        let d = self.motion.displacement(t);
-        let u = self.motion.velocity(t);
+    /// `candidates` lists mesh triangles near the sphere (ignored for other shapes); `buf` is
+    /// scratch space, reused so that nothing is initialised or allocated per call.
+    #[allow(clippy::too_many_arguments)]
+    pub fn contacts(
+        &self,
+        index: u32,
+        c: Vec3,
+        r: f64,
+        t: f64,
+        candidates: &[u32],
+        buf: &mut crate::geometry::ContactBuf,
+        out: &mut Hits,
+    ) {
+        let (d, u) = match self.motion {
+            Motion::Fixed => (Vec3::ZERO, Vec3::ZERO),
+            m => (m.displacement(t), m.velocity(t)),
+        };
         let q = c - d;
-        let mut buf = crate::geometry::ContactBuf::default();
+        buf.clear();
         match &self.shape {
-            Shape::Plane(s) => s.sphere_contacts(q, r, &mut buf),
-            Shape::Cuboid(s) => s.sphere_contacts(q, r, &mut buf),
-            Shape::Cylinder(s) => s.sphere_contacts(q, r, &mut buf),
-            Shape::Mesh(s) => s.sphere_contacts(q, r, candidates, &mut buf),
+            Shape::Plane(s) => s.sphere_contacts(q, r, buf),
+            Shape::Cuboid(s) => s.sphere_contacts(q, r, buf),
+            Shape::Cylinder(s) => s.sphere_contacts(q, r, buf),
+            Shape::Mesh(s) => s.sphere_contacts(q, r, candidates, buf),
         }
         for sc in buf.iter() {
             let mut contact = *sc;
@@ -214,6 +227,9 @@ impl Wall {
 /// history of the old contact with the same wall whose normal is closest (within 60°).
 /// Returns the history to use for each hit, in hit order, and rewrites the slots.
 pub fn match_history(slots: &mut WallSlots, hits: &Hits, out: &mut [Vec3; WALL_SLOTS]) {
+    if hits.len == 0 && slots[0].wall == u32::MAX {
+        return; // Slots fill from the front: no contact now and none before.
+    }
     let old = *slots;
     let mut used = [false; WALL_SLOTS];
     *slots = [WallContact::EMPTY; WALL_SLOTS];

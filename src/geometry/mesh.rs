@@ -219,6 +219,9 @@ impl TriMesh {
     /// of `centre` [m], each once, ascending. Uses the bin grid if built, else checks all.
     pub fn candidates(&self, centre: DVec3, reach: f64, out: &mut Vec<u32>) {
         out.clear();
+        if reach.is_nan() || reach < 0.0 {
+            return; // negative or NaN: nothing is within reach
+        }
         let r2 = reach * reach;
         let near = |t: u32| {
             let [lo, hi] = self.boxes[t as usize];
@@ -280,6 +283,7 @@ impl TriMesh {
 mod tests {
     use super::*;
     use crate::geometry::test_util::{square_grid, Rng};
+    use crate::geometry::triangle::closest_point_on_triangle;
 
     #[test]
     fn candidates_match_brute_force() {
@@ -366,5 +370,54 @@ mod tests {
         m.contacts_near(DVec3::new(1.0, -0.05, 6.0), 0.1, &mut Vec::new(), &mut v);
         assert_eq!(v.len(), 1);
         assert!((v[0].normal - DVec3::Y).length() < 1e-12 && (v[0].overlap - 0.05).abs() < 1e-12);
+    }
+
+    #[test]
+    fn rough_terrain_keeps_the_deepest_contact() {
+        // Random heightfield: convex and concave edges and vertices everywhere.
+        let mut rng = Rng(4242);
+        let heights: Vec<f64> = (0..81).map(|_| 0.3 * rng.next()).collect();
+        let soup: Vec<[DVec3; 3]> = square_grid(8)
+            .iter()
+            .map(|t| {
+                t.map(|p| {
+                    let k = (p.x * 8.0).round() as usize + 9 * (p.y * 8.0).round() as usize;
+                    DVec3::new(p.x, p.y, heights[k])
+                })
+            })
+            .collect();
+        let mut mesh = TriMesh::from_triangle_soup(&soup).unwrap();
+        mesh.build_bins(0.2);
+        let (mut scratch, mut v) = (Vec::new(), Vec::new());
+        for _ in 0..5000 {
+            let c = DVec3::new(rng.next(), rng.next(), 0.6 * rng.next() - 0.1);
+            let r = 0.05 + 0.2 * rng.next();
+            let closest = (0..soup.len())
+                .map(|i| {
+                    let [a, b, d] = soup[i];
+                    (closest_point_on_triangle(c, a, b, d).0 - c).length()
+                })
+                .fold(f64::INFINITY, f64::min);
+            v.clear();
+            mesh.contacts_near(c, r, &mut scratch, &mut v);
+            let deepest = v
+                .iter()
+                .map(|k| k.overlap)
+                .fold(f64::NEG_INFINITY, f64::max);
+            if closest < r {
+                assert!(
+                    (deepest - (r - closest)).abs() < 1e-12,
+                    "centre {c}, r {r}: {v:?}"
+                );
+            } else {
+                assert!(v.is_empty());
+            }
+            for (i, k) in v.iter().enumerate() {
+                assert!((k.normal.length() - 1.0).abs() < 1e-12);
+                assert!(v[..i]
+                    .iter()
+                    .all(|o| (o.point - k.point).length() > 1e-9 * r && o.element < k.element));
+            }
+        }
     }
 }

@@ -103,9 +103,84 @@ impl Plane {
     }
 }
 
+/// Asserts that `mesh`, a triangulation of the unit square [0, 1]² at z = 0 (e.g. by
+/// [`square_grid`](super::test_util::square_grid) with `n` cells a side), acts exactly as the
+/// plane z = 0 for spheres above it.
+#[cfg(test)]
+pub(crate) fn assert_like_plane(mesh: &super::TriMesh, n: usize) {
+    use super::test_util::Rng;
+    let r = 0.1;
+    let h = 1.0 / n as f64;
+    let mut centres = Vec::new();
+    let steps = 1000;
+    for k in 0..=steps {
+        let t = k as f64 / steps as f64;
+        centres.push(DVec3::new(t, 0.5, 0.07)); // across edges
+        centres.push(DVec3::new(t, t, 0.07)); // along the diagonal, through vertices
+        centres.push(DVec3::new(1.0 - t, t, 0.03)); // the other diagonal
+        centres.push(DVec3::new(h, t, 0.05)); // along a grid line
+        centres.push(DVec3::new(0.5, 0.5, 0.999 * r * (1.0 - t) + 1e-9)); // bouncing on a vertex
+    }
+    let mut rng = Rng(12345);
+    for _ in 0..3000 {
+        let mut q = DVec3::new(rng.next(), rng.next(), r * (1e-6 + rng.next()) * 0.999);
+        match (rng.next() * 4.0) as u32 {
+            0 => q.x = (q.x * n as f64).round() * h,
+            1 => (q.x, q.y) = ((q.x * n as f64).round() * h, (q.y * n as f64).round() * h),
+            2 => q.y = q.x, // on a diagonal of some cells
+            _ => {}
+        }
+        centres.push(q);
+    }
+    for i in 0..=n {
+        for j in 0..=n {
+            for e in [
+                0.0, 1e-15, 1e-13, 1e-11, 1e-10, 3e-10, 1e-9, 3e-9, 1e-8, 1e-6, 1e-4,
+            ] {
+                let a = std::f64::consts::TAU * rng.next();
+                let p = DVec3::new(i as f64 * h + e * a.cos(), j as f64 * h + e * a.sin(), 0.0);
+                centres.push(p.clamp(DVec3::ZERO, DVec3::ONE) + DVec3::new(0.0, 0.0, 0.05));
+            }
+        }
+    }
+    let rot = glam::DMat3::from_quat(glam::DQuat::from_euler(glam::EulerRot::ZXY, 0.4, 1.3, -0.7));
+    let off = DVec3::new(0.3, -1.7, 2.2);
+    for (m, o) in [(glam::DMat3::IDENTITY, DVec3::ZERO), (rot, off)] {
+        let plane = Plane::new(o, m * DVec3::Z);
+        let mesh_a = mesh.transformed(1.0, m, o);
+        let mut mesh_b = mesh_a.clone();
+        mesh_b.build_bins(0.13);
+        let mut scratch = Vec::new();
+        for &c in &centres {
+            let c = m * c + o;
+            let want = plane.sphere_contact(c, r).unwrap();
+            for mesh in [&mesh_a, &mesh_b] {
+                let mut got = Vec::new();
+                mesh.contacts_near(c, r, &mut scratch, &mut got);
+                assert_eq!(got.len(), 1, "centre {c}: {got:?}");
+                let g = got[0];
+                assert!(
+                    (g.overlap - want.overlap).abs() <= 1e-12,
+                    "centre {c}: {g:?}"
+                );
+                assert!(
+                    (g.normal - want.normal).length() <= 1e-12,
+                    "centre {c}: {g:?}"
+                );
+                assert!(
+                    (g.point - want.point).length() <= 1e-12,
+                    "centre {c}: {g:?}"
+                );
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::test_util::square_grid;
+    use crate::geometry::TriMesh;
 
     #[test]
     fn half_space_contact() {
@@ -159,5 +234,36 @@ mod tests {
         // Outside the box: nothing.
         let p = Plane::new(DVec3::new(0.0, 0.0, 9.0), DVec3::Z);
         assert!(p.surface(lo, hi).0.is_empty());
+    }
+
+    #[test]
+    fn coplanar_square_acts_as_plane() {
+        let two = TriMesh::from_triangle_soup(&square_grid(1)).unwrap();
+        assert_eq!((two.vertices().len(), two.triangles().len()), (4, 2));
+        assert_like_plane(&two, 1);
+        let grid = TriMesh::from_triangle_soup(&square_grid(4)).unwrap();
+        assert_eq!((grid.vertices().len(), grid.triangles().len()), (25, 32));
+        assert_like_plane(&grid, 4);
+    }
+
+    #[test]
+    fn irregular_flat_mesh_acts_as_plane() {
+        // Interior vertices moved in the plane (deterministically): irregular triangles.
+        let n = 6;
+        let jitter = |p: DVec3| {
+            if p.x <= 0.0 || p.x >= 1.0 || p.y <= 0.0 || p.y >= 1.0 {
+                return p;
+            }
+            let (i, j) = ((p.x * n as f64).round(), (p.y * n as f64).round());
+            p + 0.2 / n as f64
+                * DVec3::new((7.0 * i + 3.0 * j).sin(), (5.0 * i - 11.0 * j).cos(), 0.0)
+        };
+        let soup: Vec<[DVec3; 3]> = square_grid(n).iter().map(|t| t.map(jitter)).collect();
+        assert_like_plane(&TriMesh::from_triangle_soup(&soup).unwrap(), n);
+        // Unmerged vertices (no shared indices at all) behave the same.
+        let tris = (0..soup.len() as u32)
+            .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
+            .collect();
+        assert_like_plane(&TriMesh::new(soup.concat(), tris).unwrap(), n);
     }
 }

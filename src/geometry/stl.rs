@@ -139,76 +139,68 @@ enum State {
 
 fn parse_ascii(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
     let text = String::from_utf8_lossy(bytes);
-    let err = |line: usize, reason: String| StlError::Ascii {
+    let err = |line, reason| StlError::Ascii {
         file: file.into(),
         line,
         reason,
     };
-    let mut state = State::Outside;
-    let mut corners = [DVec3::ZERO; 3];
-    let mut tris = Vec::new();
-    let mut last = 0;
+    let (mut state, mut corners, mut tris, mut last) =
+        (State::Outside, [DVec3::ZERO; 3], Vec::new(), 0);
     for (i, line) in text.lines().enumerate() {
-        let line_no = i + 1;
-        let mut tok = line.split_whitespace();
-        let Some(word) = tok.next() else { continue };
-        last = line_no;
-        state = match (state, word.to_ascii_lowercase().as_str()) {
-            (State::Outside, "solid") => State::Solid,
-            // The facet normal is ignored: the corner order defines the orientation.
-            (State::Solid, "facet") => State::Facet,
-            (State::Solid, "endsolid") => State::Outside,
-            (State::Facet, "outer")
-                if tok.next().is_some_and(|w| w.eq_ignore_ascii_case("loop")) =>
-            {
-                State::Loop(0)
-            }
-            (State::Loop(k), "vertex") if k < 3 => {
-                let words: Vec<&str> = tok.collect();
-                if words.len() != 3 {
-                    return Err(err(
-                        line_no,
-                        format!(
-                            "expected 3 coordinates after 'vertex', found {}",
-                            words.len()
-                        ),
-                    ));
-                }
-                let mut xyz = [0.0f64; 3];
-                for (x, w) in xyz.iter_mut().zip(&words) {
-                    *x = w
-                        .parse()
-                        .map_err(|_| err(line_no, format!("invalid number '{w}'")))?;
-                    if !x.is_finite() {
-                        return Err(err(line_no, format!("non-finite coordinate '{w}'")));
-                    }
-                }
-                corners[k] = DVec3::from_array(xyz);
-                State::Loop(k + 1)
-            }
-            (State::Loop(3), "endloop") => State::EndFacet,
-            (State::Loop(_), "vertex") => {
-                return Err(err(line_no, "more than 3 vertices in a facet".into()))
-            }
-            (State::EndFacet, "endfacet") => {
-                tris.push(corners);
-                State::Solid
-            }
-            (s, _) => {
-                return Err(err(
-                    line_no,
-                    format!("expected {}, found '{}'", expected(s), line.trim()),
-                ))
-            }
-        };
+        if !line.trim().is_empty() {
+            last = i + 1;
+            state = step(state, line, &mut corners, &mut tris).map_err(|r| err(last, r))?;
+        }
     }
     if matches!(state, State::Facet | State::Loop(_) | State::EndFacet) {
-        return Err(err(
-            last,
-            format!("file ends inside a facet, expected {}", expected(state)),
-        ));
+        let reason = format!("file ends inside a facet, expected {}", expected(state));
+        return Err(err(last, reason));
     }
     Ok(tris)
+}
+
+/// One non-blank line of an ASCII STL: the next state, or what is wrong.
+fn step(
+    state: State,
+    line: &str,
+    corners: &mut [DVec3; 3],
+    tris: &mut Vec<[DVec3; 3]>,
+) -> Result<State, String> {
+    let mut tok = line.split_whitespace();
+    let word = tok.next().unwrap_or_default().to_ascii_lowercase();
+    Ok(match (state, word.as_str()) {
+        (State::Outside, "solid") => State::Solid,
+        // The facet normal is ignored: the corner order defines the orientation.
+        (State::Solid, "facet") => State::Facet,
+        (State::Solid, "endsolid") => State::Outside,
+        (State::Facet, "outer") if tok.next().is_some_and(|w| w.eq_ignore_ascii_case("loop")) => {
+            State::Loop(0)
+        }
+        (State::Loop(k), "vertex") if k < 3 => {
+            let words: Vec<&str> = tok.collect();
+            if words.len() != 3 {
+                return Err(format!(
+                    "expected 3 coordinates after 'vertex', found {}",
+                    words.len()
+                ));
+            }
+            for (j, w) in words.iter().enumerate() {
+                let x: f64 = w.parse().map_err(|_| format!("invalid number '{w}'"))?;
+                if !x.is_finite() {
+                    return Err(format!("non-finite coordinate '{w}'"));
+                }
+                corners[k][j] = x;
+            }
+            State::Loop(k + 1)
+        }
+        (State::Loop(3), "endloop") => State::EndFacet,
+        (State::Loop(_), "vertex") => return Err("more than 3 vertices in a facet".into()),
+        (State::EndFacet, "endfacet") => {
+            tris.push(*corners);
+            State::Solid
+        }
+        (s, _) => return Err(format!("expected {}, found '{}'", expected(s), line.trim())),
+    })
 }
 
 fn expected(s: State) -> String {
@@ -298,7 +290,8 @@ impl TriMesh {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::test_util::{assert_like_plane, square_grid, Rng};
+    use crate::geometry::plane::assert_like_plane;
+    use crate::geometry::test_util::{square_grid, Rng};
 
     fn temp_file(name: &str, bytes: &[u8]) -> std::path::PathBuf {
         let path = std::env::temp_dir().join(format!("riprap_stl_{}_{name}", std::process::id()));

@@ -246,7 +246,7 @@ fn resolve(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::test_util::{assert_like_plane, square_grid, Rng};
+    use crate::geometry::test_util::Rng;
     use crate::geometry::TriMesh;
 
     /// Minimum distance over a dense barycentric grid of the triangle, and the grid spacing.
@@ -361,86 +361,6 @@ mod tests {
         let mut v = Vec::new();
         mesh.sphere_contacts(c, r, &cand, &mut v);
         v
-    }
-
-    #[test]
-    fn coplanar_square_acts_as_plane() {
-        let two = TriMesh::from_triangle_soup(&square_grid(1)).unwrap();
-        assert_eq!((two.vertices().len(), two.triangles().len()), (4, 2));
-        assert_like_plane(&two, 1);
-        let grid = TriMesh::from_triangle_soup(&square_grid(4)).unwrap();
-        assert_eq!((grid.vertices().len(), grid.triangles().len()), (25, 32));
-        assert_like_plane(&grid, 4);
-    }
-
-    #[test]
-    fn irregular_flat_mesh_acts_as_plane() {
-        // Interior vertices moved in the plane (deterministically): irregular triangles.
-        let n = 6;
-        let jitter = |p: DVec3| {
-            if p.x <= 0.0 || p.x >= 1.0 || p.y <= 0.0 || p.y >= 1.0 {
-                return p;
-            }
-            let (i, j) = ((p.x * n as f64).round(), (p.y * n as f64).round());
-            p + 0.2 / n as f64
-                * DVec3::new((7.0 * i + 3.0 * j).sin(), (5.0 * i - 11.0 * j).cos(), 0.0)
-        };
-        let soup: Vec<[DVec3; 3]> = square_grid(n).iter().map(|t| t.map(jitter)).collect();
-        assert_like_plane(&TriMesh::from_triangle_soup(&soup).unwrap(), n);
-        // Unmerged vertices (no shared indices at all) behave the same.
-        let tris = (0..soup.len() as u32)
-            .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
-            .collect();
-        assert_like_plane(&TriMesh::new(soup.concat(), tris).unwrap(), n);
-    }
-
-    #[test]
-    fn rough_terrain_keeps_the_deepest_contact() {
-        // Random heightfield: convex and concave edges and vertices everywhere.
-        let mut rng = Rng(4242);
-        let heights: Vec<f64> = (0..81).map(|_| 0.3 * rng.next()).collect();
-        let soup: Vec<[DVec3; 3]> = square_grid(8)
-            .iter()
-            .map(|t| {
-                t.map(|p| {
-                    let k = (p.x * 8.0).round() as usize + 9 * (p.y * 8.0).round() as usize;
-                    DVec3::new(p.x, p.y, heights[k])
-                })
-            })
-            .collect();
-        let mut mesh = TriMesh::from_triangle_soup(&soup).unwrap();
-        mesh.build_bins(0.2);
-        let (mut scratch, mut v) = (Vec::new(), Vec::new());
-        for _ in 0..5000 {
-            let c = DVec3::new(rng.next(), rng.next(), 0.6 * rng.next() - 0.1);
-            let r = 0.05 + 0.2 * rng.next();
-            let closest = (0..soup.len())
-                .map(|i| {
-                    let [a, b, d] = soup[i];
-                    (closest_point_on_triangle(c, a, b, d).0 - c).length()
-                })
-                .fold(f64::INFINITY, f64::min);
-            v.clear();
-            mesh.contacts_near(c, r, &mut scratch, &mut v);
-            let deepest = v
-                .iter()
-                .map(|k| k.overlap)
-                .fold(f64::NEG_INFINITY, f64::max);
-            if closest < r {
-                assert!(
-                    (deepest - (r - closest)).abs() < 1e-12,
-                    "centre {c}, r {r}: {v:?}"
-                );
-            } else {
-                assert!(v.is_empty());
-            }
-            for (i, k) in v.iter().enumerate() {
-                assert!((k.normal.length() - 1.0).abs() < 1e-12);
-                assert!(v[..i]
-                    .iter()
-                    .all(|o| (o.point - k.point).length() > 1e-9 * r && o.element < k.element));
-            }
-        }
     }
 
     #[test]
