@@ -19,9 +19,11 @@
 
 pub mod bench;
 pub mod dem;
+pub mod fluid;
 pub mod geometry;
 pub mod io;
 pub mod math;
+pub mod rigid;
 pub mod run;
 pub mod scenario;
 pub mod simulation;

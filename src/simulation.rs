@@ -107,20 +107,15 @@ impl Simulation {
         let d = &mut self.dem;
         let domain = d.domain;
         let mut lost = 0;
-        let keep: Vec<bool> = d
-            .spheres
-            .position
-            .iter_mut()
-            .map(|x| {
-                *x = domain.wrap(*x);
-                let inside = domain.contains(*x) || !is_finite(*x);
-                lost += usize::from(!inside);
-                inside
-            })
-            .collect();
-        if lost == 0 {
-            return false;
+        for x in d.spheres.position.iter_mut() {
+            *x = domain.wrap(*x);
+            lost += usize::from(!(domain.contains(*x) || !is_finite(*x)));
         }
+        if lost == 0 {
+            return false; // The common case allocates nothing.
+        }
+        let keep: Vec<bool> =
+            d.spheres.position.iter().map(|&x| domain.contains(x) || !is_finite(x)).collect();
         d.spheres.retain(&keep);
         let mut k = 0;
         d.wall_slots.retain(|_| {

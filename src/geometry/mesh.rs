@@ -86,7 +86,8 @@ impl TriMesh {
     }
 
     /// A mesh from a triangle soup (corners [m], as read from an STL file), merging vertices
-    /// that are equal or within 1e-12 of the mesh size of each other.
+    /// that are equal or within 1e-12 times the larger of the mesh size and its largest
+    /// coordinate of each other (per component). Triangle order is kept.
     pub fn from_triangle_soup(soup: &[[DVec3; 3]]) -> Result<TriMesh, MeshError> {
         if soup.is_empty() {
             return Err(MeshError::Empty);
@@ -205,7 +206,8 @@ impl TriMesh {
 
     /// Builds the bin grid with cubic cells of `cell_size` [m] (enlarged if the grid would get
     /// too big; the mesh size if not positive). Each triangle is registered in every cell that
-    /// its bounding box overlaps. A good cell is about the largest sphere diameter.
+    /// its bounding box overlaps. A good cell is about the larger of the typical triangle size
+    /// and the reach of the queries: much smaller cells register each triangle many times.
     pub fn build_bins(&mut self, cell_size: f64) {
         self.bins = Some(BoxGrid::new(&self.boxes, cell_size));
     }
@@ -297,7 +299,7 @@ mod tests {
             .collect();
         let mut mesh = TriMesh::from_triangle_soup(&soup).unwrap();
         let mut got = Vec::new();
-        for cell in [0.0, 0.03, 0.2, 1.0, 5.0] {
+        for cell in [0.0, 1e-6, 0.03, 0.2, 1.0, 5.0] {
             if cell > 0.0 {
                 mesh.build_bins(cell);
             }

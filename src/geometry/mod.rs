@@ -185,7 +185,7 @@ impl BoxGrid {
         };
         cell = cell.max(1e-9 * ext.max_element()).max(f64::MIN_POSITIVE);
         let mut grid = loop {
-            let dims = ((ext / cell).floor() + 1.0).min(DVec3::splat(MAX_CELLS));
+            let dims = (ext / cell).floor() + 1.0; // checked below before any use
             let g = BoxGrid {
                 origin: lo,
                 cell,

@@ -155,10 +155,10 @@ pub(crate) fn assert_like_plane(mesh: &super::TriMesh, n: usize) {
             let c = m * c + o;
             let want = plane.sphere_contact(c, r).unwrap();
             for mesh in [&mesh_a, &mesh_b] {
-                let mut got = Vec::new();
+                let mut got = super::ContactBuf::new();
                 mesh.contacts_near(c, r, &mut scratch, &mut got);
                 assert_eq!(got.len(), 1, "centre {c}: {got:?}");
-                let g = got[0];
+                let g = got.as_slice()[0];
                 assert!(
                     (g.overlap - want.overlap).abs() <= 1e-12,
                     "centre {c}: {g:?}"

@@ -62,7 +62,8 @@ pub enum StlError {
 ///
 /// Binary is recognised first by its exact size, 84 + 50 n bytes for the n triangles its header
 /// announces (some binary files start with "solid", like ASCII ones); otherwise a file starting
-/// with "solid" is ASCII. Facet normals are ignored (corner order defines orientation).
+/// with "solid" is ASCII unless it holds NUL bytes. Facet normals are ignored (the corner order
+/// defines the orientation).
 pub fn parse_stl(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
     let exact_binary = binary_size(bytes) == Some(bytes.len() as u64);
     let text_start = bytes
@@ -72,7 +73,8 @@ pub fn parse_stl(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> 
     let ascii = bytes[text_start..]
         .get(..5)
         .is_some_and(|s| s.eq_ignore_ascii_case(b"solid"));
-    if !exact_binary && ascii {
+    // Text never holds NUL bytes (binary files nearly always do, in their numbers).
+    if ascii && !exact_binary && !bytes.contains(&0) {
         parse_ascii(bytes, file)
     } else {
         parse_binary(bytes, file)
@@ -265,7 +267,7 @@ impl TriMesh {
         Self::from_named_stl_bytes(&bytes, &file)
     }
 
-    /// Reads STL bytes (ASCII or binary); errors name the file "<memory>".
+    /// Reads STL bytes (ASCII or binary); errors name the file `<memory>`.
     pub fn from_stl_bytes(bytes: &[u8]) -> Result<TriMesh, StlError> {
         Self::from_named_stl_bytes(bytes, "<memory>")
     }
@@ -293,10 +295,13 @@ mod tests {
     use crate::geometry::plane::assert_like_plane;
     use crate::geometry::test_util::{square_grid, Rng};
 
-    fn temp_file(name: &str, bytes: &[u8]) -> std::path::PathBuf {
+    /// Writes `bytes` to a temporary file, reads it with [`TriMesh::from_stl`], removes it.
+    fn via_file(name: &str, bytes: &[u8]) -> TriMesh {
         let path = std::env::temp_dir().join(format!("riprap_stl_{}_{name}", std::process::id()));
         std::fs::write(&path, bytes).unwrap();
-        path
+        let mesh = TriMesh::from_stl(&path);
+        std::fs::remove_file(&path).unwrap();
+        mesh.unwrap()
     }
 
     fn ascii(tris: &[[DVec3; 3]]) -> Vec<u8> {
@@ -327,7 +332,7 @@ mod tests {
     #[test]
     fn ascii_round_trip_is_exact() {
         let soup = random_soup(20);
-        let mesh = TriMesh::from_stl(&temp_file("rt.stl", &ascii(&soup))).unwrap();
+        let mesh = via_file("rt.stl", &ascii(&soup));
         assert_eq!(mesh.triangle_soup(), soup);
     }
 
@@ -351,13 +356,16 @@ mod tests {
             TriMesh::from_stl_bytes(&solid).unwrap().triangle_soup(),
             single
         );
-        // Trailing padding is tolerated when the header does not say "solid".
-        let mut padded = bytes;
-        padded.extend([0u8; 7]);
-        assert_eq!(
-            TriMesh::from_stl_bytes(&padded).unwrap().triangle_soup(),
-            single
-        );
+        // Trailing bytes are tolerated, even after a "solid" header; truncation is reported.
+        for mut padded in [bytes, solid] {
+            padded.extend([0u8; 7]);
+            let mesh = TriMesh::from_stl_bytes(&padded).unwrap();
+            assert_eq!(mesh.triangle_soup(), single);
+            let e = TriMesh::from_stl_bytes(&padded[..300])
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains("triangle 4 (from 0): file truncated"), "{e}");
+        }
     }
 
     #[test]
@@ -375,7 +383,7 @@ mod tests {
             ("grid_ascii.stl", ascii(&soup)),
             ("grid_binary.stl", binary(&soup)),
         ] {
-            let mesh = TriMesh::from_stl(&temp_file(name, &bytes)).unwrap();
+            let mesh = via_file(name, &bytes);
             assert_eq!(
                 (mesh.vertices().len(), mesh.triangles().len()),
                 (25, 32),
@@ -389,33 +397,28 @@ mod tests {
     fn malformed_ascii_names_the_line() {
         let good = String::from_utf8(ascii(&square_grid(1))).unwrap();
         let lines: Vec<&str> = good.lines().collect();
-        // Line 4 is the first "vertex" line.
-        let with = |i: usize, s: &str| {
+        // Line 1 is "solid", 2 "facet normal", 3 "outer loop", 4 to 6 "vertex", 7 "endloop".
+        for (i, line, want) in [
+            (4, "vertex 1 2 abc", "invalid number 'abc'"),
+            (5, "vertex 1 nan 0", "non-finite coordinate 'nan'"),
+            (
+                6,
+                "vertex 1 2",
+                "expected 3 coordinates after 'vertex', found 2",
+            ),
+            (
+                6,
+                "endloop",
+                "expected 'vertex' (corner 3 of 3), found 'endloop'",
+            ),
+            (7, "vertex 0 0 1", "more than 3 vertices in a facet"),
+            (3, "inner loop", "expected 'outer loop', found 'inner loop'"),
+        ] {
             let mut l = lines.clone();
-            l[i - 1] = s;
-            l.join("\n").into_bytes()
-        };
-        let e = err(&with(4, "vertex 1 2 abc"));
-        assert_eq!(e, "bad.stl: line 4: invalid number 'abc'");
-        let e = err(&with(5, "vertex 1 nan 0"));
-        assert_eq!(e, "bad.stl: line 5: non-finite coordinate 'nan'");
-        let e = err(&with(6, "vertex 1 2"));
-        assert_eq!(
-            e,
-            "bad.stl: line 6: expected 3 coordinates after 'vertex', found 2"
-        );
-        let e = err(&with(6, "endloop"));
-        assert_eq!(
-            e,
-            "bad.stl: line 6: expected 'vertex' (corner 3 of 3), found 'endloop'"
-        );
-        let e = err(&with(7, "vertex 0 0 1"));
-        assert_eq!(e, "bad.stl: line 7: more than 3 vertices in a facet");
-        let e = err(&with(3, "inner loop"));
-        assert!(
-            e.starts_with("bad.stl: line 3: expected 'outer loop'"),
-            "{e}"
-        );
+            l[i - 1] = line;
+            let e = err(l.join("\n").as_bytes());
+            assert_eq!(e, format!("bad.stl: line {i}: {want}"));
+        }
         let cut = lines[..6].join("\n");
         let e = err(cut.as_bytes());
         assert_eq!(

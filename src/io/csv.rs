@@ -24,7 +24,7 @@ pub struct CsvSeries {
 impl CsvSeries {
     /// Creates (or truncates) `path` and writes the header line `columns`
     /// (put units in the names, e.g. `"time_s"`). The first column is taken
-    /// to be the time [s] by [`resume`](Self::resume).
+    /// to be the time \[s\] by [`resume`](Self::resume).
     ///
     /// Errors with `InvalidInput` for no columns, or a name containing a
     /// comma, quote or line break (they would break the plain CSV format).
@@ -36,7 +36,7 @@ impl CsvSeries {
     }
 
     /// For restart: opens an existing series at `path`, drops the rows from
-    /// the first one whose time (first column) is > `t_max` [s] onwards,
+    /// the first one whose time (first column) is > `t_max` \[s\] onwards,
     /// together with a half-written last row left by a crash, and appends
     /// from there. Creates the file if it does not exist or is empty.
     ///
@@ -46,7 +46,9 @@ impl CsvSeries {
         let header = header_line(columns)?;
         let mut file = match OpenOptions::new().read(true).write(true).open(path) {
             Ok(f) => f,
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Self::create(path, columns),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                return Self::create(path, columns)
+            }
             Err(e) => return Err(e),
         };
         let mut text = String::new();
@@ -122,7 +124,9 @@ fn header_line(columns: &[&str]) -> std::io::Result<String> {
         return Err(invalid_input("a CSV series needs at least one column"));
     }
     if let Some(bad) = columns.iter().find(|c| c.contains([',', '"', '\n', '\r'])) {
-        return Err(invalid_input(format!("CSV column name '{bad}' contains a comma, quote or line break")));
+        return Err(invalid_input(format!(
+            "CSV column name '{bad}' contains a comma, quote or line break"
+        )));
     }
     Ok(columns.join(",") + "\n")
 }
@@ -131,10 +135,17 @@ fn header_line(columns: &[&str]) -> std::io::Result<String> {
 fn parse_row(line: &str, n: usize) -> Result<Vec<f64>, String> {
     let row = line
         .split(',')
-        .map(|s| s.trim().parse::<f64>().map_err(|_| format!("'{s}' is not a number")))
+        .map(|s| {
+            s.trim()
+                .parse::<f64>()
+                .map_err(|_| format!("'{s}' is not a number"))
+        })
         .collect::<Result<Vec<_>, _>>()?;
     if row.len() != n {
-        return Err(format!("{} values where the header has {n} columns", row.len()));
+        return Err(format!(
+            "{} values where the header has {n} columns",
+            row.len()
+        ));
     }
     Ok(row)
 }
@@ -169,12 +180,15 @@ mod tests {
     const COLS: [&str; 3] = ["time_s", "energy_J", "n"];
 
     fn bits(rows: &[Vec<f64>]) -> Vec<Vec<u64>> {
-        rows.iter().map(|r| r.iter().map(|v| v.to_bits()).collect()).collect()
+        rows.iter()
+            .map(|r| r.iter().map(|v| v.to_bits()).collect())
+            .collect()
     }
 
     #[test]
     fn rows_round_trip_bitwise() {
-        let path = test_dir("csv_round").join("s.csv");
+        let dir = test_dir("csv_round");
+        let path = dir.join("s.csv");
         let rows = vec![
             vec![0.0, 1.0 / 3.0, 5.0],
             vec![0.1 + 0.2, -1e-300, f64::MAX],
@@ -192,12 +206,15 @@ mod tests {
         assert_eq!(bits(&back), bits(&rows));
         let err = s.row(&[1.0]).unwrap_err();
         assert_eq!(err.kind(), std::io::ErrorKind::InvalidInput);
-        assert!(std::fs::read_to_string(&path).unwrap().starts_with("time_s,energy_J,n\n0,"));
+        assert!(std::fs::read_to_string(&path)
+            .unwrap()
+            .starts_with("time_s,energy_J,n\n0,"));
     }
 
     #[test]
     fn resume_truncates_after_t_max_and_appends() {
-        let path = test_dir("csv_resume").join("s.csv");
+        let dir = test_dir("csv_resume");
+        let path = dir.join("s.csv");
         let mut s = CsvSeries::create(&path, &COLS).unwrap();
         for i in 0..6 {
             s.row(&[i as f64 * 0.5, i as f64, 0.0]).unwrap();
@@ -214,12 +231,21 @@ mod tests {
 
     #[test]
     fn resume_drops_half_written_row() {
-        let path = test_dir("csv_partial").join("s.csv");
-        std::fs::write(&path, "time_s,energy_J,n\n0,1,2\n0.5,3,4\n1,5").unwrap();
+        let dir = test_dir("csv_partial");
+        let path = dir.join("s.csv");
+        // The last row was cut short: "1,5,67\n" became "1,5,6".
+        std::fs::write(&path, "time_s,energy_J,n\n0,1,2\n0.5,3,4\n1,5,6").unwrap();
         let mut s = CsvSeries::resume(&path, &COLS, 10.0).unwrap();
         s.row(&[1.0, 6.0, 7.0]).unwrap();
         let (_, rows) = read_csv(&path).unwrap();
-        assert_eq!(rows, [vec![0.0, 1.0, 2.0], vec![0.5, 3.0, 4.0], vec![1.0, 6.0, 7.0]]);
+        assert_eq!(
+            rows,
+            [
+                vec![0.0, 1.0, 2.0],
+                vec![0.5, 3.0, 4.0],
+                vec![1.0, 6.0, 7.0]
+            ]
+        );
     }
 
     #[test]
@@ -228,7 +254,10 @@ mod tests {
         let path = dir.join("new.csv");
         let mut s = CsvSeries::resume(&path, &COLS, 1.0).unwrap();
         s.row(&[0.0, 1.0, 2.0]).unwrap();
-        assert_eq!(read_csv(&path).unwrap(), (COLS.map(String::from).to_vec(), vec![vec![0.0, 1.0, 2.0]]));
+        assert_eq!(
+            read_csv(&path).unwrap(),
+            (COLS.map(String::from).to_vec(), vec![vec![0.0, 1.0, 2.0]])
+        );
         let err = CsvSeries::resume(&path, &["time_s", "other"], 1.0).unwrap_err();
         assert_eq!(err.kind(), std::io::ErrorKind::InvalidData);
         assert!(CsvSeries::create(&dir.join("b.csv"), &["a,b"]).is_err());
@@ -237,7 +266,8 @@ mod tests {
 
     #[test]
     fn read_csv_reports_bad_line() {
-        let path = test_dir("csv_bad").join("s.csv");
+        let dir = test_dir("csv_bad");
+        let path = dir.join("s.csv");
         std::fs::write(&path, "t,x\n0,1\n\n1,oops\n").unwrap();
         let err = read_csv(&path).unwrap_err();
         assert_eq!(err.kind(), std::io::ErrorKind::InvalidData);

@@ -4,7 +4,7 @@
 //! PNG) or appended row by row (CSV), so that a run killed at any moment
 //! leaves readable files behind.
 
-// Module declarations (checkpoint.rs will be declared here as well).
+// Module declarations.
 pub mod checkpoint;
 pub mod csv;
 pub mod plot;
@@ -90,21 +90,46 @@ pub(crate) fn xml_escape(s: &str) -> String {
     out
 }
 
-/// A fresh, empty directory under the system temp dir for one test.
+/// A fresh, empty directory under the system temp dir for one test,
+/// removed when the test passes and kept for inspection when it fails.
 #[cfg(test)]
-pub(crate) fn test_dir(name: &str) -> PathBuf {
+pub(crate) fn test_dir(name: &str) -> TestDir {
     use std::sync::atomic::{AtomicUsize, Ordering};
     static COUNTER: AtomicUsize = AtomicUsize::new(0);
     let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-    let dir = std::env::temp_dir().join(format!(
-        "riprap_io_test_{}_{}_{}",
-        std::process::id(),
-        n,
-        name
-    ));
+    let pid = std::process::id();
+    let dir = std::env::temp_dir().join(format!("riprap_io_test_{pid}_{n}_{name}"));
     let _ = fs::remove_dir_all(&dir);
     fs::create_dir_all(&dir).expect("create test dir");
-    dir
+    TestDir(dir)
+}
+
+/// See [`test_dir`]; derefs to the directory's path.
+#[cfg(test)]
+pub(crate) struct TestDir(PathBuf);
+
+#[cfg(test)]
+impl std::ops::Deref for TestDir {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.0
+    }
+}
+
+#[cfg(test)]
+impl AsRef<Path> for TestDir {
+    fn as_ref(&self) -> &Path {
+        &self.0
+    }
+}
+
+#[cfg(test)]
+impl Drop for TestDir {
+    fn drop(&mut self) {
+        if !std::thread::panicking() {
+            let _ = fs::remove_dir_all(&self.0);
+        }
+    }
 }
 
 #[cfg(test)]

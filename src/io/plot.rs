@@ -10,22 +10,16 @@ use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
-/// Plot width and height [px] (PNG pixels, SVG user units).
+/// Plot width and height \[px\] (PNG pixels, SVG user units).
 const SIZE: (u32, u32) = (1000, 700);
+/// Largest axis magnitude; see `draw`.
+const LIMIT: f64 = 1e300;
 /// The family name the embedded font is registered under.
 const FONT: &str = "sans-serif";
-/// Matplotlib's "tab10" colours: distinct, and familiar to engineers.
-const PALETTE: [RGBColor; 10] = [
-    RGBColor(31, 119, 180),
-    RGBColor(255, 127, 14),
-    RGBColor(44, 160, 44),
-    RGBColor(214, 39, 40),
-    RGBColor(148, 103, 189),
-    RGBColor(140, 86, 75),
-    RGBColor(227, 119, 194),
-    RGBColor(127, 127, 127),
-    RGBColor(188, 189, 34),
-    RGBColor(23, 190, 207),
+/// Matplotlib's "tab10" colours (0xRRGGBB): distinct, and familiar to engineers.
+const PALETTE: [u32; 10] = [
+    0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x9467bd, 0x8c564b, 0xe377c2, 0x7f7f7f, 0xbcbd22,
+    0x17becf,
 ];
 
 /// One curve of a plot.
@@ -37,6 +31,17 @@ pub struct Series<'a> {
     pub points: &'a [(f64, f64)],
     /// How the points are drawn.
     pub style: LineStyle,
+}
+
+impl<'a> Series<'a> {
+    /// A series from its parts.
+    pub fn new(label: &'a str, points: &'a [(f64, f64)], style: LineStyle) -> Self {
+        Series {
+            label,
+            points,
+            style,
+        }
+    }
 }
 
 /// How a series is drawn; colours are assigned in order from a fixed palette.
@@ -88,7 +93,10 @@ pub enum PlotError {
 /// no drawable points at all the frame is still drawn, over a unit range.
 pub fn line_plot(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), PlotError> {
     register_font()?;
-    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
     match ext.as_deref() {
         Some("svg") => {
             let mut svg = String::new();
@@ -147,39 +155,67 @@ fn drawable(&(x, y): &(f64, f64), log_y: bool) -> bool {
 }
 
 /// Chooses the axis ranges, then draws frame, curves and legend.
-fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, axes: &Axes, series: &[Series]) -> Result<(), PlotError>
+fn draw<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    axes: &Axes,
+    series: &[Series],
+) -> Result<(), PlotError>
 where
     DB::ErrorType: 'static,
 {
     root.fill(&WHITE).map_err(drawing)?;
-    let pts = || series.iter().flat_map(|s| s.points).filter(|p| drawable(p, axes.log_y));
-    let x = padded(min_max(pts().map(|p| p.0)), 0.02);
-    let ys = min_max(pts().map(|p| p.1));
+    let pts = || {
+        series
+            .iter()
+            .flat_map(|s| s.points)
+            .filter(|p| drawable(p, axes.log_y))
+    };
+    // plotters' tick search never ends on spans near f64::MAX, so extreme
+    // values are clipped to +-1e300 (and to >= 1e-300 on a log axis).
+    let x = padded(min_max(pts().map(|p| p.0.clamp(-LIMIT, LIMIT))), 0.02);
     if axes.log_y {
+        let ys = min_max(pts().map(|p| p.1.clamp(1.0 / LIMIT, LIMIT).log10()));
         // Pad in decades so the padding looks the same at every scale.
-        let (lo, hi) = ys.map_or((1.0, 10.0), |(lo, hi)| (lo.log10(), hi.log10()));
-        let y = padded(Some((lo, hi)), 0.05);
-        let y = 10f64.powf(y.start).max(f64::MIN_POSITIVE)..10f64.powf(y.end).min(f64::MAX);
-        chart(root, axes, series, x, y.log_scale())
+        let mut y = padded(Some(ys.unwrap_or((0.0, 1.0))), 0.05);
+        // Its tick search also needs the ratio end/start to stay finite.
+        y.start = y.start.max(y.end - 300.0);
+        let pow = |e: f64| 10f64.powf(e).clamp(1.0 / LIMIT, LIMIT);
+        let y = pow(y.start)..pow(y.end);
+        chart(root, axes, series, x, y.clone(), y.log_scale())
     } else {
-        chart(root, axes, series, x, padded(ys, 0.05))
+        let y = padded(min_max(pts().map(|p| p.1.clamp(-LIMIT, LIMIT))), 0.05);
+        chart(root, axes, series, x, y.clone(), y)
     }
 }
 
-/// Draws the chart itself; generic over the linear or logarithmic y axis.
-fn chart<DB, Y>(root: &DrawingArea<DB, Shift>, axes: &Axes, series: &[Series], x: Range<f64>, y: Y) -> Result<(), PlotError>
+/// Draws the chart itself over `x` by `y_range`; generic over the linear or
+/// logarithmic y axis `y`. Points outside the ranges (only possible beyond
+/// the limits above) are skipped: plotters' rasterizer overflows on them.
+fn chart<DB, Y>(
+    root: &DrawingArea<DB, Shift>,
+    axes: &Axes,
+    series: &[Series],
+    x: Range<f64>,
+    y_range: Range<f64>,
+    y: Y,
+) -> Result<(), PlotError>
 where
     DB: DrawingBackend,
     DB::ErrorType: 'static,
     Y: AsRangedCoord<Value = f64>,
     Y::CoordDescType: ValueFormatter<f64>,
 {
+    let shown = |p: &(f64, f64)| {
+        let inside =
+            (x.start..=x.end).contains(&p.0) && (y_range.start..=y_range.end).contains(&p.1);
+        inside && drawable(p, axes.log_y)
+    };
     let mut chart = ChartBuilder::on(root)
         .caption(axes.title, (FONT, 28))
         .margin(20)
         .x_label_area_size(60)
         .y_label_area_size(90)
-        .build_cartesian_2d(x, y)
+        .build_cartesian_2d(x.clone(), y)
         .map_err(drawing)?;
     chart
         .configure_mesh()
@@ -187,49 +223,47 @@ where
         .y_desc(axes.y_label)
         .axis_desc_style((FONT, 20))
         .label_style((FONT, 16))
-        .x_label_formatter(&|v| tick(*v))
-        .y_label_formatter(&|v| tick(*v))
+        .x_label_formatter(&|v| tick(*v, Some(&x)))
+        .y_label_formatter(&|v| tick(*v, (!axes.log_y).then_some(&y_range)))
         .light_line_style(RGBColor(235, 235, 235))
         .draw()
         .map_err(drawing)?;
 
     for (i, s) in series.iter().enumerate() {
-        let color = PALETTE[i % PALETTE.len()];
+        let c = PALETTE[i % PALETTE.len()];
+        let color = RGBColor((c >> 16) as u8, (c >> 8) as u8, c as u8);
         let style = color.stroke_width(2);
-        // Runs of drawable points; a skipped point breaks the line.
-        let runs = s.points.split(|p| !drawable(p, axes.log_y)).filter(|r| !r.is_empty());
-        let anno = match s.style {
-            LineStyle::Markers => {
-                let dots = s.points.iter().filter(|p| drawable(p, axes.log_y));
-                chart.draw_series(dots.map(|&p| Circle::new(p, 4, color.filled())))
-            }
-            LineStyle::Line => {
-                let mut anno = chart.draw_series(LineSeries::new(std::iter::empty(), style));
-                for run in runs {
-                    anno = chart.draw_series(LineSeries::new(run.iter().copied(), style));
-                }
-                anno
-            }
-            LineStyle::Dashed => {
-                let mut anno = chart.draw_series(LineSeries::new(std::iter::empty(), style));
-                for run in runs {
-                    anno = chart.draw_series(DashedLineSeries::new(run.iter().copied(), 12, 7, style));
-                }
-                anno
-            }
-        }
-        .map_err(drawing)?;
         if series.len() > 1 {
-            anno.label(s.label);
+            // An empty series carries the legend entry, drawn once however
+            // many pieces the data is drawn in below.
+            let anno = chart.draw_series(LineSeries::new(std::iter::empty(), style));
+            let anno = anno.map_err(drawing)?.label(s.label);
             match s.style {
-                LineStyle::Markers => anno.legend(move |(x, y)| Circle::new((x + 10, y), 4, color.filled())),
-                LineStyle::Line => anno.legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style)),
+                LineStyle::Markers => {
+                    anno.legend(move |(x, y)| Circle::new((x + 10, y), 4, color.filled()))
+                }
+                LineStyle::Line => {
+                    anno.legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style))
+                }
                 LineStyle::Dashed => anno.legend(move |(x, y)| {
                     EmptyElement::at((x, y))
                         + PathElement::new(vec![(0, 0), (8, 0)], style)
                         + PathElement::new(vec![(12, 0), (20, 0)], style)
                 }),
             };
+        }
+        // Runs of shown points; a skipped point breaks the line.
+        let runs = s.points.split(|p| !shown(p)).filter(|r| !r.is_empty());
+        for run in runs {
+            let pts = run.iter().copied();
+            match s.style {
+                LineStyle::Markers => {
+                    chart.draw_series(pts.map(|p| Circle::new(p, 4, color.filled())))
+                }
+                LineStyle::Line => chart.draw_series(LineSeries::new(pts, style)),
+                LineStyle::Dashed => chart.draw_series(DashedLineSeries::new(pts, 12, 7, style)),
+            }
+            .map_err(drawing)?;
         }
     }
     if series.len() > 1 {
@@ -254,23 +288,21 @@ fn min_max(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
 }
 
 /// A range around (lo, hi) widened by `frac` of its span on each side; a
-/// single value gets +-10 % (or +-1 at zero), no data gets 0..1.
+/// single value gets +-10 % (or +-1 at zero), no data gets 0..1. The callers
+/// keep the bounds within +-1e300, so the result is finite.
 fn padded(bounds: Option<(f64, f64)>, frac: f64) -> Range<f64> {
-    let Some((lo, hi)) = bounds else { return 0.0..1.0 };
-    let span = hi - lo;
-    let pad = if !span.is_finite() {
-        0.0
-    } else if span > 0.0 {
-        span * frac
+    let Some((lo, hi)) = bounds else {
+        return 0.0..1.0;
+    };
+    let pad = if hi > lo {
+        (hi - lo) * frac
     } else if lo != 0.0 {
         lo.abs() * 0.1
     } else {
         1.0
     };
+    // A pad lost to rounding (subnormal values) must not leave a zero span.
     let (a, b) = (lo - pad, hi + pad);
-    // Padding must not push extreme values to infinity.
-    let a = if a.is_finite() { a } else { lo };
-    let b = if b.is_finite() { b } else { hi };
     if a < b {
         a..b
     } else {
@@ -279,16 +311,41 @@ fn padded(bounds: Option<(f64, f64)>, frac: f64) -> Range<f64> {
 }
 
 /// Short tick text: plain decimals for everyday magnitudes, scientific
-/// notation for very large or small ones.
-fn tick(v: f64) -> String {
-    let a = v.abs();
-    if a == 0.0 {
-        "0".into()
-    } else if !(1e-3..1e5).contains(&a) {
-        format!("{v:.2e}")
+/// notation for very large or small ones. On a linear `axis` the digits
+/// follow the axis span, and values within rounding noise of zero read "0";
+/// on a log axis (`None`) each value is formatted on its own.
+fn tick(v: f64, axis: Option<&Range<f64>>) -> String {
+    let (span, scale) = match axis {
+        Some(r) => (r.end - r.start, r.start.abs().max(r.end.abs())),
+        None => (v.abs(), v.abs()),
+    };
+    if v == 0.0 || v.abs() <= span * 1e-9 {
+        return "0".into();
+    }
+    // Digits needed to tell ticks about span/10 apart.
+    let digits = |magnitude: f64| {
+        (magnitude.log10().floor() - span.log10().floor() + 2.0).clamp(0.0, 12.0) as usize
+    };
+    if (1e-3..1e5).contains(&scale) {
+        trim(&format!("{v:.*}", digits(1.0)))
     } else {
-        let s = format!("{v:.4}");
+        let precision = if axis.is_some() {
+            digits(scale).saturating_sub(1).min(4)
+        } else {
+            3
+        };
+        let s = format!("{v:.*e}", precision);
+        let (mantissa, exp) = s.split_once('e').unwrap_or((&s, "0"));
+        format!("{}e{exp}", trim(mantissa))
+    }
+}
+
+/// Drops trailing zeros after a decimal point, and the point if bare.
+fn trim(s: &str) -> String {
+    if s.contains('.') {
         s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s.to_string()
     }
 }
 
@@ -296,6 +353,7 @@ fn tick(v: f64) -> String {
 mod tests {
     use super::*;
     use crate::io::test_dir;
+    use LineStyle::{Dashed, Line, Markers};
 
     const AXES: Axes = Axes {
         title: "Wave gauge 3",
@@ -303,15 +361,23 @@ mod tests {
         y_label: "surface elevation [m]",
         log_y: false,
     };
+    const LOG: Axes = Axes {
+        log_y: true,
+        title: "Residual",
+        ..AXES
+    };
 
-    fn data() -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
-        let sim = (0..200).map(|i| (i as f64 * 0.05, (i as f64 * 0.05).sin())).collect();
-        let meas = (0..20).map(|i| (i as f64 * 0.5, (i as f64 * 0.5).sin() + 0.05)).collect();
-        (sim, meas)
+    fn wave(n: usize, dt: f64, shift: f64) -> Vec<(f64, f64)> {
+        (0..n)
+            .map(|i| i as f64 * dt)
+            .map(|t| (t, t.sin() + shift))
+            .collect()
     }
 
-    fn png_ok(path: &Path) {
-        let bytes = std::fs::read(path).unwrap();
+    /// Plots to `name` in `dir` and checks a 1000x700 PNG came out.
+    fn png(dir: &Path, name: &str, axes: &Axes, series: &[Series]) {
+        line_plot(&dir.join(name), axes, series).unwrap();
+        let bytes = std::fs::read(dir.join(name)).unwrap();
         assert!(bytes.len() > 1000, "{} bytes", bytes.len());
         assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
         // Width and height from the IHDR chunk.
@@ -321,27 +387,31 @@ mod tests {
     #[test]
     fn png_with_three_styles_and_bad_points() {
         let dir = test_dir("plot_png");
-        let (sim, meas) = data();
-        let mut reference: Vec<(f64, f64)> = sim.iter().map(|&(t, _)| (t, 0.8 * (t - 0.3).sin())).collect();
+        let (sim, meas) = (wave(200, 0.05, 0.0), wave(20, 0.5, 0.05));
+        let mut reference: Vec<_> = sim
+            .iter()
+            .map(|&(t, _)| (t, 0.8 * (t - 0.3).sin()))
+            .collect();
         reference[50] = (f64::NAN, 0.0);
         reference[120].1 = f64::INFINITY;
         let series = [
-            Series { label: "simulation", points: &sim, style: LineStyle::Line },
-            Series { label: "flume", points: &meas, style: LineStyle::Markers },
-            Series { label: "linear theory", points: &reference, style: LineStyle::Dashed },
+            Series::new("simulation", &sim, Line),
+            Series::new("flume", &meas, Markers),
+            Series::new("linear theory", &reference, Dashed),
         ];
-        line_plot(&dir.join("gauge.png"), &AXES, &series).unwrap();
-        png_ok(&dir.join("gauge.png"));
-        assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1, "temporary file left behind");
+        png(&dir, "gauge.png", &AXES, &series);
+        let files = std::fs::read_dir(&dir).unwrap().count();
+        assert_eq!(files, 1, "temporary file left behind");
     }
 
     #[test]
     fn svg_contains_title_and_legend() {
-        let path = test_dir("plot_svg").join("gauge.SVG");
-        let (sim, meas) = data();
+        let dir = test_dir("plot_svg");
+        let path = dir.join("gauge.SVG");
+        let (sim, meas) = (wave(200, 0.05, 0.0), wave(20, 0.5, 0.05));
         let series = [
-            Series { label: "simulation", points: &sim, style: LineStyle::Line },
-            Series { label: "flume & co", points: &meas, style: LineStyle::Markers },
+            Series::new("simulation", &sim, Line),
+            Series::new("flume & co", &meas, Markers),
         ];
         line_plot(&path, &AXES, &series).unwrap();
         let svg = std::fs::read_to_string(&path).unwrap();
@@ -353,38 +423,56 @@ mod tests {
     #[test]
     fn log_axis_empty_and_degenerate_data_still_plot() {
         let dir = test_dir("plot_edge");
-        let decay: Vec<(f64, f64)> = (0..50).map(|i| (i as f64, 10f64.powi(-(i / 5)))).chain([(51.0, 0.0), (52.0, -1.0)]).collect();
-        let log = Axes { log_y: true, title: "Residual", ..AXES };
-        line_plot(&dir.join("log.png"), &log, &[Series { label: "r", points: &decay, style: LineStyle::Line }]).unwrap();
-        png_ok(&dir.join("log.png"));
-        line_plot(&dir.join("empty.png"), &AXES, &[]).unwrap();
-        png_ok(&dir.join("empty.png"));
-        line_plot(&dir.join("empty_log.svg"), &log, &[Series { label: "none", points: &[(1.0, -1.0)], style: LineStyle::Dashed }]).unwrap();
-        let one = [(2.0, 3.0)];
-        let huge = [(-f64::MAX, f64::MAX), (f64::MAX, -f64::MAX)];
+        let decay: Vec<_> = (0..50).map(|i| (i as f64, 10f64.powi(-(i / 5)))).collect();
+        let decay = [decay, vec![(51.0, 0.0), (52.0, -1.0)]].concat();
+        png(&dir, "log.png", &LOG, &[Series::new("r", &decay, Line)]);
+        png(&dir, "empty.png", &AXES, &[]);
+        png(
+            &dir,
+            "empty_log.png",
+            &LOG,
+            &[Series::new("none", &[(1.0, -1.0)], Dashed)],
+        );
+        let nan = [(f64::NAN, f64::NAN)];
         let series = [
-            Series { label: "one", points: &one, style: LineStyle::Markers },
-            Series { label: "all NaN", points: &[(f64::NAN, f64::NAN)], style: LineStyle::Line },
+            Series::new("one", &[(2.0, 3.0)], Markers),
+            Series::new("NaN", &nan, Line),
         ];
-        line_plot(&dir.join("one.png"), &AXES, &series).unwrap();
-        line_plot(&dir.join("huge.png"), &AXES, &[Series { label: "h", points: &huge, style: LineStyle::Line }]).unwrap();
-        png_ok(&dir.join("huge.png"));
+        png(&dir, "one.png", &AXES, &series);
+        // Spans near f64::MAX used to hang plotters' tick search.
+        let huge = [(-f64::MAX, f64::MAX), (f64::MAX, -f64::MAX)];
+        png(&dir, "huge.png", &AXES, &[Series::new("h", &huge, Line)]);
+        let wide = [(0.0, 5e-324), (1.0, 1e-300), (2.0, f64::MAX)];
+        png(&dir, "wide.png", &LOG, &[Series::new("w", &wide, Line)]);
+        png(
+            &dir,
+            "subnormal.png",
+            &AXES,
+            &[Series::new("s", &[(5e-324, 5e-324)], Line)],
+        );
     }
 
     #[test]
     fn unsupported_extension_is_an_error() {
-        let path = test_dir("plot_ext").join("a.pdf");
-        assert!(matches!(line_plot(&path, &AXES, &[]), Err(PlotError::UnsupportedFormat(_))));
-        assert!(!path.exists());
+        let dir = test_dir("plot_ext");
+        let result = line_plot(&dir.join("a.pdf"), &AXES, &[]);
+        assert!(matches!(result, Err(PlotError::UnsupportedFormat(_))));
+        assert!(!dir.join("a.pdf").exists());
     }
 
     #[test]
     fn tick_labels_are_short() {
-        assert_eq!(tick(0.0), "0");
-        assert_eq!(tick(2.5), "2.5");
-        assert_eq!(tick(-0.125), "-0.125");
-        assert_eq!(tick(100.0), "100");
-        assert_eq!(tick(1.5e-6), "1.50e-6");
-        assert_eq!(tick(2e9), "2.00e9");
+        let unit = -1.1..1.1;
+        assert_eq!(tick(0.0, Some(&unit)), "0");
+        assert_eq!(tick(-2.220446049250313e-16, Some(&unit)), "0");
+        assert_eq!(tick(0.2, Some(&unit)), "0.2");
+        assert_eq!(tick(-0.25, Some(&unit)), "-0.25");
+        assert_eq!(tick(100.0, Some(&(0.0..1000.0))), "100");
+        assert_eq!(tick(100.0025, Some(&(100.0..100.01))), "100.0025");
+        assert_eq!(tick(2.5e-6, Some(&(0.0..1e-5))), "2.5e-6");
+        assert_eq!(tick(4e5, Some(&(0.0..1e6))), "4e5");
+        assert_eq!(tick(1.25e-5, None), "1.25e-5");
+        assert_eq!(tick(1.0000000000000002e-5, None), "1e-5");
+        assert_eq!(tick(10.0, None), "10");
     }
 }

@@ -23,7 +23,7 @@ impl PvdSeries {
         }
     }
 
-    /// Adds a frame: simulated `time` [s], `file` relative to the .pvd's
+    /// Adds a frame: simulated `time` \[s\], `file` relative to the .pvd's
     /// directory (e.g. `"particles_000120.vtu"`), and `part`, the piece index
     /// for several datasets at the same time (particles 0, walls 1, ...).
     /// Then rewrites the .pvd atomically.
@@ -31,7 +31,9 @@ impl PvdSeries {
     /// Errors with `InvalidInput` if `time` is not finite.
     pub fn add(&mut self, time: f64, file: &str, part: usize) -> std::io::Result<()> {
         if !time.is_finite() {
-            return Err(invalid_input(format!("pvd time {time} for '{file}' is not finite")));
+            return Err(invalid_input(format!(
+                "pvd time {time} for '{file}' is not finite"
+            )));
         }
         self.entries.push((time, file.to_string(), part));
         if let Err(e) = self.write() {
@@ -42,7 +44,7 @@ impl PvdSeries {
         Ok(())
     }
 
-    /// The frames so far: (time [s], file, part), in the order added.
+    /// The frames so far: (time \[s\], file, part), in the order added.
     pub fn entries(&self) -> &[(f64, String, usize)] {
         &self.entries
     }
@@ -53,7 +55,7 @@ impl PvdSeries {
     }
 
     /// For restart: reads an existing .pvd and keeps its entries with
-    /// time <= `t_max` [s] (the checkpoint's time), rewriting the file so
+    /// time <= `t_max` \[s\] (the checkpoint's time), rewriting the file so
     /// that it no longer lists the frames the restarted run will redo. A
     /// missing file gives an empty series, as for a fresh run.
     pub fn resume(path: impl Into<PathBuf>, t_max: f64) -> std::io::Result<Self> {
@@ -63,7 +65,8 @@ impl PvdSeries {
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Self::new(path)),
             Err(e) => return Err(e),
         };
-        let mut entries = parse(&text).map_err(|m| invalid_data(format!("{}: {m}", path.display())))?;
+        let mut entries =
+            parse(&text).map_err(|m| invalid_data(format!("{}: {m}", path.display())))?;
         entries.retain(|e| e.0 <= t_max);
         let series = PvdSeries { path, entries };
         series.write()?;
@@ -95,16 +98,28 @@ fn parse(text: &str) -> Result<Vec<(f64, String, usize)>, String> {
     }
     let mut out = Vec::new();
     for chunk in text.split('<').skip(1) {
-        let Some(body) = chunk.strip_prefix("DataSet") else { continue };
+        let Some(body) = chunk.strip_prefix("DataSet") else {
+            continue;
+        };
         let body = &body[..body.find('>').ok_or("unterminated DataSet element")?];
         let (mut time, mut file, mut part) = (None, None, 0);
         for (key, value) in attributes(body)? {
             match key {
                 "timestep" => {
-                    time = Some(value.trim().parse::<f64>().map_err(|_| format!("bad timestep '{value}'"))?)
+                    time = Some(
+                        value
+                            .trim()
+                            .parse::<f64>()
+                            .map_err(|_| format!("bad timestep '{value}'"))?,
+                    )
                 }
                 "file" => file = Some(unescape(value)),
-                "part" => part = value.trim().parse().map_err(|_| format!("bad part '{value}'"))?,
+                "part" => {
+                    part = value
+                        .trim()
+                        .parse()
+                        .map_err(|_| format!("bad part '{value}'"))?
+                }
                 _ => {}
             }
         }
@@ -124,7 +139,9 @@ fn attributes(mut s: &str) -> Result<Vec<(&str, &str)>, String> {
         let rest = s[eq + 1..].trim_start();
         let quote = rest.chars().next().filter(|c| *c == '"' || *c == '\'');
         let quote = quote.ok_or_else(|| format!("unquoted attribute '{key}'"))?;
-        let end = rest[1..].find(quote).ok_or_else(|| format!("unterminated attribute '{key}'"))?;
+        let end = rest[1..]
+            .find(quote)
+            .ok_or_else(|| format!("unterminated attribute '{key}'"))?;
         out.push((key, &rest[1..1 + end]));
         s = &rest[end + 2..];
     }
@@ -147,11 +164,18 @@ mod tests {
 
     #[test]
     fn add_writes_valid_series_each_time() {
-        let path = test_dir("pvd_add").join("run.pvd");
+        let dir = test_dir("pvd_add");
+        let path = dir.join("run.pvd");
         let mut s = PvdSeries::new(&path);
         assert!(!path.exists());
         s.add(0.0, "particles_0.vtu", 0).unwrap();
-        assert_eq!(PvdSeries::resume(&path, f64::INFINITY).unwrap().entries().len(), 1);
+        assert_eq!(
+            PvdSeries::resume(&path, f64::INFINITY)
+                .unwrap()
+                .entries()
+                .len(),
+            1
+        );
         s.add(0.1, "walls_0.vtp", 1).unwrap();
         s.add(0.30000000000000004, "a&b \"q\".vtu", 0).unwrap();
         let text = std::fs::read_to_string(&path).unwrap();
@@ -159,14 +183,18 @@ mod tests {
         assert!(text.contains(r#"file="a&amp;b &quot;q&quot;.vtu""#));
         let back = PvdSeries::resume(&path, 1.0).unwrap();
         assert_eq!(back.entries(), s.entries());
-        assert_eq!(back.entries()[2].0.to_bits(), 0.30000000000000004f64.to_bits());
+        assert_eq!(
+            back.entries()[2].0.to_bits(),
+            0.30000000000000004f64.to_bits()
+        );
         assert!(s.add(f64::NAN, "x.vtu", 0).is_err());
         assert_eq!(s.entries().len(), 3);
     }
 
     #[test]
     fn resume_keeps_entries_up_to_t_max_and_rewrites() {
-        let path = test_dir("pvd_resume").join("run.pvd");
+        let dir = test_dir("pvd_resume");
+        let path = dir.join("run.pvd");
         let mut s = PvdSeries::new(&path);
         for (i, t) in [0.0, 0.5, 1.0, 1.5, 2.0].into_iter().enumerate() {
             s.add(t, &format!("f_{i}.vtu"), 0).unwrap();
@@ -179,7 +207,10 @@ mod tests {
         assert_eq!(PvdSeries::resume(&path, 9.0).unwrap().entries().len(), 3);
         r.add(1.25, "g.vtu", 0).unwrap();
         let again = PvdSeries::resume(&path, 9.0).unwrap();
-        assert_eq!(again.entries().last().unwrap(), &(1.25, "g.vtu".to_string(), 0));
+        assert_eq!(
+            again.entries().last().unwrap(),
+            &(1.25, "g.vtu".to_string(), 0)
+        );
     }
 
     #[test]

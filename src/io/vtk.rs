@@ -17,7 +17,7 @@ use std::path::Path;
 pub enum Values<'a> {
     /// One f64 per item (written as Float64, one component).
     Scalars(&'a [f64]),
-    /// One 3-vector per item (Float64, three components), e.g. velocity [m/s].
+    /// One 3-vector per item (Float64, three components), e.g. velocity \[m/s\].
     Vectors(&'a [DVec3]),
     /// One integer per item (Int64), e.g. particle ids or material indices.
     Ints(&'a [i64]),
@@ -49,11 +49,37 @@ pub struct Array<'a> {
     pub values: Values<'a>,
 }
 
+impl<'a> Array<'a> {
+    /// A scalar array (Float64).
+    pub fn scalars(name: &'a str, values: &'a [f64]) -> Self {
+        Array {
+            name,
+            values: Values::Scalars(values),
+        }
+    }
+
+    /// A 3-vector array (Float64, three components).
+    pub fn vectors(name: &'a str, values: &'a [DVec3]) -> Self {
+        Array {
+            name,
+            values: Values::Vectors(values),
+        }
+    }
+
+    /// An integer array (Int64).
+    pub fn ints(name: &'a str, values: &'a [i64]) -> Self {
+        Array {
+            name,
+            values: Values::Ints(values),
+        }
+    }
+}
+
 /// VTK cell type id of a single-point cell.
 const VTK_VERTEX: u8 = 1;
 
 /// Writes particles as an UnstructuredGrid (.vtu): one point per particle at
-/// `positions` [m], one VTK_VERTEX cell each, and `point_data` arrays with one
+/// `positions` \[m\], one VTK_VERTEX cell each, and `point_data` arrays with one
 /// value per particle. Spheres: ParaView's Point Gaussian or Glyph filter,
 /// scaled by a radius array, shows them.
 ///
@@ -63,7 +89,10 @@ pub fn write_points(path: &Path, positions: &[DVec3], point_data: &[Array]) -> s
     let n = positions.len();
     check_lengths(point_data, n, "points")?;
     let mut f = VtkFile::new("UnstructuredGrid", "");
-    let _ = writeln!(f.xml, r#"    <Piece NumberOfPoints="{n}" NumberOfCells="{n}">"#);
+    let _ = writeln!(
+        f.xml,
+        r#"    <Piece NumberOfPoints="{n}" NumberOfCells="{n}">"#
+    );
     f.attributes("PointData", point_data);
     f.xml.push_str("      <CellData>\n      </CellData>\n");
     f.points(positions);
@@ -76,7 +105,7 @@ pub fn write_points(path: &Path, positions: &[DVec3], point_data: &[Array]) -> s
     f.finish(path)
 }
 
-/// Writes a triangulated surface as PolyData (.vtp): `vertices` [m],
+/// Writes a triangulated surface as PolyData (.vtp): `vertices` \[m\],
 /// `triangles` as indices into `vertices`, and `cell_data` arrays with one
 /// value per triangle (e.g. wall force or wear).
 ///
@@ -118,7 +147,7 @@ pub fn write_surface(
 }
 
 /// Writes a uniform grid as ImageData (.vti) with `n = [nx, ny, nz]` cells,
-/// the grid's lowest corner at `origin` [m] and cell size `spacing` [m].
+/// the grid's lowest corner at `origin` \[m\] and cell size `spacing` \[m\].
 /// `cell_data` arrays hold one value per cell, x fastest, then y, then z
 /// (index `i + nx * (j + ny * k)`).
 ///
@@ -214,7 +243,13 @@ impl VtkFile {
         self.data.reserve(bytes as usize);
     }
 
-    fn array_f64(&mut self, name: Option<&str>, comps: usize, tuples: usize, v: impl Iterator<Item = f64>) {
+    fn array_f64(
+        &mut self,
+        name: Option<&str>,
+        comps: usize,
+        tuples: usize,
+        v: impl Iterator<Item = f64>,
+    ) {
         self.begin_array("Float64", name, comps, tuples);
         v.for_each(|x| self.data.extend_from_slice(&x.to_le_bytes()));
     }
@@ -234,7 +269,8 @@ impl VtkFile {
                 Values::Vectors(v) => self.array_f64(name, 3, v.len(), flatten(v)),
                 Values::Ints(v) => {
                     self.begin_array("Int64", name, 1, v.len());
-                    v.iter().for_each(|x| self.data.extend_from_slice(&x.to_le_bytes()));
+                    v.iter()
+                        .for_each(|x| self.data.extend_from_slice(&x.to_le_bytes()));
                 }
             }
         }
@@ -272,171 +308,172 @@ mod tests {
     use super::*;
     use crate::io::test_dir;
     use std::collections::HashMap;
+    use std::io::ErrorKind::InvalidInput;
 
-    /// One parsed DataArray: its attributes and its raw payload bytes.
+    /// A file read back: its XML header, and each DataArray's attributes
+    /// with the payload bytes its offset points to.
     struct Parsed {
-        attrs: HashMap<String, String>,
-        payload: Vec<u8>,
+        header: String,
+        arrays: Vec<(HashMap<String, String>, Vec<u8>)>,
     }
 
-    /// Reads a file written above back: checks the XML header's tags nest,
-    /// then follows each DataArray's offset into the appended block.
-    fn parse(path: &Path) -> (String, Vec<Parsed>) {
-        let bytes = std::fs::read(path).unwrap();
-        let marker = b"<AppendedData encoding=\"raw\">";
-        let pos = bytes.windows(marker.len()).position(|w| w == marker).unwrap();
-        let underscore = pos + bytes[pos..].iter().position(|&b| b == b'_').unwrap();
-        let data = &bytes[underscore + 1..];
-        let header = std::str::from_utf8(&bytes[..pos]).unwrap().to_string();
-        assert!(bytes.ends_with(b"\n  </AppendedData>\n</VTKFile>\n"));
-        check_nesting(&header);
-        let mut arrays = Vec::new();
-        for tag in header.split('<').filter(|t| t.starts_with("DataArray ")) {
-            let attrs = attributes(tag);
-            let off: usize = attrs["offset"].parse().unwrap();
-            let len = u64::from_le_bytes(data[off..off + 8].try_into().unwrap()) as usize;
-            let payload = data[off + 8..off + 8 + len].to_vec();
-            arrays.push(Parsed { attrs, payload });
+    impl Parsed {
+        fn read(path: &Path) -> Self {
+            let bytes = std::fs::read(path).unwrap();
+            let marker = b"<AppendedData encoding=\"raw\">\n   _";
+            let pos = bytes.windows(marker.len()).position(|w| w == marker);
+            let pos = pos.unwrap();
+            let data = &bytes[pos + marker.len()..];
+            let header = String::from_utf8(bytes[..pos].to_vec()).unwrap();
+            assert!(bytes.ends_with(b"\n  </AppendedData>\n</VTKFile>\n"));
+            check_nesting(&header);
+            let mut arrays = Vec::new();
+            for tag in header.split("<DataArray ").skip(1) {
+                let mut attrs = HashMap::new();
+                for kv in tag[..tag.find("/>").unwrap()].split("\" ") {
+                    let (k, v) = kv.split_once("=\"").unwrap();
+                    attrs.insert(k.to_string(), v.trim_end_matches('"').to_string());
+                }
+                let off: usize = attrs["offset"].parse().unwrap();
+                let len = u64::from_le_bytes(data[off..off + 8].try_into().unwrap());
+                arrays.push((attrs, data[off + 8..off + 8 + len as usize].to_vec()));
+            }
+            Parsed { header, arrays }
         }
-        (header, arrays)
-    }
 
-    fn attributes(tag: &str) -> HashMap<String, String> {
-        let mut out = HashMap::new();
-        let mut rest = tag;
-        while let Some(eq) = rest.find("=\"") {
-            let key = rest[..eq].rsplit(' ').next().unwrap().to_string();
-            let end = rest[eq + 2..].find('"').unwrap();
-            out.insert(key, rest[eq + 2..eq + 2 + end].to_string());
-            rest = &rest[eq + 2 + end + 1..];
+        /// The array called `name`, checked to be of VTK type `ty`.
+        fn bytes(&self, name: &str, ty: &str) -> &[u8] {
+            let (attrs, payload) = self.arrays.iter().find(|a| a.0["Name"] == name).unwrap();
+            assert_eq!(attrs["type"], ty, "{name}");
+            payload
         }
-        out
+
+        fn f64s(&self, name: &str) -> Vec<f64> {
+            let words = self.bytes(name, "Float64").chunks_exact(8);
+            words
+                .map(|c| f64::from_le_bytes(c.try_into().unwrap()))
+                .collect()
+        }
+
+        fn i64s(&self, name: &str) -> Vec<i64> {
+            let words = self.bytes(name, "Int64").chunks_exact(8);
+            words
+                .map(|c| i64::from_le_bytes(c.try_into().unwrap()))
+                .collect()
+        }
     }
 
     /// Every opened element is closed in order (self-closing ones excepted);
-    /// the AppendedData and VTKFile elements are still open at the marker.
+    /// only VTKFile is still open where AppendedData begins.
     fn check_nesting(header: &str) {
-        let mut stack: Vec<String> = Vec::new();
+        let mut stack = Vec::new();
         for tag in header.split('<').skip(1) {
             let tag = &tag[..tag.find('>').unwrap()];
-            let name: String = tag.chars().take_while(|c| !c.is_whitespace() && *c != '/').collect();
-            if tag.starts_with('?') || tag.ends_with('/') {
-                continue;
-            } else if let Some(closed) = tag.strip_prefix('/') {
-                assert_eq!(stack.pop().as_deref(), Some(closed), "in {header}");
-            } else {
-                stack.push(name);
+            if let Some(closed) = tag.strip_prefix('/') {
+                assert_eq!(stack.pop(), Some(closed), "in {header}");
+            } else if !tag.starts_with('?') && !tag.ends_with('/') {
+                stack.push(tag.split(' ').next().unwrap());
             }
         }
         assert_eq!(stack, ["VTKFile"], "in {header}");
     }
 
-    fn find<'a>(arrays: &'a [Parsed], name: &str) -> &'a Parsed {
-        arrays.iter().find(|a| a.attrs.get("Name").map(String::as_str) == Some(name)).unwrap()
-    }
-
-    fn f64s(p: &Parsed) -> Vec<f64> {
-        assert_eq!(p.attrs["type"], "Float64");
-        p.payload.chunks_exact(8).map(|c| f64::from_le_bytes(c.try_into().unwrap())).collect()
-    }
-
-    fn i64s(p: &Parsed) -> Vec<i64> {
-        assert_eq!(p.attrs["type"], "Int64");
-        p.payload.chunks_exact(8).map(|c| i64::from_le_bytes(c.try_into().unwrap())).collect()
+    fn flat(v: &[DVec3]) -> Vec<f64> {
+        flatten(v).collect()
     }
 
     #[test]
     fn points_round_trip() {
-        let path = test_dir("vtk_points").join("p.vtu");
-        let pos = [DVec3::new(0.1, -2.0, 3.5e-7), DVec3::new(1.0 / 3.0, 5.0, -0.0)];
-        let radius = [0.01, 0.0125];
-        let vel = [DVec3::X, DVec3::new(-1.0, 2.0, f64::MAX)];
-        let ids = [7, -3];
-        let arrays = [
-            Array { name: "radius", values: Values::Scalars(&radius) },
-            Array { name: "velocity <m/s>", values: Values::Vectors(&vel) },
-            Array { name: "id", values: Values::Ints(&ids) },
+        let dir = test_dir("vtk_points");
+        let pos = [
+            DVec3::new(0.1, -2.0, 3.5e-7),
+            DVec3::new(1.0 / 3.0, 5.0, -0.0),
         ];
-        write_points(&path, &pos, &arrays).unwrap();
-        let (header, a) = parse(&path);
-        assert!(header.contains(r#"type="UnstructuredGrid""#));
-        assert!(header.contains(r#"NumberOfPoints="2" NumberOfCells="2""#));
-        assert!(header.contains(r#"Name="velocity &lt;m/s&gt;""#));
-        assert_eq!(f64s(find(&a, "Points")), [0.1, -2.0, 3.5e-7, 1.0 / 3.0, 5.0, -0.0]);
-        assert_eq!(f64s(find(&a, "radius")), radius);
-        assert_eq!(find(&a, "velocity &lt;m/s&gt;").attrs["NumberOfComponents"], "3");
-        assert_eq!(f64s(find(&a, "velocity &lt;m/s&gt;")), [1.0, 0.0, 0.0, -1.0, 2.0, f64::MAX]);
-        assert_eq!(i64s(find(&a, "id")), ids);
-        assert_eq!(i64s(find(&a, "connectivity")), [0, 1]);
-        assert_eq!(i64s(find(&a, "offsets")), [1, 2]);
-        assert_eq!(find(&a, "types").payload, [VTK_VERTEX, VTK_VERTEX]);
+        let vel = [DVec3::X, DVec3::new(-1.0, 2.0, f64::MAX)];
+        let arrays = [
+            Array::scalars("radius", &[0.01, 0.0125]),
+            Array::vectors("velocity <m/s>", &vel),
+            Array::ints("id", &[7, -3]),
+        ];
+        write_points(&dir.join("p.vtu"), &pos, &arrays).unwrap();
+        let f = Parsed::read(&dir.join("p.vtu"));
+        assert!(f.header.contains(r#"type="UnstructuredGrid""#));
+        assert!(f.header.contains(r#"NumberOfPoints="2" NumberOfCells="2""#));
+        assert_eq!(f.f64s("Points"), [0.1, -2.0, 3.5e-7, 1.0 / 3.0, 5.0, -0.0]);
+        assert_eq!(f.f64s("radius"), [0.01, 0.0125]);
+        let vel_name = "velocity &lt;m/s&gt;";
+        assert_eq!(f.f64s(vel_name), flat(&vel));
+        let vel_attrs = &f.arrays.iter().find(|a| a.0["Name"] == vel_name).unwrap().0;
+        assert_eq!(vel_attrs["NumberOfComponents"], "3");
+        assert_eq!(f.i64s("id"), [7, -3]);
+        assert_eq!(f.i64s("connectivity"), [0, 1]);
+        assert_eq!(f.i64s("offsets"), [1, 2]);
+        assert_eq!(f.bytes("types", "UInt8"), [VTK_VERTEX; 2]);
     }
 
     #[test]
     fn empty_points_still_valid() {
-        let path = test_dir("vtk_empty").join("p.vtu");
-        let arrays = [Array { name: "radius", values: Values::Scalars(&[]) }];
-        write_points(&path, &[], &arrays).unwrap();
-        let (header, a) = parse(&path);
-        assert!(header.contains(r#"NumberOfPoints="0""#));
-        assert_eq!(a.len(), 5);
-        assert!(a.iter().all(|p| p.payload.is_empty()));
+        let dir = test_dir("vtk_empty");
+        let arrays = [Array::scalars("radius", &[])];
+        write_points(&dir.join("p.vtu"), &[], &arrays).unwrap();
+        let f = Parsed::read(&dir.join("p.vtu"));
+        assert!(f.header.contains(r#"NumberOfPoints="0""#));
+        assert_eq!(f.arrays.len(), 5);
+        assert!(f.arrays.iter().all(|a| a.1.is_empty()));
     }
 
     #[test]
-    fn mismatched_lengths_are_invalid_input() {
+    fn bad_input_is_invalid_input_and_writes_nothing() {
         let dir = test_dir("vtk_bad");
-        let arrays = [Array { name: "radius", values: Values::Scalars(&[1.0]) }];
-        let err = write_points(&dir.join("p.vtu"), &[DVec3::ZERO; 2], &arrays).unwrap_err();
-        assert_eq!(err.kind(), std::io::ErrorKind::InvalidInput);
+        let one = [Array::scalars("radius", &[1.0])];
+        let err = write_points(&dir.join("p.vtu"), &[DVec3::ZERO; 2], &one).unwrap_err();
+        assert_eq!(err.kind(), InvalidInput);
         assert!(err.to_string().contains("radius"), "{err}");
-        let err = write_surface(&dir.join("s.vtp"), &[DVec3::ZERO; 3], &[[0, 1, 3]], &[]).unwrap_err();
-        assert_eq!(err.kind(), std::io::ErrorKind::InvalidInput);
-        let err = write_image(&dir.join("g.vti"), [2, 2, 2], DVec3::ZERO, DVec3::ONE, &arrays).unwrap_err();
+        let bad_tri = write_surface(&dir.join("s.vtp"), &[DVec3::ZERO; 3], &[[0, 1, 3]], &[]);
+        assert_eq!(bad_tri.unwrap_err().kind(), InvalidInput);
+        let (o, h) = (DVec3::ZERO, DVec3::ONE);
+        let err = write_image(&dir.join("g.vti"), [2, 2, 2], o, h, &one).unwrap_err();
         assert!(err.to_string().contains("radius"), "{err}");
-        let err = write_image(&dir.join("g.vti"), [usize::MAX, 2, 1], DVec3::ZERO, DVec3::ONE, &[]);
-        assert_eq!(err.unwrap_err().kind(), std::io::ErrorKind::InvalidInput);
+        let huge = write_image(&dir.join("g.vti"), [usize::MAX, 2, 1], o, h, &[]);
+        assert_eq!(huge.unwrap_err().kind(), InvalidInput);
+        let nan = write_image(&dir.join("g.vti"), [1, 1, 1], o, h * f64::NAN, &[]);
+        assert_eq!(nan.unwrap_err().kind(), InvalidInput);
         assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
     }
 
     #[test]
     fn surface_round_trip() {
-        let path = test_dir("vtk_surface").join("s.vtp");
+        let dir = test_dir("vtk_surface");
         let v = [DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::new(1.0, 1.0, 0.25)];
-        let tris = [[0, 1, 2], [1, 3, 2]];
         let force = [DVec3::new(0.0, 0.0, -9.81), DVec3::new(1e-300, 0.0, 2.5)];
-        let wear = [0.5, 1.5];
         let arrays = [
-            Array { name: "force", values: Values::Vectors(&force) },
-            Array { name: "wear", values: Values::Scalars(&wear) },
+            Array::vectors("force", &force),
+            Array::scalars("wear", &[0.5, 1.5]),
         ];
-        write_surface(&path, &v, &tris, &arrays).unwrap();
-        let (header, a) = parse(&path);
-        assert!(header.contains(r#"NumberOfPoints="4""#) && header.contains(r#"NumberOfPolys="2""#));
-        let pts: Vec<f64> = v.iter().flat_map(|p| p.to_array()).collect();
-        assert_eq!(f64s(find(&a, "Points")), pts);
-        assert_eq!(i64s(find(&a, "connectivity")), [0, 1, 2, 1, 3, 2]);
-        assert_eq!(i64s(find(&a, "offsets")), [3, 6]);
-        assert_eq!(f64s(find(&a, "force")), [0.0, 0.0, -9.81, 1e-300, 0.0, 2.5]);
-        assert_eq!(f64s(find(&a, "wear")), wear);
+        write_surface(&dir.join("s.vtp"), &v, &[[0, 1, 2], [1, 3, 2]], &arrays).unwrap();
+        let f = Parsed::read(&dir.join("s.vtp"));
+        assert!(f.header.contains(r#"NumberOfPoints="4""#));
+        assert!(f.header.contains(r#"NumberOfPolys="2""#));
+        assert_eq!(f.f64s("Points"), flat(&v));
+        assert_eq!(f.i64s("connectivity"), [0, 1, 2, 1, 3, 2]);
+        assert_eq!(f.i64s("offsets"), [3, 6]);
+        assert_eq!(f.f64s("force"), flat(&force));
+        assert_eq!(f.f64s("wear"), [0.5, 1.5]);
     }
 
     #[test]
     fn image_round_trip() {
-        let path = test_dir("vtk_image").join("g.vti");
-        let n = [3, 2, 1];
+        let dir = test_dir("vtk_image");
         let p: Vec<f64> = (0..6).map(|i| i as f64 * 0.1).collect();
         let u: Vec<DVec3> = (0..6).map(|i| DVec3::splat(i as f64)).collect();
-        let arrays = [
-            Array { name: "p", values: Values::Scalars(&p) },
-            Array { name: "u", values: Values::Vectors(&u) },
-        ];
-        write_image(&path, n, DVec3::new(-1.0, 0.0, 0.5), DVec3::new(0.1, 0.2, 0.3), &arrays).unwrap();
-        let (header, a) = parse(&path);
-        assert!(header.contains(r#"WholeExtent="0 3 0 2 0 1" Origin="-1 0 0.5" Spacing="0.1 0.2 0.3""#));
-        assert!(header.contains(r#"<Piece Extent="0 3 0 2 0 1">"#));
-        assert_eq!(f64s(find(&a, "p")), p);
-        let flat: Vec<f64> = u.iter().flat_map(|v| v.to_array()).collect();
-        assert_eq!(f64s(find(&a, "u")), flat);
+        let arrays = [Array::scalars("p", &p), Array::vectors("u", &u)];
+        let (origin, spacing) = (DVec3::new(-1.0, 0.0, 0.5), DVec3::new(0.1, 0.2, 0.3));
+        write_image(&dir.join("g.vti"), [3, 2, 1], origin, spacing, &arrays).unwrap();
+        let f = Parsed::read(&dir.join("g.vti"));
+        let grid = r#"WholeExtent="0 3 0 2 0 1" Origin="-1 0 0.5" Spacing="0.1 0.2 0.3""#;
+        assert!(f.header.contains(grid), "{}", f.header);
+        assert!(f.header.contains(r#"<Piece Extent="0 3 0 2 0 1">"#));
+        assert_eq!(f.f64s("p"), p);
+        assert_eq!(f.f64s("u"), flat(&u));
     }
 }

@@ -3,16 +3,23 @@
 
 use std::fmt::Write as _;
 
-use super::schema::{v3, ContactSection, DampingName, ModelName, SizeSection, SphereSet, WallSection};
+use super::schema::{
+    v3, ContactSection, DampingName, FeedSet, LatticeSet, ListSet, ModelName, RandomSet,
+    SizeSection, SphereSet, WallSection,
+};
 use super::{ScenarioError, Source};
 use crate::dem::contacts::PairContacts;
 use crate::dem::domain::Domain;
 use crate::dem::forces::MeshCandidates;
-use crate::dem::insertion::{counts_from_mass_fractions, lattice, random_fill, Feeder, Rng, SizeClass};
+use crate::dem::insertion::{
+    counts_from_mass_fractions, lattice, random_fill, Feeder, Rng, SizeClass,
+};
 use crate::dem::material::{ContactModel, Damping, Material, NormalSpring, PairLaw, PairOverride};
 use crate::dem::neighbor::NeighborList;
 use crate::dem::spheres::{NewSphere, Spheres};
-use crate::dem::timestep::{contact_scales, ContactScales, DEFAULT_STEPS_PER_PERIOD, MIN_STEPS_PER_PERIOD};
+use crate::dem::timestep::{
+    contact_scales, ContactScales, DEFAULT_STEPS_PER_PERIOD, MIN_STEPS_PER_PERIOD,
+};
 use crate::dem::walls::{Motion, Shape, Wall};
 use crate::dem::{Dem, Limits, Stats};
 use crate::geometry::{Cuboid, Cylinder, Plane, TriMesh};
@@ -44,9 +51,20 @@ impl Derived {
     /// The report printed by `riprap check`.
     pub fn report(&self) -> String {
         let mut s = String::new();
-        let _ = writeln!(s, "spheres: {} at the start, {} fed during the run", self.spheres.0, self.spheres.1);
-        let _ = writeln!(s, "reference impact velocity: {:.3} m/s", self.reference_velocity);
-        let _ = writeln!(s, "contact pairings (head-on impact at the reference velocity):");
+        let _ = writeln!(
+            s,
+            "spheres: {} at the start, {} fed during the run",
+            self.spheres.0, self.spheres.1
+        );
+        let _ = writeln!(
+            s,
+            "reference impact velocity: {:.3} m/s",
+            self.reference_velocity
+        );
+        let _ = writeln!(
+            s,
+            "contact pairings (head-on impact at the reference velocity):"
+        );
         let _ = writeln!(
             s,
             "  {:<34} {:>10} {:>10} {:>11} {:>11} {:>11} {:>11}",
@@ -65,8 +83,16 @@ impl Derived {
                 c.rest_overlap / c.r_star
             );
         }
-        let _ = writeln!(s, "shortest spring period T [22]: {:.4e} s", self.min_period);
-        let _ = writeln!(s, "largest stable time step T/10: {:.4e} s", self.max_time_step);
+        let _ = writeln!(
+            s,
+            "shortest spring period T [22]: {:.4e} s",
+            self.min_period
+        );
+        let _ = writeln!(
+            s,
+            "largest stable time step T/10: {:.4e} s",
+            self.max_time_step
+        );
         let _ = writeln!(
             s,
             "time step: {:.4e} s (T/{:.1}), {} steps to the end",
@@ -95,24 +121,93 @@ fn positive(src: &Source, key: &str, v: f64) -> Result<f64, ScenarioError> {
     }
 }
 
-fn material_of(src: &Source, names: &[String], key: &str, name: Option<&str>) -> Result<u16, ScenarioError> {
-    let name = name.ok_or_else(|| src.invalid(key, "no material given (here or for the whole set)"))?;
-    names.iter().position(|n| n == name).map(|i| i as u16).ok_or_else(|| {
-        src.invalid(key, format!("unknown material `{name}`; defined: {}", names.join(", ")))
-    })
+fn finite(src: &Source, key: &str, v: &[f64]) -> Result<(), ScenarioError> {
+    match v.iter().find(|x| !x.is_finite()) {
+        Some(x) => Err(src.invalid(key, format!("must be finite, got {x}"))),
+        None => Ok(()),
+    }
+}
+
+fn non_negative(src: &Source, key: &str, v: f64) -> Result<f64, ScenarioError> {
+    if v.is_finite() && v >= 0.0 {
+        Ok(v)
+    } else {
+        Err(src.invalid(key, format!("must be zero or positive, got {v}")))
+    }
+}
+
+fn restitution(src: &Source, key: &str, e: f64) -> Result<f64, ScenarioError> {
+    if e > 0.0 && e <= 1.0 {
+        Ok(e)
+    } else {
+        Err(src.invalid(
+            key,
+            format!("must lie in (0, 1] (1 = elastic, small = very dissipative), got {e}"),
+        ))
+    }
+}
+
+fn material_of(
+    src: &Source,
+    names: &[String],
+    key: &str,
+    name: Option<&str>,
+) -> Result<u16, ScenarioError> {
+    let name =
+        name.ok_or_else(|| src.invalid(key, "no material given (here or for the whole set)"))?;
+    names
+        .iter()
+        .position(|n| n == name)
+        .map(|i| i as u16)
+        .ok_or_else(|| {
+            src.invalid(
+                key,
+                format!(
+                    "unknown material `{name}`; the [[material]] tables define: {}",
+                    names.join(", ")
+                ),
+            )
+        })
+}
+
+/// The material of a sphere or size class: its own (`key`) or else its set's (`set_key`).
+fn material_or_default(
+    src: &Source,
+    names: &[String],
+    key: &str,
+    own: Option<&str>,
+    set_key: &str,
+    set: Option<&str>,
+) -> Result<u16, ScenarioError> {
+    match (own, set) {
+        (Some(_), _) => material_of(src, names, key, own),
+        (None, Some(_)) => material_of(src, names, set_key, set),
+        (None, None) => Err(src.invalid(
+            key,
+            format!("no material given, here or for the whole set (`{set_key}`)"),
+        )),
+    }
 }
 
 /// Checks a scenario and builds the simulation. `force_time_step` overrides the file's flag.
 pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     let sc = &src.scenario;
     positive(src, "run.end_time", sc.run.end_time)?;
+    finite(src, "domain.min", &sc.domain.min)?;
+    finite(src, "domain.max", &sc.domain.max)?;
     for k in 0..3 {
         if sc.domain.min[k].partial_cmp(&sc.domain.max[k]) != Some(std::cmp::Ordering::Less) {
             return Err(src.invalid("domain.max", "must exceed domain.min along every axis"));
         }
     }
-    let domain = Domain { min: v3(sc.domain.min), max: v3(sc.domain.max), periodic: sc.domain.periodic };
-    let gravity = v3(sc.domain.gravity.unwrap_or([0.0, 0.0, -9.81]));
+    let domain = Domain {
+        min: v3(sc.domain.min),
+        max: v3(sc.domain.max),
+        periodic: sc.domain.periodic,
+    };
+    let gravity = sc.domain.gravity.unwrap_or([0.0, 0.0, -9.81]);
+    finite(src, "domain.gravity", &gravity)?;
+    let gravity = v3(gravity);
 
     // Materials.
     if sc.materials.is_empty() {
@@ -123,20 +218,28 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     for (i, m) in sc.materials.iter().enumerate() {
         let key = |k: &str| format!("material[{i}].{k}");
         if names.contains(&m.name) {
-            return Err(src.invalid(&key("name"), format!("material `{}` is defined twice", m.name)));
+            return Err(src.invalid(
+                &key("name"),
+                format!("material `{}` is defined twice", m.name),
+            ));
         }
         positive(src, &key("density"), m.density)?;
         positive(src, &key("young_modulus"), m.young_modulus)?;
         if !(0.0..0.5).contains(&m.poisson_ratio) {
-            return Err(src.invalid(&key("poisson_ratio"), format!("must lie in [0, 0.5), got {}", m.poisson_ratio)));
+            return Err(src.invalid(
+                &key("poisson_ratio"),
+                format!(
+                    "must lie in [0, 0.5) (0.5 would be incompressible), got {}",
+                    m.poisson_ratio
+                ),
+            ));
         }
-        if !(m.friction_coefficient >= 0.0 && m.friction_coefficient.is_finite()) {
-            return Err(src.invalid(&key("friction_coefficient"), "must be zero or positive"));
-        }
-        let e = m.restitution_coefficient.unwrap_or(0.5);
-        if !(e > 0.0 && e <= 1.0) {
-            return Err(src.invalid(&key("restitution_coefficient"), format!("must lie in (0, 1], got {e}")));
-        }
+        non_negative(src, &key("friction_coefficient"), m.friction_coefficient)?;
+        let e = restitution(
+            src,
+            &key("restitution_coefficient"),
+            m.restitution_coefficient.unwrap_or(0.5),
+        )?;
         names.push(m.name.clone());
         materials.push(Material {
             name: m.name.clone(),
@@ -149,7 +252,9 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     }
 
     // Reference velocity: √(2 g H) over the domain height unless given.
-    let height = (domain.max - domain.min).dot(-gravity.normalize_or_zero()).abs();
+    let height = (domain.max - domain.min)
+        .dot(-gravity.normalize_or_zero())
+        .abs();
     let v_ref = match sc.run.reference_velocity {
         Some(v) => positive(src, "run.reference_velocity", v)?,
         None => (2.0 * gravity.length() * height).sqrt().max(0.5),
@@ -161,6 +266,16 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         let key = format!("contact.pair[{p}].materials");
         let a = material_of(src, &names, &key, Some(&pair.materials[0]))? as usize;
         let b = material_of(src, &names, &key, Some(&pair.materials[1]))? as usize;
+        if let Some(f) = pair.friction_coefficient {
+            non_negative(src, &format!("contact.pair[{p}].friction_coefficient"), f)?;
+        }
+        if let Some(e) = pair.restitution_coefficient {
+            restitution(
+                src,
+                &format!("contact.pair[{p}].restitution_coefficient"),
+                e,
+            )?;
+        }
         let o = PairOverride {
             friction_coefficient: pair.friction_coefficient,
             restitution_coefficient: pair.restitution_coefficient,
@@ -171,7 +286,12 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     let mut laws = Vec::with_capacity(n_mat * n_mat);
     for a in 0..n_mat {
         for b in 0..n_mat {
-            laws.push(PairLaw::new(&model, &materials[a], &materials[b], overrides[a * n_mat + b]));
+            laws.push(PairLaw::new(
+                &model,
+                &materials[a],
+                &materials[b],
+                overrides[a * n_mat + b],
+            ));
         }
     }
 
@@ -186,23 +306,55 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         }
     };
     for m in 0..n_mat as u16 {
-        let radii = spheres.radius.iter().zip(&spheres.material).filter(|(_, &mm)| mm == m).map(|(r, _)| *r);
-        let feed = feeders.iter().flat_map(|f| f.classes.iter()).filter(|c| c.material == m).map(|c| 0.5 * c.diameter);
+        let radii = spheres
+            .radius
+            .iter()
+            .zip(&spheres.material)
+            .filter(|(_, &mm)| mm == m)
+            .map(|(r, _)| *r);
+        let feed = feeders
+            .iter()
+            .flat_map(|f| f.classes.iter())
+            .filter(|c| c.material == m)
+            .map(|c| 0.5 * c.diameter);
         let all: Vec<f64> = radii.chain(feed).collect();
-        if let (Some(lo), Some(hi)) = (all.iter().cloned().reduce(f64::min), all.iter().cloned().reduce(f64::max)) {
+        if let (Some(lo), Some(hi)) = (
+            all.iter().cloned().reduce(f64::min),
+            all.iter().cloned().reduce(f64::max),
+        ) {
             note(m, lo);
             note(m, hi);
         }
     }
     let g = gravity.length();
-    let mass = |m: u16, r: f64| materials[m as usize].density * 4.0 / 3.0 * std::f64::consts::PI * r.powi(3);
+    let mass = |m: u16, r: f64| {
+        materials[m as usize].density * 4.0 / 3.0 * std::f64::consts::PI * r.powi(3)
+    };
     let mut pairings = Vec::new();
     for (a, &(ma, ra)) in kinds.iter().enumerate() {
         for &(mb, rb) in &kinds[a..] {
             let law = &laws[ma as usize * n_mat + mb as usize];
-            let (r_star, m_star) = (ra * rb / (ra + rb), mass(ma, ra) * mass(mb, rb) / (mass(ma, ra) + mass(mb, rb)));
-            let name = format!("{} d={:.4} / {} d={:.4}", names[ma as usize], 2.0 * ra, names[mb as usize], 2.0 * rb);
-            pairings.push((name, contact_scales(law, r_star, m_star, v_ref, mass(ma, ra).min(mass(mb, rb)) * g)));
+            let (r_star, m_star) = (
+                ra * rb / (ra + rb),
+                mass(ma, ra) * mass(mb, rb) / (mass(ma, ra) + mass(mb, rb)),
+            );
+            let name = format!(
+                "{} d={:.4} / {} d={:.4}",
+                names[ma as usize],
+                2.0 * ra,
+                names[mb as usize],
+                2.0 * rb
+            );
+            pairings.push((
+                name,
+                contact_scales(
+                    law,
+                    r_star,
+                    m_star,
+                    v_ref,
+                    mass(ma, ra).min(mass(mb, rb)) * g,
+                ),
+            ));
         }
         let mut seen = Vec::new();
         for w in &walls {
@@ -211,23 +363,39 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             }
             seen.push(w.material);
             let law = &laws[ma as usize * n_mat + w.material as usize];
-            let name = format!("{} d={:.4} / wall {}", names[ma as usize], 2.0 * ra, names[w.material as usize]);
-            pairings.push((name, contact_scales(law, ra, mass(ma, ra), v_ref, mass(ma, ra) * g)));
+            let name = format!(
+                "{} d={:.4} / wall {}",
+                names[ma as usize],
+                2.0 * ra,
+                names[w.material as usize]
+            );
+            pairings.push((
+                name,
+                contact_scales(law, ra, mass(ma, ra), v_ref, mass(ma, ra) * g),
+            ));
         }
     }
-    let min_period = pairings.iter().map(|p| p.1.period).fold(f64::INFINITY, f64::min);
+    let min_period = pairings
+        .iter()
+        .map(|p| p.1.period)
+        .fold(f64::INFINITY, f64::min);
     let max_dt = min_period / MIN_STEPS_PER_PERIOD;
     let dt = match sc.run.time_step {
         Some(dt) => {
             positive(src, "run.time_step", dt)?;
             if dt > max_dt && !sc.run.force_time_step {
+                let worst = pairings
+                    .iter()
+                    .min_by(|a, b| a.1.period.total_cmp(&b.1.period))
+                    .map_or(String::new(), |p| format!(" (pairing {})", p.0));
                 return Err(src.invalid(
                     "run.time_step",
                     format!(
-                        "{dt:.4e} s is above the stable limit {max_dt:.4e} s = T/10 with T = \
-                         {min_period:.4e} s the shortest contact-spring period [22]; use at most \
-                         {max_dt:.4e} s (T/20 = {:.4e} s is the default), or set \
-                         run.force_time_step = true",
+                        "{dt:.4e} s is above the stable limit {max_dt:.4e} s = T/10, with T = \
+                         {min_period:.4e} s the shortest contact-spring period{worst} [22]; use at \
+                         most {max_dt:.4e} s, or leave time_step out for the default T/20 = \
+                         {:.4e} s; to run with this step anyway (at your own risk), set \
+                         `force_time_step = true` in [run]",
                         min_period / DEFAULT_STEPS_PER_PERIOD
                     ),
                 ));
@@ -242,14 +410,38 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     let d_max = kinds.iter().map(|k| 2.0 * k.1).fold(0.0, f64::max);
     let n_fed: usize = feeders.iter().map(|f| f.total).sum();
     let n_total = spheres.len() + n_fed;
-    for &id in &sc.output.probes {
+    for (p, &id) in sc.output.probes.iter().enumerate() {
         if id as usize >= n_total {
-            return Err(src.invalid("output.probes", format!("no sphere has id {id} (ids run from 0 to {})", n_total.saturating_sub(1))));
+            let have = match n_total {
+                0 => "the scenario has no spheres".to_string(),
+                1 => "the only sphere has id 0".to_string(),
+                n => format!(
+                    "ids run from 0 to {} in the order the spheres are defined, fed ones last",
+                    n - 1
+                ),
+            };
+            return Err(src.invalid(
+                &format!("output.probes[{p}]"),
+                format!("no sphere has id {id}: {have}"),
+            ));
+        }
+    }
+    for (k, v) in [
+        ("output.vtk_interval", sc.output.vtk_interval),
+        ("output.series_interval", sc.output.series_interval),
+        ("output.checkpoint_interval", sc.output.checkpoint_interval),
+    ] {
+        if let Some(v) = v {
+            positive(src, k, v)?;
         }
     }
     let limits = Limits {
         max_speed: positive(src, "run.max_speed", sc.run.max_speed.unwrap_or(100.0))?,
-        max_overlap_ratio: positive(src, "run.max_overlap_ratio", sc.run.max_overlap_ratio.unwrap_or(0.5))?,
+        max_overlap_ratio: positive(
+            src,
+            "run.max_overlap_ratio",
+            sc.run.max_overlap_ratio.unwrap_or(0.5),
+        )?,
     };
     let mut spheres = spheres;
     spheres.reserve(n_fed);
@@ -280,10 +472,17 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         memory: n_total as f64 * 1100.0,
     };
     let simulation = Simulation::new(dem, feeders, min_period);
-    Ok(Built { simulation, derived })
+    Ok(Built {
+        simulation,
+        derived,
+    })
 }
 
-fn contact_model(src: &Source, c: &ContactSection, v_ref: f64) -> Result<ContactModel, ScenarioError> {
+fn contact_model(
+    src: &Source,
+    c: &ContactSection,
+    v_ref: f64,
+) -> Result<ContactModel, ScenarioError> {
     let damping = match c.damping {
         DampingName::Critical => Damping::Critical,
         DampingName::Restitution => Damping::Restitution,
@@ -291,16 +490,60 @@ fn contact_model(src: &Source, c: &ContactSection, v_ref: f64) -> Result<Contact
     let spring = match c.model {
         ModelName::HertzMindlin => return Ok(ContactModel::HertzMindlin),
         ModelName::Hertz => NormalSpring::Hertz,
-        ModelName::ApparentLinearHertz => NormalSpring::ApparentLinearHertz { reference_velocity: v_ref },
+        ModelName::ApparentLinearHertz => NormalSpring::ApparentLinearHertz {
+            reference_velocity: v_ref,
+        },
         ModelName::Linear => {
-            let k = c.stiffness.ok_or_else(|| src.invalid("contact.stiffness", "the linear model needs a normal stiffness [N/m]"))?;
-            NormalSpring::Linear { stiffness: positive(src, "contact.stiffness", k)? }
+            let k = c.stiffness.ok_or_else(|| {
+                src.invalid_at(
+                    "contact.stiffness",
+                    "contact.model",
+                    "the linear model needs a normal stiffness: add `stiffness = ...` [N/m] to [contact] \
+                     (or choose a model that derives it from the materials, e.g. \"hertz\")",
+                )
+            })?;
+            NormalSpring::Linear {
+                stiffness: positive(src, "contact.stiffness", k)?,
+            }
         }
     };
     if c.stiffness.is_some() && c.model != ModelName::Linear {
-        return Err(src.invalid("contact.stiffness", "only the linear model takes a stiffness; the others derive it from the materials"));
+        return Err(src.invalid(
+            "contact.stiffness",
+            "only the linear model takes a stiffness; the others derive it from the materials",
+        ));
     }
     Ok(ContactModel::Voigt { spring, damping })
+}
+
+fn check_motion(src: &Source, key: &str, motion: Option<Motion>) -> Result<(), ScenarioError> {
+    match motion {
+        Some(Motion::Oscillation {
+            amplitude,
+            frequency,
+            phase,
+        }) => {
+            finite(src, &format!("{key}.amplitude"), &amplitude.to_array())?;
+            positive(src, &format!("{key}.frequency"), frequency)?;
+            finite(src, &format!("{key}.phase"), &[phase])?;
+        }
+        Some(Motion::Linear {
+            velocity,
+            start,
+            stop,
+        }) => {
+            finite(src, &format!("{key}.velocity"), &velocity.to_array())?;
+            finite(src, &format!("{key}.start"), &[start])?;
+            if !(stop > start) {
+                return Err(src.invalid(
+                    &format!("{key}.stop"),
+                    format!("must come after start = {start} s (leave it out to move forever), got {stop}"),
+                ));
+            }
+        }
+        _ => {}
+    }
+    Ok(())
 }
 
 fn build_walls(src: &Source, names: &[String]) -> Result<Vec<Wall>, ScenarioError> {
@@ -310,40 +553,54 @@ fn build_walls(src: &Source, names: &[String]) -> Result<Vec<Wall>, ScenarioErro
         let (name, material, motion) = w.common();
         let material = material_of(src, names, &key("material"), Some(material))?;
         let shape = match w {
-            WallSection::Plane { point, normal, .. } => {
-                let n = v3(*normal);
-                if !(n.length() > 0.0) {
+            WallSection::Plane(p) => {
+                finite(src, &key("point"), &p.point)?;
+                let n = v3(p.normal);
+                if !(n.length() > 0.0 && n.is_finite()) {
                     return Err(src.invalid(&key("normal"), "must be a non-zero vector"));
                 }
-                Shape::Plane(Plane::new(v3(*point), n.normalize()))
+                Shape::Plane(Plane::new(v3(p.point), n.normalize()))
             }
-            WallSection::Box { min, max, inside, .. } => {
-                if (0..3).any(|k| min[k] >= max[k]) {
+            WallSection::Box(b) => {
+                finite(src, &key("min"), &b.min)?;
+                finite(src, &key("max"), &b.max)?;
+                if (0..3).any(|k| b.min[k] >= b.max[k]) {
                     return Err(src.invalid(&key("max"), "must exceed min along every axis"));
                 }
-                Shape::Cuboid(Cuboid { min: v3(*min), max: v3(*max), inside: *inside })
+                Shape::Cuboid(Cuboid {
+                    min: v3(b.min),
+                    max: v3(b.max),
+                    inside: b.inside,
+                })
             }
-            WallSection::Cylinder { start, end, radius, inside, .. } => {
-                positive(src, &key("radius"), *radius)?;
-                if v3(*start) == v3(*end) {
+            WallSection::Cylinder(c) => {
+                finite(src, &key("start"), &c.start)?;
+                finite(src, &key("end"), &c.end)?;
+                positive(src, &key("radius"), c.radius)?;
+                if v3(c.start) == v3(c.end) {
                     return Err(src.invalid(&key("end"), "the axis has zero length"));
                 }
-                Shape::Cylinder(Cylinder { start: v3(*start), end: v3(*end), radius: *radius, inside: *inside })
+                Shape::Cylinder(Cylinder {
+                    start: v3(c.start),
+                    end: v3(c.end),
+                    radius: c.radius,
+                    inside: c.inside,
+                })
             }
-            WallSection::Mesh { file, scale, offset, .. } => {
-                positive(src, &key("scale"), *scale)?;
-                let path = src.dir.join(file);
-                let mesh = TriMesh::from_stl(&path).map_err(|e| src.invalid(&key("file"), e.to_string()))?;
-                let mut mesh = mesh.transformed(*scale, Mat3::IDENTITY, v3(*offset));
+            WallSection::Mesh(m) => {
+                positive(src, &key("scale"), m.scale)?;
+                finite(src, &key("offset"), &m.offset)?;
+                let path = src.dir.join(&m.file);
+                let mesh = TriMesh::from_stl(&path)
+                    .map_err(|e| src.invalid(&key("file"), e.to_string()))?;
+                let mut mesh = mesh.transformed(m.scale, Mat3::IDENTITY, v3(m.offset));
                 let (lo, hi) = mesh.bounding_box();
                 let edge = ((hi - lo).max_element() / 64.0).max(1e-6);
                 mesh.build_bins(edge);
                 Shape::Mesh(mesh)
             }
         };
-        if let Some(Motion::Oscillation { frequency, .. }) = motion {
-            positive(src, &key("motion.frequency"), frequency)?;
-        }
+        check_motion(src, &key("motion"), motion)?;
         walls.push(Wall {
             name: name.clone().unwrap_or_else(|| format!("{}{i}", w.kind())),
             shape,
@@ -354,6 +611,16 @@ fn build_walls(src: &Source, names: &[String]) -> Result<Vec<Wall>, ScenarioErro
     Ok(walls)
 }
 
+/// How the classes of a set are weighted.
+#[derive(Clone, Copy, PartialEq)]
+enum Weights {
+    /// `count` or `mass_fraction` of `total_mass` (random fills).
+    CountsOrFractions,
+    /// `count` only, as relative weights (feeds).
+    Counts,
+}
+
+#[allow(clippy::too_many_arguments)]
 fn size_classes(
     src: &Source,
     names: &[String],
@@ -362,6 +629,7 @@ fn size_classes(
     default: Option<&str>,
     sizes: &[SizeSection],
     total_mass: Option<f64>,
+    weights: Weights,
 ) -> Result<Vec<SizeClass>, ScenarioError> {
     if sizes.is_empty() {
         return Err(src.invalid(&format!("{key}.sizes"), "at least one size class is needed"));
@@ -371,31 +639,111 @@ fn size_classes(
     for (c, s) in sizes.iter().enumerate() {
         let k = format!("{key}.sizes[{c}]");
         positive(src, &format!("{k}.diameter"), s.diameter)?;
-        let m = material_of(src, names, &format!("{k}.material"), s.material.as_deref().or(default))?;
+        let m = material_or_default(
+            src,
+            names,
+            &format!("{k}.material"),
+            s.material.as_deref(),
+            &format!("{key}.material"),
+            default,
+        )?;
         let rho = materials[m as usize].density;
         match (s.count, s.mass_fraction) {
             (Some(n), None) => out.push(SizeClass { diameter: s.diameter, material: m, density: rho, count: n }),
+            (None, Some(_)) if weights == Weights::Counts => {
+                return Err(src.invalid(
+                    &format!("{k}.mass_fraction"),
+                    "a feed weights its size classes by `count` (relative numbers); mass fractions are \
+                     for random fills",
+                ))
+            }
             (None, Some(f)) => {
-                if !(f >= 0.0) {
-                    return Err(src.invalid(&format!("{k}.mass_fraction"), "must be zero or positive"));
-                }
+                non_negative(src, &format!("{k}.mass_fraction"), f)?;
                 fractions.push((s.diameter, rho, f));
                 out.push(SizeClass { diameter: s.diameter, material: m, density: rho, count: 0 });
             }
-            _ => return Err(src.invalid(&k, "give exactly one of `count` and `mass_fraction`")),
+            (Some(_), Some(_)) => {
+                return Err(src.invalid(&k, "give `count` or `mass_fraction`, not both"));
+            }
+            (None, None) => {
+                let what = if weights == Weights::Counts { "`count`" } else { "`count` or `mass_fraction`" };
+                return Err(src.invalid(&k, format!("give {what} for this size class")));
+            }
         }
+    }
+    if weights == Weights::Counts && out.iter().all(|c| c.count == 0) {
+        return Err(src.invalid(
+            &format!("{key}.sizes"),
+            "every class has count = 0: nothing to feed",
+        ));
     }
     if !fractions.is_empty() {
         if fractions.len() != out.len() {
-            return Err(src.invalid(&format!("{key}.sizes"), "use either counts or mass fractions for all classes"));
+            return Err(src.invalid(
+                &format!("{key}.sizes"),
+                "use either counts or mass fractions for all classes",
+            ));
         }
-        let total = total_mass.ok_or_else(|| src.invalid(&format!("{key}.total_mass"), "mass fractions need a total_mass [kg]"))?;
+        if fractions.iter().all(|f| f.2 == 0.0) {
+            return Err(src.invalid(&format!("{key}.sizes"), "the mass fractions are all zero"));
+        }
+        let total = total_mass.ok_or_else(|| {
+            src.invalid_at(
+                &format!("{key}.total_mass"),
+                &format!("{key}.sizes"),
+                "mass fractions need a total_mass [kg]",
+            )
+        })?;
         positive(src, &format!("{key}.total_mass"), total)?;
-        for (c, n) in counts_from_mass_fractions(total, &fractions).into_iter().enumerate() {
+        for (c, n) in counts_from_mass_fractions(total, &fractions)
+            .into_iter()
+            .enumerate()
+        {
             out[c].count = n;
         }
     }
     Ok(out)
+}
+
+/// Refuses a region [min, max] of a sphere set that is empty or reaches outside the domain.
+fn check_region(
+    src: &Source,
+    key: &str,
+    min: [f64; 3],
+    max: [f64; 3],
+    domain: &Domain,
+) -> Result<(), ScenarioError> {
+    finite(src, &format!("{key}.min"), &min)?;
+    finite(src, &format!("{key}.max"), &max)?;
+    let axis = ["x", "y", "z"];
+    for k in 0..3 {
+        if !(min[k] < max[k]) {
+            return Err(src.invalid(
+                &format!("{key}.max"),
+                format!("must exceed min along every axis ({})", axis[k]),
+            ));
+        }
+        let tol = 1e-9 * (domain.max[k] - domain.min[k]);
+        if min[k] < domain.min[k] - tol {
+            return Err(src.invalid(
+                &format!("{key}.min"),
+                format!(
+                    "the region reaches outside the domain: min {} = {} < domain.min {} = {}",
+                    axis[k], min[k], axis[k], domain.min[k]
+                ),
+            ));
+        }
+        if max[k] > domain.max[k] + tol {
+            return Err(src.invalid(
+                &format!("{key}.max"),
+                format!(
+                    "the region reaches outside the domain: max {} = {} > domain.max {} = {}",
+                    axis[k], max[k], axis[k], domain.max[k]
+                ),
+            ));
+        }
+    }
+    Ok(())
 }
 
 fn build_spheres(
@@ -406,19 +754,44 @@ fn build_spheres(
 ) -> Result<(Spheres, Vec<Feeder>), ScenarioError> {
     let mut spheres = Spheres::default();
     let mut feeders = Vec::new();
-    let inside = |x: Vec3| (0..3).all(|k| x[k] >= domain.min[k] && x[k] <= domain.max[k]);
+    // Where each initial sphere comes from, for messages: its key path.
+    let mut origin: Vec<String> = Vec::new();
+    let axis = ["x", "y", "z"];
     for (i, set) in src.scenario.spheres.iter().enumerate() {
         let key = format!("spheres[{i}]");
         let first = spheres.len();
         match set {
-            SphereSet::List { material, spheres: list } => {
+            SphereSet::List(ListSet {
+                material,
+                spheres: list,
+            }) => {
+                if list.is_empty() {
+                    return Err(src.invalid(&format!("{key}.spheres"), "the list has no sphere"));
+                }
                 for (k, e) in list.iter().enumerate() {
                     let kk = format!("{key}.spheres[{k}]");
                     positive(src, &format!("{kk}.diameter"), e.diameter)?;
-                    let m = material_of(src, names, &format!("{kk}.material"), e.material.as_deref().or(material.as_deref()))?;
+                    finite(src, &format!("{kk}.position"), &e.position)?;
+                    finite(src, &format!("{kk}.velocity"), &e.velocity)?;
+                    finite(src, &format!("{kk}.angular_velocity"), &e.angular_velocity)?;
+                    let m = material_or_default(
+                        src,
+                        names,
+                        &format!("{kk}.material"),
+                        e.material.as_deref(),
+                        &format!("{key}.material"),
+                        material.as_deref(),
+                    )?;
                     let x = v3(e.position);
-                    if !inside(x) {
-                        return Err(src.invalid(&format!("{kk}.position"), "lies outside the domain"));
+                    if let Some(a) = (0..3).find(|&a| x[a] < domain.min[a] || x[a] > domain.max[a])
+                    {
+                        return Err(src.invalid(
+                            &format!("{kk}.position"),
+                            format!(
+                                "lies outside the domain: {} = {} is not within [{}, {}]",
+                                axis[a], x[a], domain.min[a], domain.max[a]
+                            ),
+                        ));
                     }
                     spheres.push(NewSphere {
                         position: x,
@@ -429,13 +802,36 @@ fn build_spheres(
                         density: materials[m as usize].density,
                         fixed: e.fixed,
                     });
+                    origin.push(kk);
                 }
             }
-            SphereSet::Lattice { material, min, max, spacing, diameter, velocity } => {
+            SphereSet::Lattice(LatticeSet {
+                material,
+                min,
+                max,
+                spacing,
+                diameter,
+                velocity,
+            }) => {
                 positive(src, &format!("{key}.diameter"), *diameter)?;
                 positive(src, &format!("{key}.spacing"), *spacing)?;
+                finite(src, &format!("{key}.velocity"), velocity)?;
+                if spacing < diameter {
+                    return Err(src.invalid(
+                        &format!("{key}.spacing"),
+                        format!("{spacing} m is smaller than the diameter {diameter} m: neighbours would overlap"),
+                    ));
+                }
+                check_region(src, &key, *min, *max, domain)?;
                 let m = material_of(src, names, &format!("{key}.material"), Some(material))?;
-                for x in lattice(v3(*min), v3(*max), *spacing) {
+                let sites = lattice(v3(*min), v3(*max), *spacing);
+                if sites.is_empty() {
+                    return Err(src.invalid(
+                        &format!("{key}.spacing"),
+                        format!("the region [min, max] is thinner than one spacing ({spacing} m) along some axis: no sphere fits"),
+                    ));
+                }
+                for x in sites {
                     spheres.push(NewSphere {
                         position: x,
                         velocity: v3(*velocity),
@@ -445,17 +841,88 @@ fn build_spheres(
                         density: materials[m as usize].density,
                         fixed: false,
                     });
+                    origin.push(key.clone());
                 }
             }
-            SphereSet::Random { material, min, max, sizes, total_mass, seed, velocity } => {
-                let classes = size_classes(src, names, materials, &key, material.as_deref(), sizes, *total_mass)?;
+            SphereSet::Random(RandomSet {
+                material,
+                min,
+                max,
+                sizes,
+                total_mass,
+                seed,
+                velocity,
+            }) => {
+                check_region(src, &key, *min, *max, domain)?;
+                finite(src, &format!("{key}.velocity"), velocity)?;
+                let classes = size_classes(
+                    src,
+                    names,
+                    materials,
+                    &key,
+                    material.as_deref(),
+                    sizes,
+                    *total_mass,
+                    Weights::CountsOrFractions,
+                )?;
                 let mut rng = Rng(*seed);
-                random_fill(&mut spheres, domain, v3(*min), v3(*max), &classes, v3(*velocity), &mut rng)
-                    .map_err(|e| src.invalid(&format!("{key}.sizes"), e))?;
+                random_fill(
+                    &mut spheres,
+                    domain,
+                    v3(*min),
+                    v3(*max),
+                    &classes,
+                    v3(*velocity),
+                    &mut rng,
+                )
+                .map_err(|e| {
+                    src.invalid(
+                        &format!("{key}.sizes"),
+                        format!("impossible random fill: {e}"),
+                    )
+                })?;
+                origin.resize(spheres.len(), key.clone());
             }
-            SphereSet::Feed { material, min, max, rate, total, start, sizes, seed, velocity } => {
+            SphereSet::Feed(FeedSet {
+                material,
+                min,
+                max,
+                rate,
+                total,
+                start,
+                sizes,
+                seed,
+                velocity,
+            }) => {
                 positive(src, &format!("{key}.rate"), *rate)?;
-                let classes = size_classes(src, names, materials, &key, material.as_deref(), sizes, None)?;
+                non_negative(src, &format!("{key}.start"), *start)?;
+                finite(src, &format!("{key}.velocity"), velocity)?;
+                check_region(src, &key, *min, *max, domain)?;
+                let classes = size_classes(
+                    src,
+                    names,
+                    materials,
+                    &key,
+                    material.as_deref(),
+                    sizes,
+                    None,
+                    Weights::Counts,
+                )?;
+                for (c, class) in classes.iter().enumerate() {
+                    if let Some(a) =
+                        (0..3).find(|&a| max[a] - min[a] < class.diameter * (1.0 - 1e-9))
+                    {
+                        return Err(src.invalid(
+                            &format!("{key}.sizes[{c}].diameter"),
+                            format!(
+                                "spheres of diameter {} m do not fit in the feed region, which is {} m wide along {}",
+                                class.diameter,
+                                max[a] - min[a],
+                                axis[a]
+                            ),
+                        ));
+                    }
+                }
                 feeders.push(Feeder {
                     lo: v3(*min),
                     hi: v3(*max),
@@ -469,32 +936,119 @@ fn build_spheres(
                 });
             }
         }
-        check_overlaps(src, &spheres, first, domain, &key)?;
+        check_overlaps(src, &spheres, first, domain, &origin)?;
     }
+    check_walls(src, &spheres, &origin)?;
     Ok((spheres, feeders))
 }
 
 /// Refuses initial spheres that overlap (spheres from `first` on against all earlier ones).
-fn check_overlaps(src: &Source, s: &Spheres, first: usize, domain: &Domain, key: &str) -> Result<(), ScenarioError> {
+fn check_overlaps(
+    src: &Source,
+    s: &Spheres,
+    first: usize,
+    domain: &Domain,
+    origin: &[String],
+) -> Result<(), ScenarioError> {
     let mut nl = NeighborList::new(0.0);
     nl.build(s, domain);
+    let mut worst: Option<(usize, usize, f64)> = None;
     for &(i, j) in &nl.pairs {
-        let (i, j) = (i as usize, j as usize);
+        let (i, j) = if i < j {
+            (i as usize, j as usize)
+        } else {
+            (j as usize, i as usize)
+        };
         if j < first {
             continue;
         }
         let d = domain.minimum_image(s.position[j] - s.position[i]).length();
         let overlap = s.radius[i] + s.radius[j] - d;
-        if overlap > 1e-9 * (s.radius[i] + s.radius[j]) {
-            return Err(src.invalid(
-                key,
-                format!(
-                    "initial spheres {} at ({:.4}, {:.4}, {:.4}) and {} at ({:.4}, {:.4}, {:.4}) \
-                     overlap by {:.3e} m",
-                    s.id[i], s.position[i].x, s.position[i].y, s.position[i].z, s.id[j],
-                    s.position[j].x, s.position[j].y, s.position[j].z, overlap
-                ),
-            ));
+        if overlap > 1e-9 * (s.radius[i] + s.radius[j]) && worst.is_none_or(|w| (j, i) < (w.1, w.0))
+        {
+            worst = Some((i, j, overlap));
+        }
+    }
+    if let Some((i, j, overlap)) = worst {
+        let at = |k: usize| {
+            format!(
+                "sphere {} ({}, d = {} m, at ({}, {}, {}))",
+                s.id[k],
+                origin[k],
+                2.0 * s.radius[k],
+                s.position[k].x,
+                s.position[k].y,
+                s.position[k].z
+            )
+        };
+        return Err(src.invalid(
+            &origin[j],
+            format!(
+                "initial spheres overlap: {} and {} overlap by {:.3e} m ({:.1}% of the smaller radius); \
+                 move them apart",
+                at(i),
+                at(j),
+                overlap,
+                100.0 * overlap / s.radius[i].min(s.radius[j])
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// Refuses initial spheres whose centre lies on the wrong side of a wall (behind a plane, out of
+/// a container, inside an obstacle): the wall would throw them out with a huge force.
+fn check_walls(src: &Source, s: &Spheres, origin: &[String]) -> Result<(), ScenarioError> {
+    for (w, wall) in src.scenario.walls.iter().enumerate() {
+        let name = wall
+            .common()
+            .0
+            .clone()
+            .unwrap_or_else(|| format!("{}{w}", wall.kind()));
+        for k in 0..s.len() {
+            let x = s.position[k];
+            let wrong = match wall {
+                WallSection::Plane(p) => {
+                    let n = v3(p.normal).normalize_or_zero();
+                    (x - v3(p.point)).dot(n) < 0.0
+                }
+                WallSection::Box(b) => {
+                    let inside = (0..3).all(|a| x[a] >= b.min[a] && x[a] <= b.max[a]);
+                    inside != b.inside
+                }
+                WallSection::Cylinder(c) => {
+                    let (a, e) = (v3(c.start), v3(c.end));
+                    let u = (e - a).normalize_or_zero();
+                    let t = (x - a).dot(u);
+                    let rho = ((x - a) - t * u).length();
+                    let within = t >= 0.0 && t <= (e - a).length();
+                    within
+                        && if c.inside {
+                            rho > c.radius
+                        } else {
+                            rho < c.radius
+                        }
+                }
+                WallSection::Mesh(_) => false,
+            };
+            if wrong {
+                let side = match wall {
+                    WallSection::Plane(_) => {
+                        "behind the plane (on the side its normal points away from)"
+                    }
+                    WallSection::Box(b) if b.inside => "outside the box container",
+                    WallSection::Cylinder(c) if c.inside => "outside the tube",
+                    _ => "inside the solid obstacle",
+                };
+                return Err(src.invalid(
+                    &origin[k],
+                    format!(
+                        "sphere {} at ({}, {}, {}) starts {side} of wall `{name}` (wall[{w}]); \
+                         spheres must start on the open side of every wall",
+                        s.id[k], x.x, x.y, x.z
+                    ),
+                ));
+            }
         }
     }
     Ok(())

@@ -145,93 +145,184 @@ pub struct MaterialSection {
 
 /// `[[wall]]`: one wall, its geometry chosen by `kind`. Every kind also takes `name`
 /// (optional), `material` and `motion` (optional, default fixed).
+///
+/// Each kind's keys are a struct of their own (with `deny_unknown_fields`), so that an error in
+/// one of them can be located precisely: serde's internally tagged enums buffer their content
+/// and lose toml's spans, and `Source::from_str` then re-reads the table as the kind's struct.
 #[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+#[serde(tag = "kind", rename_all = "snake_case")]
 pub enum WallSection {
     /// Infinite plane; spheres live on the side `normal` points to.
-    Plane {
-        /// Name.
-        name: Option<String>,
-        /// Material name.
-        material: String,
-        /// Prescribed motion.
-        motion: Option<Motion>,
-        /// A point of the plane [m].
-        point: [f64; 3],
-        /// Normal [-] (normalised on reading).
-        normal: [f64; 3],
-    },
+    Plane(PlaneWall),
     /// Axis-aligned box: a container (`inside = true`) or a solid obstacle.
-    Box {
-        /// Name.
-        name: Option<String>,
-        /// Material name.
-        material: String,
-        /// Prescribed motion.
-        motion: Option<Motion>,
-        /// Lower corner [m].
-        min: [f64; 3],
-        /// Upper corner [m].
-        max: [f64; 3],
-        /// Container (true) or obstacle (false).
-        inside: bool,
-    },
+    Box(BoxWall),
     /// Finite cylinder: a tube (`inside = true`) or a solid obstacle.
-    Cylinder {
-        /// Name.
-        name: Option<String>,
-        /// Material name.
-        material: String,
-        /// Prescribed motion.
-        motion: Option<Motion>,
-        /// Axis start [m].
-        start: [f64; 3],
-        /// Axis end [m].
-        end: [f64; 3],
-        /// Radius [m].
-        radius: f64,
-        /// Tube (true) or obstacle (false).
-        inside: bool,
-    },
+    Cylinder(CylinderWall),
     /// Triangle mesh from an STL file (ASCII or binary), path relative to the scenario file.
-    Mesh {
-        /// Name.
-        name: Option<String>,
-        /// Material name.
-        material: String,
-        /// Prescribed motion.
-        motion: Option<Motion>,
-        /// STL file.
-        file: String,
-        /// Scale factor applied first (e.g. 0.001 for a file in millimetres) [-].
-        #[serde(default = "one")]
-        scale: f64,
-        /// Translation applied last [m].
-        #[serde(default)]
-        offset: [f64; 3],
-    },
+    Mesh(MeshWall),
+}
+
+/// `kind = "plane"`
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlaneWall {
+    /// Name.
+    pub name: Option<String>,
+    /// Material name.
+    pub material: String,
+    /// Prescribed motion.
+    pub motion: Option<MotionSection>,
+    /// A point of the plane [m].
+    pub point: [f64; 3],
+    /// Normal [-] (normalised on reading).
+    pub normal: [f64; 3],
+}
+
+/// `kind = "box"`
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BoxWall {
+    /// Name.
+    pub name: Option<String>,
+    /// Material name.
+    pub material: String,
+    /// Prescribed motion.
+    pub motion: Option<MotionSection>,
+    /// Lower corner [m].
+    pub min: [f64; 3],
+    /// Upper corner [m].
+    pub max: [f64; 3],
+    /// Container (true) or obstacle (false).
+    pub inside: bool,
+}
+
+/// `kind = "cylinder"`
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CylinderWall {
+    /// Name.
+    pub name: Option<String>,
+    /// Material name.
+    pub material: String,
+    /// Prescribed motion.
+    pub motion: Option<MotionSection>,
+    /// Axis start [m].
+    pub start: [f64; 3],
+    /// Axis end [m].
+    pub end: [f64; 3],
+    /// Radius [m].
+    pub radius: f64,
+    /// Tube (true) or obstacle (false).
+    pub inside: bool,
+}
+
+/// `kind = "mesh"`
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MeshWall {
+    /// Name.
+    pub name: Option<String>,
+    /// Material name.
+    pub material: String,
+    /// Prescribed motion.
+    pub motion: Option<MotionSection>,
+    /// STL file, relative to the scenario file.
+    pub file: String,
+    /// Scale factor applied first (e.g. 0.001 for a file in millimetres) [-].
+    #[serde(default = "one")]
+    pub scale: f64,
+    /// Translation applied last [m].
+    #[serde(default)]
+    pub offset: [f64; 3],
 }
 
 impl WallSection {
     /// (name, material, motion) common to every kind.
     pub fn common(&self) -> (&Option<String>, &str, Option<Motion>) {
-        match self {
-            WallSection::Plane { name, material, motion, .. }
-            | WallSection::Box { name, material, motion, .. }
-            | WallSection::Cylinder { name, material, motion, .. }
-            | WallSection::Mesh { name, material, motion, .. } => (name, material, *motion),
-        }
+        let (name, material, motion) = match self {
+            WallSection::Plane(w) => (&w.name, &w.material, w.motion),
+            WallSection::Box(w) => (&w.name, &w.material, w.motion),
+            WallSection::Cylinder(w) => (&w.name, &w.material, w.motion),
+            WallSection::Mesh(w) => (&w.name, &w.material, w.motion),
+        };
+        (name, material, motion.map(Motion::from))
     }
 
     /// The kind, as written in TOML.
     pub fn kind(&self) -> &'static str {
         match self {
-            WallSection::Plane { .. } => "plane",
-            WallSection::Box { .. } => "box",
-            WallSection::Cylinder { .. } => "cylinder",
-            WallSection::Mesh { .. } => "mesh",
+            WallSection::Plane(_) => "plane",
+            WallSection::Box(_) => "box",
+            WallSection::Cylinder(_) => "cylinder",
+            WallSection::Mesh(_) => "mesh",
         }
     }
+}
+
+/// `motion = { kind = ..., ... }`: the prescribed rigid motion of a wall.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum MotionSection {
+    /// The wall stays where it is.
+    Fixed(FixedMotion),
+    /// Translation at constant `velocity` between `start` and `stop`.
+    Linear(LinearMotion),
+    /// Oscillation d(t) = A [sin(2π f t + φ) - sin φ].
+    Oscillation(OscillationMotion),
+}
+
+/// `kind = "fixed"`: no other key.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FixedMotion {}
+
+/// `kind = "linear"`
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LinearMotion {
+    /// Velocity [m s⁻¹].
+    pub velocity: [f64; 3],
+    /// Time the motion starts [s] (default 0).
+    #[serde(default)]
+    pub start: f64,
+    /// Time the motion stops [s] (default never).
+    #[serde(default = "forever")]
+    pub stop: f64,
+}
+
+/// `kind = "oscillation"`
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OscillationMotion {
+    /// Amplitude vector A [m].
+    pub amplitude: [f64; 3],
+    /// Frequency f [Hz].
+    pub frequency: f64,
+    /// Phase φ [rad] (default 0).
+    #[serde(default)]
+    pub phase: f64,
+}
+
+impl From<MotionSection> for Motion {
+    fn from(m: MotionSection) -> Motion {
+        match m {
+            MotionSection::Fixed(_) => Motion::Fixed,
+            MotionSection::Linear(l) => Motion::Linear {
+                velocity: v3(l.velocity),
+                start: l.start,
+                stop: l.stop,
+            },
+            MotionSection::Oscillation(o) => Motion::Oscillation {
+                amplitude: v3(o.amplitude),
+                frequency: o.frequency,
+                phase: o.phase,
+            },
+        }
+    }
+}
+
+fn forever() -> f64 {
+    f64::INFINITY
 }
 
 fn one() -> f64 {
@@ -273,76 +364,109 @@ pub struct SphereEntry {
     pub fixed: bool,
 }
 
-/// `[[spheres]]`: a set of spheres, chosen by `kind`.
+/// `[[spheres]]`: a set of spheres, chosen by `kind` (each kind's keys are a struct of their
+/// own, see [`WallSection`]).
 #[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+#[serde(tag = "kind", rename_all = "snake_case")]
 pub enum SphereSet {
     /// Spheres listed one by one.
-    List {
-        /// Default material.
-        material: Option<String>,
-        /// The spheres.
-        spheres: Vec<SphereEntry>,
-    },
+    List(ListSet),
     /// A simple cubic lattice filling a box.
-    Lattice {
-        /// Material.
-        material: String,
-        /// Lower corner of the box [m].
-        min: [f64; 3],
-        /// Upper corner [m].
-        max: [f64; 3],
-        /// Lattice spacing [m].
-        spacing: f64,
-        /// Diameter [m].
-        diameter: f64,
-        /// Initial velocity [m s⁻¹].
-        #[serde(default)]
-        velocity: [f64; 3],
-    },
+    Lattice(LatticeSet),
     /// A random non-overlapping fill of a box from a size distribution.
-    Random {
-        /// Default material.
-        material: Option<String>,
-        /// Lower corner of the box [m].
-        min: [f64; 3],
-        /// Upper corner [m].
-        max: [f64; 3],
-        /// Size classes (by `count`, or by `mass_fraction` of `total_mass`).
-        sizes: Vec<SizeSection>,
-        /// Total mass for mass fractions [kg].
-        total_mass: Option<f64>,
-        /// Random seed.
-        #[serde(default)]
-        seed: u64,
-        /// Initial velocity [m s⁻¹].
-        #[serde(default)]
-        velocity: [f64; 3],
-    },
+    Random(RandomSet),
     /// Continuous feeding through an opening: spheres appear in the box [min, max] at `rate`.
-    Feed {
-        /// Default material.
-        material: Option<String>,
-        /// Lower corner of the insertion box [m].
-        min: [f64; 3],
-        /// Upper corner [m].
-        max: [f64; 3],
-        /// Spheres per second [s⁻¹].
-        rate: f64,
-        /// Spheres in all.
-        total: usize,
-        /// Start time [s].
-        #[serde(default)]
-        start: f64,
-        /// Size classes (`count` weights the choice).
-        sizes: Vec<SizeSection>,
-        /// Random seed.
-        #[serde(default)]
-        seed: u64,
-        /// Initial velocity [m s⁻¹].
-        #[serde(default)]
-        velocity: [f64; 3],
-    },
+    Feed(FeedSet),
+}
+
+impl SphereSet {
+    /// The kind, as written in TOML.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            SphereSet::List(_) => "list",
+            SphereSet::Lattice(_) => "lattice",
+            SphereSet::Random(_) => "random",
+            SphereSet::Feed(_) => "feed",
+        }
+    }
+}
+
+/// `kind = "list"`
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ListSet {
+    /// Default material.
+    pub material: Option<String>,
+    /// The spheres.
+    pub spheres: Vec<SphereEntry>,
+}
+
+/// `kind = "lattice"`
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LatticeSet {
+    /// Material.
+    pub material: String,
+    /// Lower corner of the box [m].
+    pub min: [f64; 3],
+    /// Upper corner [m].
+    pub max: [f64; 3],
+    /// Lattice spacing [m].
+    pub spacing: f64,
+    /// Diameter [m].
+    pub diameter: f64,
+    /// Initial velocity [m s⁻¹].
+    #[serde(default)]
+    pub velocity: [f64; 3],
+}
+
+/// `kind = "random"`
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RandomSet {
+    /// Default material.
+    pub material: Option<String>,
+    /// Lower corner of the box [m].
+    pub min: [f64; 3],
+    /// Upper corner [m].
+    pub max: [f64; 3],
+    /// Size classes (by `count`, or by `mass_fraction` of `total_mass`).
+    pub sizes: Vec<SizeSection>,
+    /// Total mass for mass fractions [kg].
+    pub total_mass: Option<f64>,
+    /// Random seed.
+    #[serde(default)]
+    pub seed: u64,
+    /// Initial velocity [m s⁻¹].
+    #[serde(default)]
+    pub velocity: [f64; 3],
+}
+
+/// `kind = "feed"`
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FeedSet {
+    /// Default material.
+    pub material: Option<String>,
+    /// Lower corner of the insertion box [m].
+    pub min: [f64; 3],
+    /// Upper corner [m].
+    pub max: [f64; 3],
+    /// Spheres per second [s⁻¹].
+    pub rate: f64,
+    /// Spheres in all.
+    pub total: usize,
+    /// Start time [s].
+    #[serde(default)]
+    pub start: f64,
+    /// Size classes (`count` weights the choice).
+    pub sizes: Vec<SizeSection>,
+    /// Random seed.
+    #[serde(default)]
+    pub seed: u64,
+    /// Initial velocity [m s⁻¹].
+    #[serde(default)]
+    pub velocity: [f64; 3],
 }
 
 /// `[output]`

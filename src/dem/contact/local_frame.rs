@@ -17,7 +17,8 @@
 //!   its transpose, which is its Moore-Penrose inverse.
 //! * (32): Δξ/Δt = M_tᵀ (v_i - v_j) + (d/2) M_r⁻¹ (ω_i + ω_j).
 //! * (9): F_ξ = s_ξ + c_n Δξ/Δt; for η and ζ, s = s^pre + k_t Δη and F = s + c_t Δη/Δt. (10)
-//!   no-tension joint, (11)(12) Coulomb slider, (13)(14) back to global.
+//!   no-tension joint, (11)(12) Coulomb slider (bounding spring plus dashpot, riprap's correction; see
+//!   `voigt_local`), (13)(14) back to global.
 //!
 //! # Misprints in the source, corrected here
 //!
@@ -170,7 +171,16 @@ pub fn voigt_local(law: &Law, delta: f64, rate: V3, s0: S2, dt: f64) -> (V3, S2)
         ([f_xi, s[0], s[1]], s)
     } else {
         let f = [1, 2].map(|k| s[k - 1] + law.c_t * rate[k]); // (9), F = s + c_t Δη/Δt
-        ([f_xi, f[0], f[1]], s)
+        let f_mag = f[0].hypot(f[1]);
+        if f_mag > limit {
+            // riprap's correction of (11): the slider, in series with the spring and the
+            // dashpot, also slips when their sum exceeds μ F_ξ; the spring relaxes to the
+            // slider force as in (12). The source tests s alone.
+            let f = f.map(|c| limit * c / f_mag);
+            ([f_xi, f[0], f[1]], f)
+        } else {
+            ([f_xi, f[0], f[1]], s)
+        }
     }
 }
 
@@ -381,12 +391,15 @@ mod tests {
                 + oracle.c_n * rate[0].abs()
                 + s_mag
                 + (oracle.k_t * dt + oracle.c_t) * v_t;
-            if f_xi.abs() <= 1e-8 * scale || (f_xi > 0.0 && (s_t - mu * f_xi).abs() <= 1e-8 * scale)
-            {
+            // Spring plus dashpot, whose magnitude the slider also bounds.
+            let f_t = (s_pre[0] + oracle.k_t * rate[1] * dt + oracle.c_t * rate[1])
+                .hypot(s_pre[1] + oracle.k_t * rate[2] * dt + oracle.c_t * rate[2]);
+            let near = |x: f64| f_xi > 0.0 && (x - mu * f_xi).abs() <= 1e-8 * scale;
+            if f_xi.abs() <= 1e-8 * scale || near(s_t) || (s_t <= mu * f_xi && near(f_t)) {
                 skipped += 1;
                 continue;
             }
-            match (f_xi > 0.0, s_t > mu * f_xi) {
+            match (f_xi > 0.0, s_t > mu * f_xi || f_t > mu * f_xi) {
                 (false, _) => open += 1,
                 (true, false) => stick += 1,
                 (true, true) => slide += 1,

@@ -1,0 +1,334 @@
+//! Boundary conditions on the six faces of the box, and the filling of ghost cells.
+//!
+//! On a staggered grid a boundary face carries the *normal* velocity component itself (a wall,
+//! an inflow or an outflow fixes it; the projection never changes it, so the pressure equation
+//! has a homogeneous Neumann condition there). The *tangential* components live half a cell
+//! inside, and the ghost value beyond the face is chosen so that the linear interpolation to the
+//! face gives the boundary value:
+//!
+//! | kind | normal velocity on the face | tangential ghost u_g from the first interior u_1 |
+//! |---|---|---|
+//! | periodic | copy of the opposite face | copy from the opposite side |
+//! | no-slip wall, velocity U_w | 0 | u_g = 2 U_w − u_1 (fixed wall: U_w = 0) |
+//! | free slip | 0 | u_g = u_1 (zero shear) |
+//! | inflow U_in(t) | U_in · n | u_g = 2 U_in − u_1 |
+//! | outflow | convective, see [`advance_outflow`] | u_g = u_1 (zero gradient) |
+//!
+//! Scalars (pressure, density, eddy viscosity) get a periodic copy or a zero-gradient copy,
+//! which is the homogeneous Neumann condition the pressure equation has on every non-periodic
+//! boundary.
+//!
+//! Ghosts are filled axis after axis over the whole padded plane, so edge and corner ghosts end
+//! up defined (by the last axis) and deterministic.
+
+use super::grid::StaggeredGrid;
+use glam::DVec3;
+use serde::{Deserialize, Serialize};
+use std::f64::consts::TAU;
+
+/// Index of the low side of an axis in [`Boundaries::faces`].
+pub const LOW: usize = 0;
+/// Index of the high side of an axis in [`Boundaries::faces`].
+pub const HIGH: usize = 1;
+
+/// A prescribed inflow velocity, uniform over its face: U_in(t) = mean + amplitude sin(2π t / T).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct InflowVelocity {
+    /// Mean velocity [m s⁻¹] (all three components: the normal one is the inflow).
+    pub mean: DVec3,
+    /// Amplitude of the oscillating part [m s⁻¹]; zero for a steady inflow.
+    pub amplitude: DVec3,
+    /// Period T of the oscillation [s]; ignored when `amplitude` is zero.
+    pub period: f64,
+}
+
+impl InflowVelocity {
+    /// A steady inflow velocity [m s⁻¹].
+    pub fn steady(velocity: DVec3) -> InflowVelocity {
+        InflowVelocity {
+            mean: velocity,
+            amplitude: DVec3::ZERO,
+            period: 1.0,
+        }
+    }
+
+    /// The inflow velocity at time `t` [s].
+    pub fn at(&self, t: f64) -> DVec3 {
+        if self.amplitude == DVec3::ZERO {
+            self.mean
+        } else {
+            self.mean + self.amplitude * (TAU * t / self.period).sin()
+        }
+    }
+}
+
+/// What happens on one face of the box.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Boundary {
+    /// The flow leaves through this face and re-enters through the opposite one (both faces of
+    /// the axis must be periodic).
+    Periodic,
+    /// No-slip wall moving in its own plane with `velocity` [m s⁻¹] (zero: a fixed wall; the
+    /// normal component must be zero). A lid-driven cavity has one such moving wall.
+    Wall {
+        /// Wall velocity [m s⁻¹], tangential.
+        velocity: DVec3,
+    },
+    /// Impermeable wall with zero shear stress (a symmetry plane, a rigid lid).
+    FreeSlip,
+    /// Prescribed velocity, steady or oscillating in time.
+    Inflow(InflowVelocity),
+    /// Convective outflow: the normal velocity is carried out by the mean outflow speed, then
+    /// corrected uniformly so that the box conserves volume; tangential velocities have zero
+    /// normal gradient.
+    Outflow,
+}
+
+impl Boundary {
+    /// A fixed no-slip wall.
+    pub const WALL: Boundary = Boundary::Wall {
+        velocity: DVec3::ZERO,
+    };
+}
+
+/// The boundary of each of the six faces: `faces[axis][LOW | HIGH]`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Boundaries {
+    /// `faces[a][LOW]` is the face x_a = origin_a, `faces[a][HIGH]` the face x_a = origin_a + L_a.
+    pub faces: [[Boundary; 2]; 3],
+}
+
+impl Boundaries {
+    /// Periodic in all three directions.
+    pub fn periodic() -> Boundaries {
+        Boundaries {
+            faces: [[Boundary::Periodic; 2]; 3],
+        }
+    }
+
+    /// The same boundaries with both faces of `axis` set to `low` and `high`.
+    pub fn with(mut self, axis: usize, low: Boundary, high: Boundary) -> Boundaries {
+        self.faces[axis] = [low, high];
+        self
+    }
+
+    /// True when `axis` is periodic.
+    pub fn is_periodic(&self, axis: usize) -> bool {
+        self.faces[axis][LOW] == Boundary::Periodic
+    }
+
+    /// Checks that periodic faces come in pairs and that walls move in their own plane.
+    pub fn validate(&self) -> Result<(), String> {
+        const NAMES: [&str; 3] = ["x", "y", "z"];
+        for a in 0..3 {
+            let [lo, hi] = self.faces[a];
+            if (lo == Boundary::Periodic) != (hi == Boundary::Periodic) {
+                return Err(format!(
+                    "boundary {}: periodic must be set on both faces of the axis",
+                    NAMES[a]
+                ));
+            }
+            for (side, b) in [("low", lo), ("high", hi)] {
+                match b {
+                    Boundary::Wall { velocity } if velocity[a] != 0.0 => {
+                        return Err(format!(
+                            "boundary {} {side}: a wall may move only in its own plane \
+                             (normal velocity {} m/s)",
+                            NAMES[a], velocity[a]
+                        ))
+                    }
+                    Boundary::Inflow(v) if v.amplitude != DVec3::ZERO && v.period <= 0.0 => {
+                        return Err(format!(
+                            "boundary {} {side}: inflow period must be positive",
+                            NAMES[a]
+                        ))
+                    }
+                    _ => {}
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// True when any face is an outflow.
+    pub fn has_outflow(&self) -> bool {
+        self.faces.iter().flatten().any(|b| *b == Boundary::Outflow)
+    }
+}
+
+/// Calls `f(base)` for every point of the padded plane normal to `axis`, where `base` is the
+/// storage index of the point at padded coordinate 0 along `axis`.
+fn for_each_in_plane(grid: &StaggeredGrid, axis: usize, mut f: impl FnMut(usize)) {
+    let p = grid.padded();
+    let s = grid.strides();
+    let (b, c) = ((axis + 1) % 3, (axis + 2) % 3);
+    for r in 0..p[c] {
+        for q in 0..p[b] {
+            f(q * s[b] + r * s[c]);
+        }
+    }
+}
+
+/// Fills the ghost values of a cell-centred scalar: periodic copy, or zero normal gradient.
+pub fn fill_scalar_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, f: &mut [f64]) {
+    let s = grid.strides();
+    for a in 0..3 {
+        let (sa, na) = (s[a], grid.n[a]);
+        let periodic = bcs.is_periodic(a);
+        for_each_in_plane(grid, a, |base| {
+            let (lo, hi) = (base, base + (na + 1) * sa);
+            if periodic {
+                f[lo] = f[base + na * sa];
+                f[hi] = f[base + sa];
+            } else {
+                f[lo] = f[base + sa];
+                f[hi] = f[base + na * sa];
+            }
+        });
+    }
+}
+
+/// Sets the normal velocity on the boundary faces (walls, free slip, inflow at time `t`; outflow
+/// faces keep their value) and fills all velocity ghosts, as in the table of the module docs.
+pub fn fill_velocity_ghosts(
+    grid: &StaggeredGrid,
+    bcs: &Boundaries,
+    u: &mut [Vec<f64>; 3],
+    t: f64,
+) {
+    let s = grid.strides();
+    for a in 0..3 {
+        let (sa, na) = (s[a], grid.n[a]);
+        for (m, f) in u.iter_mut().enumerate() {
+            if bcs.is_periodic(a) {
+                for_each_in_plane(grid, a, |base| {
+                    f[base] = f[base + na * sa];
+                    f[base + (na + 1) * sa] = f[base + sa];
+                });
+                continue;
+            }
+            for side in [LOW, HIGH] {
+                let bc = bcs.faces[a][side];
+                // Slots along the axis: the boundary face (normal component) or the ghost cell
+                // (tangential), and the first interior point next to it.
+                let (ghost, inside) = if side == LOW { (0, 1) } else { (na + 1, na) };
+                if m == a {
+                    let normal = match bc {
+                        Boundary::Wall { .. } | Boundary::FreeSlip => Some(0.0),
+                        Boundary::Inflow(v) => Some(v.at(t)[a]),
+                        Boundary::Outflow | Boundary::Periodic => None,
+                    };
+                    for_each_in_plane(grid, a, |base| {
+                        if side == LOW {
+                            // Face 0 is slot 1; face −1 (slot 0) is never read by an update
+                            // of a non-periodic axis and gets the mirror of face 1.
+                            if let Some(un) = normal {
+                                f[base + sa] = un;
+                            }
+                            f[base] = f[base + 2 * sa];
+                        } else if let Some(un) = normal {
+                            f[base + (na + 1) * sa] = un;
+                        }
+                    });
+                } else {
+                    let (factor, wall) = match bc {
+                        Boundary::Wall { velocity } => (-1.0, 2.0 * velocity[m]),
+                        Boundary::Inflow(v) => (-1.0, 2.0 * v.at(t)[m]),
+                        _ => (1.0, 0.0),
+                    };
+                    for_each_in_plane(grid, a, |base| {
+                        f[base + ghost * sa] = wall + factor * f[base + inside * sa];
+                    });
+                }
+            }
+        }
+    }
+}
+
+/// Advances the normal velocity on outflow faces over `dt` [s] by the convective condition
+/// ∂u_n/∂t + U_c ∂u_n/∂n = 0 (U_c > 0: the mean speed out of the face, upwind difference),
+/// then adds one uniform correction to all outflow faces so that the net volume flux through
+/// the boundary is zero (required by the pressure equation with Neumann conditions).
+///
+/// `u` must have its ghosts filled at the old time; boundary faces that are not outflows must
+/// already hold their values at the new time.
+pub fn advance_outflow(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec<f64>; 3], dt: f64) {
+    if !bcs.has_outflow() {
+        return;
+    }
+    let s = grid.strides();
+    let d = grid.spacing;
+    let interior = |a: usize, base: usize| -> bool {
+        // Only the boundary faces of interior cells (no ghost rows) carry flux.
+        let ijk = grid.coordinates(base);
+        (0..3).all(|b| b == a || (1..=grid.n[b]).contains(&ijk[b]))
+    };
+    // Pass 1: convective update of the outflow faces.
+    let mut outflow_area = 0.0; // [m²]
+    for a in 0..3 {
+        if bcs.is_periodic(a) {
+            continue;
+        }
+        let (sa, na) = (s[a], grid.n[a]);
+        let area = grid.cell_volume() / d[a];
+        for side in [LOW, HIGH] {
+            let sign = if side == LOW { -1.0 } else { 1.0 }; // outward normal
+            let face = if side == LOW { sa } else { (na + 1) * sa };
+            let f = &mut u[a];
+            if bcs.faces[a][side] == Boundary::Outflow {
+                // Mean outward speed over this face (serial sum: deterministic).
+                let (mut sum, mut count) = (0.0, 0.0);
+                for_each_in_plane(grid, a, |base| {
+                    if interior(a, base) {
+                        sum += sign * f[base + face];
+                        count += 1.0;
+                    }
+                });
+                let u_c = (sum / count).max(0.0);
+                let next = if side == LOW { 2 * sa } else { na * sa };
+                let c = u_c * dt / d[a];
+                for_each_in_plane(grid, a, |base| {
+                    let (ub, un) = (f[base + face], f[base + next]);
+                    f[base + face] = ub - c * (ub - un);
+                });
+                outflow_area += area * count;
+            }
+        }
+    }
+    // The net volume flux out of the box through all faces [m³ s⁻¹] (serial: deterministic).
+    let mut net_outflux = 0.0;
+    for a in 0..3 {
+        if bcs.is_periodic(a) {
+            continue;
+        }
+        let (sa, na) = (s[a], grid.n[a]);
+        let area = grid.cell_volume() / d[a];
+        for side in [LOW, HIGH] {
+            let sign = if side == LOW { -1.0 } else { 1.0 };
+            let face = if side == LOW { sa } else { (na + 1) * sa };
+            let f = &u[a];
+            for_each_in_plane(grid, a, |base| {
+                if interior(a, base) {
+                    net_outflux += sign * f[base + face] * area;
+                }
+            });
+        }
+    }
+    if outflow_area == 0.0 {
+        return;
+    }
+    // Pass 2: uniform outward correction δ so that the net outward flux is zero.
+    let delta = -net_outflux / outflow_area;
+    for a in 0..3 {
+        let (sa, na) = (s[a], grid.n[a]);
+        for side in [LOW, HIGH] {
+            if bcs.faces[a][side] != Boundary::Outflow {
+                continue;
+            }
+            let sign = if side == LOW { -1.0 } else { 1.0 };
+            let face = if side == LOW { sa } else { (na + 1) * sa };
+            let f = &mut u[a];
+            for_each_in_plane(grid, a, |base| f[base + face] += sign * delta);
+        }
+    }
+}

@@ -1,0 +1,52 @@
+//! Viscous and subgrid stress divergence, ∂σ̃_ab/∂x_b − ∂τ_ab^SGS/∂x_b of [51], [56].
+//!
+//! The molecular stress σ̃_ab = μ (∂u_a/∂x_b + ∂u_b/∂x_a) with constant μ has, on a
+//! divergence-free field, the divergence μ ∇²u_a: [`molecular`] is the 7-point Laplacian.
+//!
+//! The deviatoric SGS stress of the Smagorinsky model is −τ_ab = 2 μ_SGS S̃_ab [56]
+//! (the isotropic part ⅓ τ_kk δ_ab is absorbed in the pressure). With μ_SGS [Pa s] at cell
+//! centres (see [`super::sgs`]), [`subgrid`] evaluates on the a-face c
+//!
+//! ```text
+//! Σ_b δ_b (2 μ_SGS S_ab)
+//!
+//! b = a:  [T(c) − T(c − s_a)] / Δ_a ,   T(c) = 2 μ_SGS[c] (u_a[c + s_a] − u_a[c]) / Δ_a
+//!         (normal stress at the two cell centres either side)
+//! b ≠ a:  [E(c + s_b) − E(c)] / Δ_b ,
+//!         E(c) = μ_e(c) [ (u_a[c] − u_a[c − s_b]) / Δ_b + (u_b[c] − u_b[c − s_a]) / Δ_a ]
+//!         μ_e(c) = mean of μ_SGS over the four cells around the a-b edge of c
+//! ```
+//!
+//! Units: u [m s⁻¹], μ [Pa s], results [N m⁻³] (force per unit volume).
+
+use super::grid::Stencil;
+use super::operators::{laplacian, Velocity};
+
+/// Molecular viscous force density μ ∇²u_a on the a-face `c` [N m⁻³], μ [Pa s].
+#[inline]
+pub fn molecular(st: &Stencil, mu: f64, ua: &[f64], c: usize) -> f64 {
+    mu * laplacian(st, ua, c)
+}
+
+/// SGS force density −∂τ_ab/∂x_b = Σ_b δ_b (2 μ_SGS S_ab) on the a-face `c` [N m⁻³];
+/// `mu_t` is μ_SGS [Pa s] at cell centres with filled ghosts.
+#[inline]
+pub fn subgrid(st: &Stencil, u: Velocity, mu_t: &[f64], a: usize, c: usize) -> f64 {
+    let ua = u[a];
+    let sa = st.s[a];
+    let normal = |e: usize| 2.0 * mu_t[e] * (ua[e + sa] - ua[e]) * st.inv_d[a];
+    let mut sum = (normal(c) - normal(c - sa)) * st.inv_d[a];
+    for b in 0..3 {
+        if b == a {
+            continue;
+        }
+        let ub = u[b];
+        let sb = st.s[b];
+        let shear = |e: usize| {
+            let mu_e = 0.25 * (mu_t[e] + mu_t[e - sa] + mu_t[e - sb] + mu_t[e - sa - sb]);
+            mu_e * ((ua[e] - ua[e - sb]) * st.inv_d[b] + (ub[e] - ub[e - sa]) * st.inv_d[a])
+        };
+        sum += (shear(c + sb) - shear(c)) * st.inv_d[b];
+    }
+    sum
+}

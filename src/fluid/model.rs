@@ -1,0 +1,363 @@
+//! `Fluid`: the grid, the boundaries, the physical parameters, the state and the workspace of
+//! the flow solver, with its accessors. The time step itself is in [`super::step`].
+
+use super::boundary::{fill_scalar_ghosts, fill_velocity_ghosts, Boundaries};
+use super::forcing::DrivingPressureGradient;
+use super::grid::{IndexBox, StaggeredGrid, Stencil};
+use super::operators::{cell_velocity, divergence};
+use super::pressure::{PressureFields, Projection};
+use super::sgs::Smagorinsky;
+use super::timestep::{max_speed, stable_time_step, TimeStepLimits};
+use glam::DVec3;
+use serde::{Deserialize, Serialize};
+
+/// Physical and numerical parameters of the water.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct FluidParameters {
+    /// Density of water ρ_w [kg m⁻³].
+    pub density: f64,
+    /// Kinematic viscosity of water ν = μ/ρ_w [m² s⁻¹].
+    pub kinematic_viscosity: f64,
+    /// Gravitational acceleration g [m s⁻²] (riprap: (0, 0, −9.81), z up).
+    pub gravity: DVec3,
+    /// The Smagorinsky model [56]-[58], or `None` for no SGS model (DNS or laminar flow).
+    pub smagorinsky: Option<Smagorinsky>,
+    /// A uniform driving pressure gradient, possibly oscillating in time.
+    pub driving_pressure_gradient: DrivingPressureGradient,
+    /// Limits of the adaptive time step.
+    pub time_step: TimeStepLimits,
+}
+
+impl FluidParameters {
+    /// Water at 20 °C: ρ_w = 998.2 kg m⁻³, ν = 1.004e-6 m² s⁻¹, g = 9.81 m s⁻² downwards,
+    /// Smagorinsky C_s = 0.1 with van Driest damping, no driving gradient.
+    pub fn water() -> FluidParameters {
+        FluidParameters {
+            density: 998.2,
+            kinematic_viscosity: 1.004e-6,
+            gravity: DVec3::new(0.0, 0.0, -9.81),
+            smagorinsky: Some(Smagorinsky::default()),
+            driving_pressure_gradient: DrivingPressureGradient::None,
+            time_step: TimeStepLimits::default(),
+        }
+    }
+
+    /// A laminar test fluid: density `rho` [kg m⁻³], kinematic viscosity `nu` [m² s⁻¹],
+    /// no gravity, no SGS model, no driving gradient.
+    pub fn laminar(rho: f64, nu: f64) -> FluidParameters {
+        FluidParameters {
+            density: rho,
+            kinematic_viscosity: nu,
+            gravity: DVec3::ZERO,
+            smagorinsky: None,
+            driving_pressure_gradient: DrivingPressureGradient::None,
+            time_step: TimeStepLimits::default(),
+        }
+    }
+
+    /// Dynamic viscosity μ = ρ_w ν [Pa s].
+    pub fn dynamic_viscosity(&self) -> f64 {
+        self.density * self.kinematic_viscosity
+    }
+}
+
+/// Everything that evolves: with the grid, boundaries and parameters this is a complete
+/// restart point, Adams-Bashforth history included. All fields are padded (see
+/// [`super::grid`]); velocity ghosts are filled.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct FluidState {
+    /// Time t [s].
+    pub time: f64,
+    /// Steps taken.
+    pub steps: u64,
+    /// The last time step Δtⁿ⁻¹ [s]; 0 before the first step (which is then forward Euler).
+    pub previous_dt: f64,
+    /// Velocity (u, v, w) on the x-, y-, z-faces [m s⁻¹].
+    pub velocity: [Vec<f64>; 3],
+    /// Pressure less the hydrostatic pressure of water, pⁿ [Pa], cell centres.
+    pub pressure: Vec<f64>,
+    /// pⁿ⁻¹ [Pa], for the extrapolation of the variable-density splitting.
+    pub previous_pressure: Vec<f64>,
+    /// Mixture density ρ̄ [kg m⁻³] at cell centres [53] (set by the coupling; ρ_w without it).
+    pub mixture_density: Vec<f64>,
+    /// External force density F [N m⁻³] on the faces (the solid-liquid interaction of [51]).
+    pub body_force: [Vec<f64>; 3],
+    /// Adams-Bashforth history: the advection-diffusion tendency Hⁿ⁻¹ [m s⁻²] on the faces.
+    pub previous_tendency: [Vec<f64>; 3],
+}
+
+/// The flow solver: state, configuration and a workspace allocated once.
+pub struct Fluid {
+    pub(super) grid: StaggeredGrid,
+    pub(super) boundaries: Boundaries,
+    pub(super) parameters: FluidParameters,
+    pub(super) state: FluidState,
+    pub(super) stencil: Stencil,
+    /// Faces of each component that the time step updates (not boundary faces).
+    pub(super) regions: [IndexBox; 3],
+    /// Hⁿ [m s⁻²], this step's tendency.
+    pub(super) tendency: [Vec<f64>; 3],
+    /// μ_SGS [Pa s] at cell centres (zero without the model).
+    pub(super) eddy_viscosity: Vec<f64>,
+    /// pⁿ⁺¹ being computed [Pa].
+    pub(super) next_pressure: Vec<f64>,
+    pub(super) projection: Projection,
+}
+
+/// Cell-centred copies of the fields for output (compact, nx·ny·nz, i fastest: the order of
+/// `io::vtk::write_image`).
+#[derive(Clone, Debug, Default)]
+pub struct CellFields {
+    /// Velocity at cell centres, the mean of the two faces [m s⁻¹].
+    pub velocity: Vec<DVec3>,
+    /// Pressure less hydrostatic [Pa].
+    pub pressure: Vec<f64>,
+    /// Mixture density ρ̄ [kg m⁻³].
+    pub mixture_density: Vec<f64>,
+    /// μ_SGS [Pa s].
+    pub eddy_viscosity: Vec<f64>,
+    /// Discrete divergence D u [s⁻¹].
+    pub divergence: Vec<f64>,
+}
+
+impl Fluid {
+    /// A fluid at rest, of uniform density ρ_w, at t = 0.
+    pub fn new(
+        grid: StaggeredGrid,
+        boundaries: Boundaries,
+        parameters: FluidParameters,
+    ) -> Result<Fluid, String> {
+        boundaries.validate()?;
+        if !(parameters.density > 0.0 && parameters.kinematic_viscosity >= 0.0) {
+            return Err("fluid density must be positive and viscosity non-negative".into());
+        }
+        let zero3 = || std::array::from_fn(|_| grid.field());
+        let state = FluidState {
+            time: 0.0,
+            steps: 0,
+            previous_dt: 0.0,
+            velocity: zero3(),
+            pressure: grid.field(),
+            previous_pressure: grid.field(),
+            mixture_density: vec![parameters.density; grid.len()],
+            body_force: zero3(),
+            previous_tendency: zero3(),
+        };
+        let regions = std::array::from_fn(|m| {
+            std::array::from_fn(|a| {
+                let lo = if a == m && !boundaries.is_periodic(a) {
+                    2
+                } else {
+                    1
+                };
+                lo..grid.n[a] + 1
+            })
+        });
+        let mut fluid = Fluid {
+            grid,
+            boundaries,
+            parameters,
+            state,
+            stencil: Stencil::new(&grid),
+            regions,
+            tendency: zero3(),
+            eddy_viscosity: grid.field(),
+            next_pressure: grid.field(),
+            projection: Projection::new(&grid, &boundaries),
+        };
+        fluid.fill_ghosts();
+        Ok(fluid)
+    }
+
+    /// The grid.
+    pub fn grid(&self) -> &StaggeredGrid {
+        &self.grid
+    }
+
+    /// The boundary conditions.
+    pub fn boundaries(&self) -> &Boundaries {
+        &self.boundaries
+    }
+
+    /// The parameters.
+    pub fn parameters(&self) -> &FluidParameters {
+        &self.parameters
+    }
+
+    /// Mutable parameters (e.g. to change the driving gradient or the time-step bound).
+    pub fn parameters_mut(&mut self) -> &mut FluidParameters {
+        &mut self.parameters
+    }
+
+    /// Time t [s].
+    pub fn time(&self) -> f64 {
+        self.state.time
+    }
+
+    /// Steps taken.
+    pub fn steps(&self) -> u64 {
+        self.state.steps
+    }
+
+    /// The whole state (for checkpoints).
+    pub fn state(&self) -> &FluidState {
+        &self.state
+    }
+
+    /// Restores a state saved by [`Fluid::state`] on the same grid; the run then continues
+    /// bit for bit.
+    pub fn restore(&mut self, state: FluidState) -> Result<(), String> {
+        let n = self.grid.len();
+        let ok = state.velocity.iter().all(|v| v.len() == n)
+            && state.body_force.iter().all(|v| v.len() == n)
+            && state.previous_tendency.iter().all(|v| v.len() == n)
+            && state.pressure.len() == n
+            && state.previous_pressure.len() == n
+            && state.mixture_density.len() == n;
+        if !ok {
+            return Err(format!("fluid state does not match the grid ({n} points)"));
+        }
+        self.state = state;
+        Ok(())
+    }
+
+    /// Velocity components (u, v, w) on their faces, padded [m s⁻¹].
+    pub fn velocity(&self) -> [&[f64]; 3] {
+        let v = &self.state.velocity;
+        [&v[0], &v[1], &v[2]]
+    }
+
+    /// Pressure less hydrostatic, cell centres, padded [Pa].
+    pub fn pressure(&self) -> &[f64] {
+        &self.state.pressure
+    }
+
+    /// Mixture density ρ̄ at cell centres, padded [kg m⁻³].
+    pub fn mixture_density(&self) -> &[f64] {
+        &self.state.mixture_density
+    }
+
+    /// Mutable mixture density (interior cells; ghosts are refilled at each step) [kg m⁻³].
+    /// Values must be positive.
+    pub fn mixture_density_mut(&mut self) -> &mut [f64] {
+        &mut self.state.mixture_density
+    }
+
+    /// Mutable external force density F on the faces of each component [N m⁻³].
+    pub fn body_force_mut(&mut self) -> &mut [Vec<f64>; 3] {
+        &mut self.state.body_force
+    }
+
+    /// μ_SGS at cell centres from the last step [Pa s].
+    pub fn eddy_viscosity(&self) -> &[f64] {
+        &self.eddy_viscosity
+    }
+
+    /// Sets the velocity from a function of position, evaluated on each face for its own
+    /// component, then fills ghosts. The field is not projected: see [`Fluid::project`].
+    pub fn set_velocity(&mut self, f: impl Fn(DVec3) -> DVec3) {
+        let g = self.grid;
+        for (a, ua) in self.state.velocity.iter_mut().enumerate() {
+            for (c, x) in ua.iter_mut().enumerate() {
+                *x = f(g.position(c, Some(a)))[a];
+            }
+        }
+        self.fill_ghosts();
+    }
+
+    /// Sets ρ̄ from a function of position (cell centres) [kg m⁻³].
+    pub fn set_mixture_density(&mut self, f: impl Fn(DVec3) -> f64) {
+        let g = self.grid;
+        for (c, x) in self.state.mixture_density.iter_mut().enumerate() {
+            *x = f(g.position(c, None));
+        }
+        fill_scalar_ghosts(&g, &self.boundaries, &mut self.state.mixture_density);
+    }
+
+    /// Makes the current velocity divergence-free (constant-coefficient projection; pressure
+    /// and history unchanged). For initial conditions.
+    pub fn project(&mut self) {
+        let rho = vec![1.0; self.grid.len()];
+        let zero = self.grid.field();
+        let mut scratch = self.grid.field();
+        self.projection.project(
+            &self.grid,
+            &self.boundaries,
+            &self.regions,
+            &mut self.state.velocity,
+            PressureFields {
+                current: &zero,
+                previous: &zero,
+                next: &mut scratch,
+            },
+            &rho,
+            1.0,
+            0.0,
+        );
+        self.fill_ghosts();
+    }
+
+    /// Refills the ghosts of velocity (at the current time) and mixture density.
+    pub fn fill_ghosts(&mut self) {
+        let t = self.state.time;
+        fill_velocity_ghosts(&self.grid, &self.boundaries, &mut self.state.velocity, t);
+        fill_scalar_ghosts(
+            &self.grid,
+            &self.boundaries,
+            &mut self.state.mixture_density,
+        );
+    }
+
+    /// The largest |D u| over the cells [s⁻¹].
+    pub fn max_divergence(&self) -> f64 {
+        let (g, st, u) = (&self.grid, &self.stencil, self.velocity());
+        let mut m = 0.0f64;
+        for k in 0..g.n[2] {
+            for j in 0..g.n[1] {
+                for i in 0..g.n[0] {
+                    m = m.max(divergence(st, u, g.cell(i, j, k)).abs());
+                }
+            }
+        }
+        m
+    }
+
+    /// The stable time step of [`super::timestep`] for the current state [s].
+    pub fn stable_time_step(&self) -> f64 {
+        let u = self.velocity();
+        let speed = std::array::from_fn(|a| max_speed(&self.grid, a, u[a]));
+        let rho = &self.state.mixture_density;
+        let mut nu_t = 0.0f64;
+        if self.parameters.smagorinsky.is_some() {
+            for k in self.grid.interior(2) {
+                for j in self.grid.interior(1) {
+                    for i in self.grid.interior(0) {
+                        let c = self.grid.index(i, j, k);
+                        nu_t = nu_t.max(self.eddy_viscosity[c] / rho[c]);
+                    }
+                }
+            }
+        }
+        let nu = self.parameters.kinematic_viscosity + nu_t;
+        stable_time_step(&self.grid, speed, nu, &self.parameters.time_step)
+    }
+
+    /// Cell-centred copies of the fields, for output.
+    pub fn cell_fields(&self) -> CellFields {
+        let (g, st, u) = (&self.grid, &self.stencil, self.velocity());
+        let mut out = CellFields::default();
+        for k in 0..g.n[2] {
+            for j in 0..g.n[1] {
+                for i in 0..g.n[0] {
+                    let c = g.cell(i, j, k);
+                    out.velocity.push(cell_velocity(st, u, c));
+                    out.pressure.push(self.state.pressure[c]);
+                    out.mixture_density.push(self.state.mixture_density[c]);
+                    out.eddy_viscosity.push(self.eddy_viscosity[c]);
+                    out.divergence.push(divergence(st, u, c));
+                }
+            }
+        }
+        out
+    }
+}

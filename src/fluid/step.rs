@@ -1,0 +1,137 @@
+//! The fractional step with second-order Adams-Bashforth for advection and diffusion
+//! (METHOD.md [50][51], numerics of [59]-[63], fluid part only).
+//!
+//! On each face of component a, with Hⁿ the advection-diffusion tendency [m s⁻²]
+//!
+//! ```text
+//! Hⁿ   = −A_a(uⁿ) + ( μ ∇²u_aⁿ + Σ_b δ_b(2 μ_SGS S_ab)ⁿ ) / ρ̄_f                [51][56]
+//! B    = ( −∂P/∂x_a(tⁿ + Δt/2) + (ρ̄_f − ρ_w) g_a + F_a ) / ρ̄_f                [51]
+//! u*   = uⁿ + Δt [ (1 + r/2) Hⁿ − (r/2) Hⁿ⁻¹ ] + Δt B ,   r = Δtⁿ / Δtⁿ⁻¹       (AB2)
+//! uⁿ⁺¹ = u* − Δt (1/ρ̄_f) G pⁿ⁺¹   with D uⁿ⁺¹ = 0                            (projection)
+//! ```
+//!
+//! The first step (no history) is forward Euler (r = 0). A_a is [`super::advection`], the
+//! viscous terms [`super::diffusion`], the body forces [`super::forcing`] and the projection,
+//! with the variable-density splitting of Dodd & Ferrante, [`super::pressure`]. The driving
+//! gradient is a known function of time and is taken at the midpoint, which keeps the
+//! scheme second order for the oscillatory drive; ρ̄ and F are those set before the step.
+//!
+//! Boundary conditions: the normal velocity on boundary faces and all ghosts are set at
+//! tⁿ⁺¹ before the projection; the projection moves only interior faces (Neumann pressure).
+
+use super::advection::advection;
+use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts};
+use super::diffusion::{molecular, subgrid};
+use super::forcing::body_acceleration;
+use super::grid::update_region;
+use super::model::Fluid;
+use super::operators::interp_to_face;
+use super::pressure::PressureFields;
+use super::sgs::eddy_viscosity;
+
+impl Fluid {
+    /// Advances the flow by `dt` [s]. Allocation-free; deterministic for any number of threads.
+    pub fn step(&mut self, dt: f64) {
+        assert!(dt > 0.0 && dt.is_finite(), "fluid time step must be positive");
+        let grid = self.grid;
+        let bcs = self.boundaries;
+        let par = self.parameters;
+        let st = self.stencil;
+        let t = self.state.time;
+        let first = self.state.previous_dt == 0.0;
+        let r = if first {
+            0.0
+        } else {
+            dt / self.state.previous_dt
+        };
+        let rho_w = par.density;
+        let mu = par.dynamic_viscosity();
+        let state = &mut self.state;
+
+        // The coupling may have changed ρ̄ in the interior.
+        fill_scalar_ghosts(&grid, &bcs, &mut state.mixture_density);
+        let rho = &state.mixture_density[..];
+
+        // μ_SGS [57][58] from uⁿ.
+        if let Some(model) = &par.smagorinsky {
+            let u = [&state.velocity[0][..], &state.velocity[1][..], &state.velocity[2][..]];
+            eddy_viscosity(&grid, &bcs, model, mu, u, rho, &mut self.eddy_viscosity);
+        }
+
+        // Hⁿ: advection and viscous stress divergence.
+        {
+            let u = [&state.velocity[0][..], &state.velocity[1][..], &state.velocity[2][..]];
+            let mu_t = &self.eddy_viscosity[..];
+            let sgs = par.smagorinsky.is_some();
+            for (a, h) in self.tendency.iter_mut().enumerate() {
+                update_region(&grid, &self.regions[a], h, |c, _| {
+                    let rho_f = interp_to_face(&st, a, rho, c);
+                    let mut viscous = molecular(&st, mu, u[a], c);
+                    if sgs {
+                        viscous += subgrid(&st, u, mu_t, a, c);
+                    }
+                    -advection(&st, u, a, c) + viscous / rho_f
+                });
+            }
+        }
+
+        // u* = uⁿ + Δt [AB2(H) + B].
+        let drive = par
+            .driving_pressure_gradient
+            .force_density(t + 0.5 * dt, rho_w);
+        let (c_now, c_old) = (1.0 + 0.5 * r, -0.5 * r);
+        for a in 0..3 {
+            let (h, h_old, f) = (
+                &self.tendency[a],
+                &state.previous_tendency[a],
+                &state.body_force[a],
+            );
+            let g_a = par.gravity[a];
+            update_region(&grid, &self.regions[a], &mut state.velocity[a], |c, old| {
+                let rho_f = interp_to_face(&st, a, rho, c);
+                let ab2 = if first {
+                    h[c]
+                } else {
+                    c_now * h[c] + c_old * h_old[c]
+                };
+                let b = body_acceleration(drive[a], rho_f, rho_w, g_a, f[c]);
+                old + dt * (ab2 + b)
+            });
+        }
+
+        // Boundary values at tⁿ⁺¹, then the projection.
+        fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
+        advance_outflow(&grid, &bcs, &mut state.velocity, dt);
+        self.projection.project(
+            &grid,
+            &bcs,
+            &self.regions,
+            &mut state.velocity,
+            PressureFields {
+                current: &state.pressure,
+                previous: &state.previous_pressure,
+                next: &mut self.next_pressure,
+            },
+            &state.mixture_density,
+            dt,
+            r,
+        );
+        fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
+
+        // Rotate: pⁿ⁻¹ ← pⁿ ← pⁿ⁺¹, Hⁿ⁻¹ ← Hⁿ.
+        std::mem::swap(&mut state.previous_pressure, &mut state.pressure);
+        std::mem::swap(&mut state.pressure, &mut self.next_pressure);
+        std::mem::swap(&mut state.previous_tendency, &mut self.tendency);
+        state.previous_dt = dt;
+        state.time = t + dt;
+        state.steps += 1;
+    }
+
+    /// Takes one step of the stable size of [`Fluid::stable_time_step`], not past `t_end` [s];
+    /// returns the step taken [s].
+    pub fn step_adaptive(&mut self, t_end: f64) -> f64 {
+        let dt = self.stable_time_step().min(t_end - self.state.time);
+        self.step(dt);
+        dt
+    }
+}
