@@ -29,7 +29,10 @@ fn models() -> [(&'static str, ContactModel); 2] {
     [
         (
             "Voigt Hertz",
-            ContactModel::Voigt { spring: NormalSpring::Hertz, damping: Damping::Restitution },
+            ContactModel::Voigt {
+                spring: NormalSpring::Hertz,
+                damping: Damping::Restitution,
+            },
         ),
         ("Hertz-Mindlin", ContactModel::HertzMindlin),
     ]
@@ -53,10 +56,28 @@ fn check(label: &str, (name, model): (&str, ContactModel), r0: f64, v0: f64, r1:
     let mut dem = dem(mat, model, open_box(1.0), dt);
     if wall {
         dem.walls.push(plane_wall(Vec3::ZERO, Vec3::X));
-        dem.add_sphere(Vec3::new(r0 + gap, 0.0, 0.0), Vec3::new(-v0, 0.0, 0.0), Vec3::ZERO, r0, 0);
+        dem.add_sphere(
+            Vec3::new(r0 + gap, 0.0, 0.0),
+            Vec3::new(-v0, 0.0, 0.0),
+            Vec3::ZERO,
+            r0,
+            0,
+        );
     } else {
-        dem.add_sphere(Vec3::new(-r0 - 0.5 * gap, 0.0, 0.0), Vec3::new(v0, 0.0, 0.0), Vec3::ZERO, r0, 0);
-        dem.add_sphere(Vec3::new(r1 + 0.5 * gap, 0.0, 0.0), Vec3::new(v1, 0.0, 0.0), Vec3::ZERO, r1, 0);
+        dem.add_sphere(
+            Vec3::new(-r0 - 0.5 * gap, 0.0, 0.0),
+            Vec3::new(v0, 0.0, 0.0),
+            Vec3::ZERO,
+            r0,
+            0,
+        );
+        dem.add_sphere(
+            Vec3::new(r1 + 0.5 * gap, 0.0, 0.0),
+            Vec3::new(v1, 0.0, 0.0),
+            Vec3::ZERO,
+            r1,
+            0,
+        );
     }
     let imp = run_impact(dem, 2.0 * th.duration, 10_000);
     let duration = imp.end_overlap - imp.start;
@@ -73,12 +94,30 @@ fn check(label: &str, (name, model): (&str, ContactModel), r0: f64, v0: f64, r1:
         imp.max_force,
         imp.restitution(),
     );
-    assert!(e_t.abs() < TOL, "{label} {name}: duration {duration} vs {}", th.duration);
-    assert!(e_d.abs() < TOL, "{label} {name}: δ_max {} vs {}", imp.max_overlap, th.max_overlap);
-    assert!(e_f.abs() < TOL, "{label} {name}: F_max {} vs {}", imp.max_force, th.max_force);
+    assert!(
+        e_t.abs() < TOL,
+        "{label} {name}: duration {duration} vs {}",
+        th.duration
+    );
+    assert!(
+        e_d.abs() < TOL,
+        "{label} {name}: δ_max {} vs {}",
+        imp.max_overlap,
+        th.max_overlap
+    );
+    assert!(
+        e_f.abs() < TOL,
+        "{label} {name}: F_max {} vs {}",
+        imp.max_force,
+        th.max_force
+    );
     // Without damping the impact is elastic; 1e-3 is ten times the O((Δt/t_c)²) energy error
     // of Verlet over one contact.
-    assert!((imp.restitution() - 1.0).abs() < 1e-3, "{label} {name}: e = {}", imp.restitution());
+    assert!(
+        (imp.restitution() - 1.0).abs() < 1e-3,
+        "{label} {name}: e = {}",
+        imp.restitution()
+    );
 }
 
 #[test]

@@ -29,7 +29,10 @@ fn trajectory(zeta: f64, tau: f64) -> (f64, f64) {
     } else if zeta < 1.0 {
         let s = (1.0 - zeta * zeta).sqrt();
         let e = (-zeta * tau).exp();
-        (e * (s * tau).sin() / s, e * ((s * tau).cos() - zeta / s * (s * tau).sin()))
+        (
+            e * (s * tau).sin() / s,
+            e * ((s * tau).cos() - zeta / s * (s * tau).sin()),
+        )
     } else {
         let q = (zeta * zeta - 1.0).sqrt();
         let (r1, r2) = (-zeta + q, -zeta - q);
@@ -82,11 +85,19 @@ fn closed_form(zeta: f64) -> (f64, f64) {
 /// for the slow convergence of the grid bracketing near ζ = 1.
 #[test]
 fn crate_closed_form_matches_independent_one() {
-    for zeta in [0.0, 0.05, 0.1, 0.3, 0.5, 0.7071, 0.9, 0.999, 1.0, 1.001, 1.5, 3.0] {
+    for zeta in [
+        0.0, 0.05, 0.1, 0.3, 0.5, 0.7071, 0.9, 0.999, 1.0, 1.001, 1.5, 3.0,
+    ] {
         let (tc, e) = closed_form(zeta);
         let (tc_crate, e_crate) = damping::linear_contact(zeta);
-        assert!((tc - tc_crate).abs() < 1e-9 * tc, "ζ = {zeta}: ω₀t_c {tc} vs crate {tc_crate}");
-        assert!((e - e_crate).abs() < 1e-9, "ζ = {zeta}: e {e} vs crate {e_crate}");
+        assert!(
+            (tc - tc_crate).abs() < 1e-9 * tc,
+            "ζ = {zeta}: ω₀t_c {tc} vs crate {tc_crate}"
+        );
+        assert!(
+            (e - e_crate).abs() < 1e-9,
+            "ζ = {zeta}: e {e} vs crate {e_crate}"
+        );
     }
     // Critical damping: τ_c = 2, e = e^{-2} (derived in the header).
     let (tc, e) = closed_form(1.0);
@@ -116,7 +127,10 @@ fn collide(choice: &Choice, wall: bool, steps: f64) -> (f64, f64, f64, f64) {
         Choice::Ratio(_) => (0.5, Damping::Critical),
     };
     let mat = material(DENSITY, 1e8, 0.3, 0.0, e_target);
-    let model = ContactModel::Voigt { spring: NormalSpring::Linear { stiffness: K }, damping };
+    let model = ContactModel::Voigt {
+        spring: NormalSpring::Linear { stiffness: K },
+        damping,
+    };
     let m = sphere_mass(DENSITY, R);
     let m_star = if wall { m } else { 0.5 * m };
     let w0 = (K / m_star).sqrt();
@@ -130,13 +144,36 @@ fn collide(choice: &Choice, wall: bool, steps: f64) -> (f64, f64, f64, f64) {
     let gap = 10.37 * dt * v;
     if wall {
         d.walls.push(plane_wall(Vec3::ZERO, Vec3::Z));
-        d.add_sphere(Vec3::new(0.0, 0.0, R + gap), Vec3::new(0.0, 0.0, -v), Vec3::ZERO, R, 0);
+        d.add_sphere(
+            Vec3::new(0.0, 0.0, R + gap),
+            Vec3::new(0.0, 0.0, -v),
+            Vec3::ZERO,
+            R,
+            0,
+        );
     } else {
-        d.add_sphere(Vec3::new(0.0, -R - 0.5 * gap, 0.0), Vec3::new(0.0, 0.5 * v, 0.0), Vec3::ZERO, R, 0);
-        d.add_sphere(Vec3::new(0.0, R + 0.5 * gap, 0.0), Vec3::new(0.0, -0.5 * v, 0.0), Vec3::ZERO, R, 0);
+        d.add_sphere(
+            Vec3::new(0.0, -R - 0.5 * gap, 0.0),
+            Vec3::new(0.0, 0.5 * v, 0.0),
+            Vec3::ZERO,
+            R,
+            0,
+        );
+        d.add_sphere(
+            Vec3::new(0.0, R + 0.5 * gap, 0.0),
+            Vec3::new(0.0, -0.5 * v, 0.0),
+            Vec3::ZERO,
+            R,
+            0,
+        );
     }
     let imp = run_impact(d, 2.0 * std::f64::consts::PI / w0, 100_000);
-    (zeta, (imp.end_force - imp.start) * w0, imp.restitution(), w0)
+    (
+        zeta,
+        (imp.end_force - imp.start) * w0,
+        imp.restitution(),
+        w0,
+    )
 }
 
 /// Restitution and duration within 1 % of the closed form for ζ from 0 to 1.5.
@@ -167,7 +204,11 @@ fn dem_collisions_match_closed_form() {
             eprintln!(
                 "{} ζ = {zeta:.4}: ω₀t_c {tc:.5} vs {tc_ref:.5} (err {err_t:+.2e}), e {e:.5} vs \
                  {e_ref:.5} (err {err_e:+.2e})",
-                if wall { "sphere-wall  " } else { "sphere-sphere" }
+                if wall {
+                    "sphere-wall  "
+                } else {
+                    "sphere-sphere"
+                }
             );
             assert!(err_t.abs() < 0.01, "ζ = {zeta}: duration {tc} vs {tc_ref}");
             assert!(err_e.abs() < 0.01, "ζ = {zeta}: restitution {e} vs {e_ref}");
@@ -176,7 +217,10 @@ fn dem_collisions_match_closed_form() {
     // Critical damping is ζ = 1 exactly and rebounds with e^{-2}.
     let (zeta, _, e, _) = collide(&Choice::Critical, false, STEPS_PER_PERIOD);
     assert_eq!(zeta, 1.0);
-    assert!((e - (-2.0f64).exp()).abs() < 0.01 * (-2.0f64).exp(), "critical: e = {e}");
+    assert!(
+        (e - (-2.0f64).exp()).abs() < 0.01 * (-2.0f64).exp(),
+        "critical: e = {e}"
+    );
 }
 
 /// The errors vanish as Δt → 0, at least at first order: dividing the step by 4 divides the
@@ -192,13 +236,22 @@ fn errors_converge_at_first_order() {
             let (zeta, tc, e, _) = collide(&c, false, steps);
             let (tc_ref, e_ref) = closed_form(zeta);
             let err = ((tc - tc_ref) / tc_ref, (e - e_ref) / e_ref);
-            eprintln!("ζ = {zeta:.4}, {steps} steps a period: duration err {:+.2e}, e err {:+.2e}", err.0, err.1);
+            eprintln!(
+                "ζ = {zeta:.4}, {steps} steps a period: duration err {:+.2e}, e err {:+.2e}",
+                err.0, err.1
+            );
             errors.push(err);
         }
         for k in 1..errors.len() {
             let (a, b) = (errors[k - 1], errors[k]);
-            assert!(b.0.abs() < a.0.abs() / 3.0, "duration error does not converge: {errors:?}");
-            assert!(b.1.abs() < a.1.abs() / 3.0, "restitution error does not converge: {errors:?}");
+            assert!(
+                b.0.abs() < a.0.abs() / 3.0,
+                "duration error does not converge: {errors:?}"
+            );
+            assert!(
+                b.1.abs() < a.1.abs() / 3.0,
+                "restitution error does not converge: {errors:?}"
+            );
         }
     }
 }

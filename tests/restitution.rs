@@ -45,7 +45,10 @@ fn elastic_duration(spring: NormalSpring, r_star: f64, m_star: f64, v: f64) -> f
 /// Measured restitution of sphere 0 (radius r0) on sphere 1 (radius r1) or on a plane (r1 = ∞).
 fn measured(spring: NormalSpring, e: f64, v: f64, r0: f64, r1: f64) -> f64 {
     let mat = material(DENSITY, YOUNG, POISSON, 0.4, e);
-    let model = ContactModel::Voigt { spring, damping: Damping::Restitution };
+    let model = ContactModel::Voigt {
+        spring,
+        damping: Damping::Restitution,
+    };
     let m_star = harmonic(sphere_mass(DENSITY, r0), sphere_mass(DENSITY, r1));
     let tc = elastic_duration(spring, harmonic(r0, r1), m_star, v);
     let dt = tc / STEPS_PER_CONTACT;
@@ -70,7 +73,10 @@ fn check_spring(name: &str, spring: NormalSpring) {
     for k in 2..=10 {
         let e = k as f64 / 10.0;
         for (what, r1) in [("pair", 0.015), ("wall", f64::INFINITY)] {
-            let got: Vec<f64> = SPEEDS.iter().map(|&v| measured(spring, e, v, 0.01, r1)).collect();
+            let got: Vec<f64> = SPEEDS
+                .iter()
+                .map(|&v| measured(spring, e, v, 0.01, r1))
+                .collect();
             let errs: Vec<f64> = got.iter().map(|g| (g - e) / e).collect();
             eprintln!(
                 "{name:>22} {what}: e = {e:.1}: measured {:.5} at {} m/s, {:.5} at {} m/s \
@@ -78,7 +84,10 @@ fn check_spring(name: &str, spring: NormalSpring) {
                 got[0], SPEEDS[0], got[1], SPEEDS[1], errs[0], errs[1]
             );
             for (g, err) in got.iter().zip(&errs) {
-                assert!(err.abs() < 0.01, "{name} {what}: target e = {e}, measured {g}");
+                assert!(
+                    err.abs() < 0.01,
+                    "{name} {what}: target e = {e}, measured {g}"
+                );
                 worst = worst.max(err.abs());
             }
         }
@@ -88,12 +97,22 @@ fn check_spring(name: &str, spring: NormalSpring) {
 
 #[test]
 fn linear_spring() {
-    check_spring("linear", NormalSpring::Linear { stiffness: K_LINEAR });
+    check_spring(
+        "linear",
+        NormalSpring::Linear {
+            stiffness: K_LINEAR,
+        },
+    );
 }
 
 #[test]
 fn apparent_linear_hertz_spring() {
-    check_spring("apparent linear Hertz", NormalSpring::ApparentLinearHertz { reference_velocity: V_REF });
+    check_spring(
+        "apparent linear Hertz",
+        NormalSpring::ApparentLinearHertz {
+            reference_velocity: V_REF,
+        },
+    );
 }
 
 #[test]

@@ -139,10 +139,19 @@ fn syntax_error_names_line_and_key() {
 
 #[test]
 fn unknown_top_level_key() {
+    // Before any table header: a top-level key.
+    let text = format!("solver = \"fast\"\n{BASE}");
+    refused_in(
+        &text,
+        "solver",
+        "solver",
+        &["unknown field `solver`", "expected one of"],
+    );
+    // After [[material]], the same line belongs to the material.
     refused(
         "\nsolver = \"fast\"\n",
         "solver",
-        "solver",
+        "material[0].solver",
         &["unknown field `solver`"],
     );
     refused(

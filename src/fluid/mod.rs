@@ -46,6 +46,7 @@ pub mod pressure;
 pub mod sgs;
 pub mod step;
 pub mod timestep;
+pub mod validation;
 
 pub use boundary::{Boundaries, Boundary, InflowVelocity};
 pub use forcing::DrivingPressureGradient;

@@ -12,8 +12,7 @@
 //! 1 + (λΔt)⁴/4 per step); C_adv = 0.3 bounds that growth by 0.2 % per step, which the
 //! viscosity of resolved flows removes.
 
-use super::grid::StaggeredGrid;
-use rayon::prelude::*;
+use super::grid::{reduce_chunks, StaggeredGrid};
 use serde::{Deserialize, Serialize};
 
 /// Limits of the adaptive time step.
@@ -46,11 +45,19 @@ pub fn max_speed(grid: &StaggeredGrid, a: usize, ua: &[f64]) -> f64 {
         1..grid.n[1] + 1 + (a == 1) as usize,
         1..grid.n[2] + 1 + (a == 2) as usize,
     );
-    ua.par_chunks(p[0])
-        .enumerate()
-        .filter(|(row, _)| rj.contains(&(row % p[1])) && rk.contains(&(row / p[1])))
-        .map(|(_, line)| line[1..hi_i].iter().fold(0.0f64, |m, x| m.max(x.abs())))
-        .reduce(|| 0.0, f64::max)
+    reduce_chunks(
+        ua,
+        p[0],
+        0.0,
+        |row, line| {
+            if rj.contains(&(row % p[1])) && rk.contains(&(row / p[1])) {
+                line[1..hi_i].iter().fold(0.0f64, |m, x| m.max(x.abs()))
+            } else {
+                0.0
+            }
+        },
+        f64::max,
+    )
 }
 
 /// The stable time step [s] for face speeds `max_speed[a]` [m s⁻¹] and the largest kinematic

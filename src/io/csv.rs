@@ -3,8 +3,9 @@
 //! Each row goes to the file in a single write as soon as it is given, so a
 //! crashed run keeps every row it produced (no fsync per row: that would cost
 //! far more than the row, and the OS flushes the page cache anyway). Numbers
-//! use Rust's `{}` formatting, the shortest text that parses back to the very
-//! same f64, so [`read_csv`] returns exactly what was written.
+//! use Rust's `{:?}` formatting, the shortest text that parses back to the very
+//! same f64 (with an exponent for very large or small values, which `{}` would
+//! spell out digit by digit), so [`read_csv`] returns exactly what was written.
 
 use super::{invalid_data, invalid_input};
 use std::fmt::Write as _;
@@ -104,7 +105,7 @@ impl CsvSeries {
         self.line.clear();
         for (i, v) in values.iter().enumerate() {
             let sep = if i == 0 { "" } else { "," };
-            let _ = write!(self.line, "{sep}{v}");
+            let _ = write!(self.line, "{sep}{v:?}");
         }
         self.line.push('\n');
         // One write call per row: a crash loses at most the row being written.
@@ -208,7 +209,7 @@ mod tests {
         assert_eq!(err.kind(), std::io::ErrorKind::InvalidInput);
         assert!(std::fs::read_to_string(&path)
             .unwrap()
-            .starts_with("time_s,energy_J,n\n0,"));
+            .starts_with("time_s,energy_J,n\n0.0,"));
     }
 
     #[test]

@@ -44,7 +44,12 @@ pub struct RigidState {
 impl RigidState {
     /// A body at rest at `centre` [m] with orientation `orientation`.
     pub fn at_rest(centre: Vec3, orientation: Quat) -> RigidState {
-        RigidState { centre, velocity: Vec3::ZERO, orientation, angular_velocity: Vec3::ZERO }
+        RigidState {
+            centre,
+            velocity: Vec3::ZERO,
+            orientation,
+            angular_velocity: Vec3::ZERO,
+        }
     }
 }
 
@@ -155,13 +160,25 @@ impl Blocks {
     /// Adds a block of template `t` (index `template` in the template table) and density
     /// `density` [kg m⁻³] in state `s`, whose members are the DEM spheres `member_ids` (in the
     /// order of `t.members`, as `member_spheres` lists them). Returns its id.
-    pub fn push(&mut self, template: u32, t: &BlockTemplate, density: f64, s: RigidState, member_ids: &[SphereId]) -> BlockId {
-        assert_eq!(member_ids.len(), t.members.len(), "one sphere id per template member");
+    pub fn push(
+        &mut self,
+        template: u32,
+        t: &BlockTemplate,
+        density: f64,
+        s: RigidState,
+        member_ids: &[SphereId],
+    ) -> BlockId {
+        assert_eq!(
+            member_ids.len(),
+            t.members.len(),
+            "one sphere id per template member"
+        );
         let id = self.next_id;
         self.next_id += 1;
         let start = self.member_id.len() as u32;
         self.member_id.extend_from_slice(member_ids);
-        self.member_offset.extend(t.members.iter().map(|m| m.offset));
+        self.member_offset
+            .extend(t.members.iter().map(|m| m.offset));
         self.id.push(id);
         self.template.push(template);
         self.centre.push(s.centre);
@@ -196,7 +213,10 @@ impl Blocks {
 
     /// Mass properties of block b.
     pub fn body(&self, b: usize) -> Body {
-        Body { mass: self.mass[b], inertia: self.inertia[b] }
+        Body {
+            mass: self.mass[b],
+            inertia: self.inertia[b],
+        }
     }
 
     /// Body-frame member offsets q_i⁰ of block b [m].
@@ -237,17 +257,16 @@ impl Blocks {
 
     /// Kinetic energy Σ ½ M v² + ½ ω·I ω of all blocks [J].
     pub fn kinetic_energy(&self) -> f64 {
-        (0..self.len()).map(|b| self.body(b).kinetic_energy(&self.state(b))).sum()
+        (0..self.len())
+            .map(|b| self.body(b).kinetic_energy(&self.state(b)))
+            .sum()
     }
 
     /// Removes the blocks whose `keep` flag is false (with their member lists), keeping order.
     pub fn retain(&mut self, keep: &[bool]) {
         let old = std::mem::take(self);
         self.next_id = old.next_id;
-        for b in 0..old.len() {
-            if !keep[b] {
-                continue;
-            }
+        for b in (0..old.len()).filter(|&b| keep.get(b).copied().unwrap_or(true)) {
             let start = self.member_id.len() as u32;
             self.member_id.extend_from_slice(old.member_ids(b));
             self.member_offset.extend_from_slice(old.member_offsets(b));

@@ -91,7 +91,11 @@ pub fn symmetric_eigen(a: &[f64], n: usize) -> SymmetricEigen {
             }
         }
     }
-    SymmetricEigen { values: (0..n).map(|k| m[k * n + k]).collect(), vectors: v, n }
+    SymmetricEigen {
+        values: (0..n).map(|k| m[k * n + k]).collect(),
+        vectors: v,
+        n,
+    }
 }
 
 /// Principal moments and axes of a symmetric 3 × 3 tensor: `(λ, R)` with `t = R diag(λ) Rᵀ`,
@@ -121,8 +125,8 @@ pub fn pseudo_solve(a: &[f64], b: &[f64], n: usize, rcond: f64) -> Vec<f64> {
         }
         // x += v_k (v_k · b) / λ_k
         let vb: f64 = (0..n).map(|r| e.vectors[r * n + k] * b[r]).sum();
-        for r in 0..n {
-            x[r] += e.vectors[r * n + k] * vb / l;
+        for (r, xr) in x.iter_mut().enumerate() {
+            *xr += e.vectors[r * n + k] * vb / l;
         }
     }
     x

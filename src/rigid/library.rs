@@ -5,7 +5,7 @@
 //! | `three_sphere_rod(d)` | 3 | three equal spheres of diameter d touching in a line: the source's glued-sphere block of its settling test (METHOD.md §5, case 3) |
 //! | `cube(n)` | n³ | an n × n × n lattice of overlapping spheres (diameter 1.25 × spacing) |
 //! | `tetrapod(n)` | 1 + 4n | a central sphere and four tapered legs of n spheres along the tetrahedral directions |
-//! | `rock(seed, n)` | n | an irregular, somewhat flat and elongated cluster, reproducible from its seed |
+//! | `rock(seed, n)` | n | an irregular, flat and elongated cluster filling a bumpy ellipsoid, reproducible from its seed |
 //!
 //! Except the rod, whose size is its sphere diameter, the shapes come with a nominal diameter
 //! D_n = V^(1/3) of 1 m; size them with `with_nominal_diameter(D_n50)` or `with_mass(W, ρ_s)`.
@@ -23,7 +23,11 @@ pub const CUBE_SPHERE_OVERLAP: f64 = 1.25;
 /// Three equal spheres of diameter `d` [m] touching in a line along x: the source's three-sphere
 /// block (METHOD.md §5, case 3). The union is the three whole spheres.
 pub fn three_sphere_rod(d: f64) -> BlockTemplate {
-    let spheres = [(Vec3::new(-d, 0.0, 0.0), d), (Vec3::ZERO, d), (Vec3::new(d, 0.0, 0.0), d)];
+    let spheres = [
+        (Vec3::new(-d, 0.0, 0.0), d),
+        (Vec3::ZERO, d),
+        (Vec3::new(d, 0.0, 0.0), d),
+    ];
     BlockTemplate::from_spheres("three_sphere_rod", &spheres).expect("valid spheres")
 }
 
@@ -41,7 +45,9 @@ pub fn cube(per_edge: usize) -> BlockTemplate {
             }
         }
     }
-    BlockTemplate::from_spheres("cube", &spheres).expect("valid spheres").with_nominal_diameter(1.0)
+    BlockTemplate::from_spheres("cube", &spheres)
+        .expect("valid spheres")
+        .with_nominal_diameter(1.0)
 }
 
 /// A tetrapod: a central sphere of radius 0.3 ℓ and four legs along the tetrahedral directions
@@ -66,26 +72,35 @@ pub fn tetrapod(per_leg: usize) -> BlockTemplate {
             spheres.push((t * u, 2.0 * (r_base + (r_tip - r_base) * t)));
         }
     }
-    BlockTemplate::from_spheres("tetrapod", &spheres).expect("valid spheres").with_nominal_diameter(1.0)
+    BlockTemplate::from_spheres("tetrapod", &spheres)
+        .expect("valid spheres")
+        .with_nominal_diameter(1.0)
 }
 
-/// An irregular rock-like cluster of `spheres` spheres, the same for the same `seed`: a core
-/// sphere of radius 0.5 and others of radius 0.25 to 0.5 whose centres lie within the core,
-/// spread along axes of relative length 1 : 0.8 : 0.6 (a flat, elongated quarry stone). Scaled
-/// to a nominal diameter of 1 m.
+/// An irregular rock-like cluster of `spheres` spheres, the same for the same `seed`. The
+/// envelope is an ellipsoid of relative axes about 1 : 0.8 : 0.6 (a flat, elongated quarry
+/// stone), each axis varied by ±7.5 % with the seed. A core sphere fills its middle; the others
+/// have centres drawn uniformly inside 0.85 of the envelope and radii of 0.9 to 1.3 times their
+/// centre's depth below the envelope, so that the bumpy union follows the envelope and the
+/// members are spread through it (which lets their masses carry the union's inertia, see
+/// `member_masses`; use 24 spheres or more for that to hold exactly). Scaled to a nominal
+/// diameter of 1 m.
 pub fn rock(seed: u64, spheres: usize) -> BlockTemplate {
     let mut rng = SplitMix64(seed);
-    let aspect = Vec3::new(1.0, 0.8, 0.6);
-    let mut list = vec![(Vec3::ZERO, 1.0)];
-    for _ in 1..spheres.max(1) {
-        // Uniform direction (Marsaglia-free: z uniform, azimuth uniform).
-        let z = 2.0 * rng.uniform() - 1.0;
-        let phi = std::f64::consts::TAU * rng.uniform();
-        let s = (1.0 - z * z).sqrt();
-        let dir = Vec3::new(s * phi.cos(), s * phi.sin(), z);
-        let dist = 0.15 + 0.35 * rng.uniform();
-        let radius = 0.25 + 0.25 * rng.uniform();
-        list.push((dist * dir * aspect, 2.0 * radius));
+    let mut axes = Vec3::new(1.0, 0.8, 0.6) * 0.5;
+    for k in 0..3 {
+        axes[k] *= 1.0 + 0.15 * (rng.uniform() - 0.5);
+    }
+    let a_min = axes.min_element();
+    let mut list = vec![(Vec3::ZERO, 1.6 * a_min)];
+    while list.len() < spheres.max(1) {
+        let u = Vec3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 2.0 - Vec3::ONE;
+        let depth = 1.0 - u.length(); // 1 at the middle, 0 on the envelope (relative)
+        if !(0.15..1.0).contains(&depth) {
+            continue; // outside 0.85 of the envelope: draw again
+        }
+        let radius = depth * a_min * (0.9 + 0.4 * rng.uniform());
+        list.push((u * axes, 2.0 * radius));
     }
     BlockTemplate::from_spheres(&format!("rock_{seed}"), &list)
         .expect("valid spheres")

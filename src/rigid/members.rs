@@ -51,7 +51,13 @@ pub fn place_members(s: &RigidState, offsets: &[Vec3], m: &mut Members, domain: 
 /// Force F = Σ F_i [N] and torque about the centre T = Σ q_i × F_i + Σ T_i [N m] on a block
 /// centred at `centre` [m], from its members' `positions` [m], `forces` [N] and `torques` [N m]
 /// (q_i = x_i − x_g taken as the nearest periodic image).
-pub fn block_wrench(centre: Vec3, positions: &[Vec3], forces: &[Vec3], torques: &[Vec3], domain: &Domain) -> (Vec3, Vec3) {
+pub fn block_wrench(
+    centre: Vec3,
+    positions: &[Vec3],
+    forces: &[Vec3],
+    torques: &[Vec3],
+    domain: &Domain,
+) -> (Vec3, Vec3) {
     let mut f = Vec3::ZERO;
     let mut t = Vec3::ZERO;
     for i in 0..positions.len() {

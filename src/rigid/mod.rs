@@ -30,6 +30,7 @@
 pub mod blocks;
 pub mod jacobi;
 pub mod library;
+pub mod links;
 pub mod mass_properties;
 pub mod member_masses;
 pub mod members;

@@ -27,7 +27,10 @@
 //! world angular momentum L = Q L_body Q* exactly and |L_body| exactly, so a torque-free block
 //! conserves L to round-off; the scheme is symplectic and second order, so the kinetic energy has
 //! no drift, only a bounded O((|ω|Δt)²) oscillation (`tests/rigid_rotation.rs` measures both).
-//! Symbols: M mass [kg], I_k principal moments [kg m²], Q orientation (body → world).
+//! With forces that depend on positions only the whole step is second order; forces evaluated
+//! with the half-step velocities (dashpots, as the DEM evaluates them) make that part first
+//! order, as for the spheres. Symbols: M mass [kg], I_k principal moments [kg m²], Q orientation
+//! (body → world).
 
 use crate::math::{Quat, Vec3};
 
@@ -57,7 +60,7 @@ pub fn drift(s: &mut RigidState, body: &Body, dt: f64) {
         };
         let r = Quat::from_axis_angle(e, phi);
         lb = r.inverse() * lb;
-        q = q * r;
+        q *= r;
     }
     s.orientation = normalise(q);
     s.angular_velocity = s.orientation * (lb / body.inertia);
@@ -66,7 +69,13 @@ pub fn drift(s: &mut RigidState, body: &Body, dt: f64) {
 /// One whole reference step for a block whose force and torque depend
 /// on its state only (prescribed loads, tests): kick, drift, evaluate, kick. `wrench` returns
 /// (F [N], T [N m]) for a state; `last` holds the wrench of the current state and is updated.
-pub fn step_with<W: FnMut(&RigidState) -> (Vec3, Vec3)>(s: &mut RigidState, body: &Body, last: &mut (Vec3, Vec3), dt: f64, mut wrench: W) {
+pub fn step_with<W: FnMut(&RigidState) -> (Vec3, Vec3)>(
+    s: &mut RigidState,
+    body: &Body,
+    last: &mut (Vec3, Vec3),
+    dt: f64,
+    mut wrench: W,
+) {
     kick(s, body, last.0, last.1, 0.5 * dt);
     drift(s, body, dt);
     *last = wrench(s);

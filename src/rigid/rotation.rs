@@ -46,9 +46,21 @@ pub fn normalise(q: Quat) -> Quat {
 pub fn rotation_matrix(q: Quat) -> Mat3 {
     let (q0, qx, qy, qz) = (q.w, q.x, q.y, q.z);
     Mat3::from_cols(
-        Vec3::new(1.0 - 2.0 * (qy * qy + qz * qz), 2.0 * (qx * qy + q0 * qz), 2.0 * (qx * qz - q0 * qy)),
-        Vec3::new(2.0 * (qx * qy - q0 * qz), 1.0 - 2.0 * (qx * qx + qz * qz), 2.0 * (qy * qz + q0 * qx)),
-        Vec3::new(2.0 * (qx * qz + q0 * qy), 2.0 * (qy * qz - q0 * qx), 1.0 - 2.0 * (qx * qx + qy * qy)),
+        Vec3::new(
+            1.0 - 2.0 * (qy * qy + qz * qz),
+            2.0 * (qx * qy + q0 * qz),
+            2.0 * (qx * qz - q0 * qy),
+        ),
+        Vec3::new(
+            2.0 * (qx * qy - q0 * qz),
+            1.0 - 2.0 * (qx * qx + qz * qz),
+            2.0 * (qy * qz + q0 * qx),
+        ),
+        Vec3::new(
+            2.0 * (qx * qz + q0 * qy),
+            2.0 * (qy * qz - q0 * qx),
+            1.0 - 2.0 * (qx * qx + qy * qy),
+        ),
     )
 }
 
@@ -56,7 +68,9 @@ pub fn rotation_matrix(q: Quat) -> Mat3 {
 /// written with the multiplication rules [38] (Hamilton product), not through the matrix.
 pub fn rotate_by_sandwich(q: Quat, v: Vec3) -> Vec3 {
     // (s1, u1)(s2, u2) = (s1 s2 − u1·u2, s1 u2 + s2 u1 + u1 × u2)
-    let mul = |s1: f64, u1: Vec3, s2: f64, u2: Vec3| (s1 * s2 - u1.dot(u2), s1 * u2 + s2 * u1 + u1.cross(u2));
+    let mul = |s1: f64, u1: Vec3, s2: f64, u2: Vec3| {
+        (s1 * s2 - u1.dot(u2), s1 * u2 + s2 * u1 + u1.cross(u2))
+    };
     let u = Vec3::new(q.x, q.y, q.z);
     let (s, t) = mul(q.w, u, 0.0, v);
     let (_, r) = mul(s, t, q.w, -u);
@@ -103,7 +117,10 @@ mod tests {
         let c = q * v;
         assert!((a - b).length() < 1e-15 && (a - c).length() < 1e-15);
         let r = rotation_matrix(q);
-        assert!((r * r.transpose() - Mat3::IDENTITY).to_cols_array().iter().all(|x| x.abs() < 1e-15));
+        assert!((r * r.transpose() - Mat3::IDENTITY)
+            .to_cols_array()
+            .iter()
+            .all(|x| x.abs() < 1e-15));
     }
 
     #[test]

@@ -87,7 +87,10 @@ pub enum TemplateError {
 impl BlockTemplate {
     /// A template from spheres given as (centre offset [m], diameter [m]) in any frame, with the
     /// default direction quadrature (`mass_properties::DEFAULT_POLAR_POINTS`).
-    pub fn from_spheres(name: &str, spheres: &[(Vec3, f64)]) -> Result<BlockTemplate, TemplateError> {
+    pub fn from_spheres(
+        name: &str,
+        spheres: &[(Vec3, f64)],
+    ) -> Result<BlockTemplate, TemplateError> {
         Self::from_spheres_with_quadrature(name, spheres, DEFAULT_POLAR_POINTS)
     }
 
@@ -126,9 +129,16 @@ impl BlockTemplate {
             .collect();
 
         let j_union = union.total.inertia_per_density();
-        let scale_i = j_union.to_cols_array().iter().fold(0.0f64, |a, x| a.max(x.abs()));
+        let scale_i = j_union
+            .to_cols_array()
+            .iter()
+            .fold(0.0f64, |a, x| a.max(x.abs()));
         let r_gyr = (0.5 * (j_union.x_axis.x + j_union.y_axis.y + j_union.z_axis.z) / v).sqrt();
-        let inertia_err = (v * j_def - j_union).to_cols_array().iter().fold(0.0f64, |a, x| a.max(x.abs())) / scale_i;
+        let inertia_err = (v * j_def - j_union)
+            .to_cols_array()
+            .iter()
+            .fold(0.0f64, |a, x| a.max(x.abs()))
+            / scale_i;
         let centre_err = (centre - union.total.centroid()).length() / r_gyr;
 
         Ok(BlockTemplate {
@@ -168,7 +178,10 @@ impl BlockTemplate {
     /// block inertia.
     pub fn member_inertias(&self, density: f64) -> Vec<f64> {
         let m = self.mass(density);
-        self.members.iter().map(|s| 0.4 * s.mass_fraction * m * s.radius * s.radius).collect()
+        self.members
+            .iter()
+            .map(|s| 0.4 * s.mass_fraction * m * s.radius * s.radius)
+            .collect()
     }
 
     /// Body-frame member offsets q_i⁰ [m].
@@ -184,7 +197,11 @@ impl BlockTemplate {
             members: self
                 .members
                 .iter()
-                .map(|m| Member { offset: s * m.offset, radius: s * m.radius, mass_fraction: m.mass_fraction })
+                .map(|m| Member {
+                    offset: s * m.offset,
+                    radius: s * m.radius,
+                    mass_fraction: m.mass_fraction,
+                })
                 .collect(),
             volume: s3 * self.volume,
             principal_inertia: s5 * self.principal_inertia,

@@ -534,7 +534,7 @@ fn check_motion(src: &Source, key: &str, motion: Option<Motion>) -> Result<(), S
         }) => {
             finite(src, &format!("{key}.velocity"), &velocity.to_array())?;
             finite(src, &format!("{key}.start"), &[start])?;
-            if !(stop > start) {
+            if stop.partial_cmp(&start) != Some(std::cmp::Ordering::Greater) {
                 return Err(src.invalid(
                     &format!("{key}.stop"),
                     format!("must come after start = {start} s (leave it out to move forever), got {stop}"),
@@ -717,7 +717,7 @@ fn check_region(
     finite(src, &format!("{key}.max"), &max)?;
     let axis = ["x", "y", "z"];
     for k in 0..3 {
-        if !(min[k] < max[k]) {
+        if min[k].partial_cmp(&max[k]) != Some(std::cmp::Ordering::Less) {
             return Err(src.invalid(
                 &format!("{key}.max"),
                 format!("must exceed min along every axis ({})", axis[k]),
@@ -1005,8 +1005,7 @@ fn check_walls(src: &Source, s: &Spheres, origin: &[String]) -> Result<(), Scena
             .0
             .clone()
             .unwrap_or_else(|| format!("{}{w}", wall.kind()));
-        for k in 0..s.len() {
-            let x = s.position[k];
+        for (k, &x) in s.position.iter().enumerate() {
             let wrong = match wall {
                 WallSection::Plane(p) => {
                     let n = v3(p.normal).normalize_or_zero();

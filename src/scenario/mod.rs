@@ -329,7 +329,7 @@ fn parse_error(text: &str, file: &str, e: toml::de::Error) -> ScenarioError {
             for name in ["wall", "spheres"] {
                 if let Some(arr) = t.get(name) {
                     if let DeValue::Array(a) = arr.get_ref() {
-                        if arr.span() == span || a.get(0).is_some_and(|v| v.span() == span) {
+                        if arr.span() == span || a.first().is_some_and(|v| v.span() == span) {
                             inner = a.iter().find_map(|v| payload_error(name, v));
                         }
                     }

@@ -14,7 +14,13 @@ use riprap::simulation::Simulation;
 
 /// A material with the given density [kg m⁻³], Young's modulus [Pa], Poisson's ratio, friction
 /// coefficient and target restitution.
-pub fn material(density: f64, young: f64, poisson: f64, friction: f64, restitution: f64) -> Material {
+pub fn material(
+    density: f64,
+    young: f64,
+    poisson: f64,
+    friction: f64,
+    restitution: f64,
+) -> Material {
     Material {
         name: "grain".into(),
         density,
@@ -48,7 +54,11 @@ pub fn harmonic(a: f64, b: f64) -> f64 {
 
 /// A closed (non-periodic) cube of half-width `h` [m] around the origin.
 pub fn open_box(h: f64) -> Domain {
-    Domain { min: Vec3::splat(-h), max: Vec3::splat(h), periodic: [false; 3] }
+    Domain {
+        min: Vec3::splat(-h),
+        max: Vec3::splat(h),
+        periodic: [false; 3],
+    }
 }
 
 /// A fixed plane wall of material 0.
@@ -63,7 +73,12 @@ pub fn plane_wall(point: Vec3, normal: Vec3) -> Wall {
 
 /// A fixed mesh wall of material 0.
 pub fn mesh_wall(mesh: TriMesh) -> Wall {
-    Wall { name: "mesh".into(), shape: Shape::Mesh(mesh), material: 0, motion: Motion::Fixed }
+    Wall {
+        name: "mesh".into(),
+        shape: Shape::Mesh(mesh),
+        material: 0,
+        motion: Motion::Fixed,
+    }
 }
 
 /// A one-material granular phase with gravity switched off.
@@ -207,10 +222,18 @@ pub fn run_impact(dem: Dem, min_period: f64, max_steps: usize) -> Impact {
             let d = sim.dem.domain.minimum_image(s.position[1] - s.position[0]);
             let n = d / d.length();
             let delta = s.radius[0] + s.radius[1] - d.length();
-            ((delta), (s.velocity[0] - s.velocity[1]).dot(n), s.force[1].dot(n))
+            (
+                (delta),
+                (s.velocity[0] - s.velocity[1]).dot(n),
+                s.force[1].dot(n),
+            )
         } else {
             let dist = (s.position[0] - wall_point).dot(wall_normal);
-            (s.radius[0] - dist, -s.velocity[0].dot(wall_normal), s.force[0].dot(wall_normal))
+            (
+                s.radius[0] - dist,
+                -s.velocity[0].dot(wall_normal),
+                s.force[0].dot(wall_normal),
+            )
         }
     };
     let (delta0, v_in, _) = measure(&sim);
@@ -239,7 +262,11 @@ pub fn run_impact(dem: Dem, min_period: f64, max_steps: usize) -> Impact {
         } else if last_force.1 > 0.0 && end_force.is_nan() {
             let (t1, f1) = last_force;
             let (t0, f0) = prev_force;
-            end_force = if f0 > f1 { t1 + f1 / (f0 - f1) * (t1 - t0) } else { t1 };
+            end_force = if f0 > f1 {
+                t1 + f1 / (f0 - f1) * (t1 - t0)
+            } else {
+                t1
+            };
         }
         max_overlap = max_overlap.max(delta);
         max_force = max_force.max(force);
@@ -250,11 +277,21 @@ pub fn run_impact(dem: Dem, min_period: f64, max_steps: usize) -> Impact {
             break;
         }
     }
-    assert!(!v_out.is_nan(), "run_impact: no separation within {max_steps} steps");
+    assert!(
+        !v_out.is_nan(),
+        "run_impact: no separation within {max_steps} steps"
+    );
     let s = &sim.dem.spheres;
     let state = ImpactState {
         v: [s.velocity[0], if pair { s.velocity[1] } else { Vec3::ZERO }],
-        w: [s.angular_velocity[0], if pair { s.angular_velocity[1] } else { Vec3::ZERO }],
+        w: [
+            s.angular_velocity[0],
+            if pair {
+                s.angular_velocity[1]
+            } else {
+                Vec3::ZERO
+            },
+        ],
     };
     Impact {
         start,
@@ -274,7 +311,11 @@ pub fn run_impact(dem: Dem, min_period: f64, max_steps: usize) -> Impact {
 /// shared by 3 to 8 triangles). n = 1 gives 2 triangles, n = 4 gives 32.
 pub fn square_grid(n: usize, size: f64) -> Vec<[Vec3; 3]> {
     let p = |i: usize, j: usize| {
-        Vec3::new((i as f64 / n as f64 - 0.5) * size, (j as f64 / n as f64 - 0.5) * size, 0.0)
+        Vec3::new(
+            (i as f64 / n as f64 - 0.5) * size,
+            (j as f64 / n as f64 - 0.5) * size,
+            0.0,
+        )
     };
     let mut tris = Vec::new();
     for j in 0..n {

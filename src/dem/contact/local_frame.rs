@@ -174,10 +174,10 @@ pub fn voigt_local(law: &Law, delta: f64, rate: V3, s0: S2, dt: f64) -> (V3, S2)
         let f_mag = f[0].hypot(f[1]);
         if f_mag > limit {
             // riprap's correction of (11): the slider, in series with the spring and the
-            // dashpot, also slips when their sum exceeds μ F_ξ; the spring relaxes to the
-            // slider force as in (12). The source tests s alone.
+            // dashpot, also slips when their sum exceeds μ F_ξ, which bounds the transmitted
+            // force; the spring keeps its elastic state. The source tests s alone.
             let f = f.map(|c| limit * c / f_mag);
-            ([f_xi, f[0], f[1]], f)
+            ([f_xi, f[0], f[1]], s)
         } else {
             ([f_xi, f[0], f[1]], s)
         }

@@ -33,7 +33,7 @@ pub fn normal_spring(law: &PairLaw, p: &Pair) -> (f64, f64) {
 /// [9]   f_n = s_n + c_n δ̇ ;  s_t ← s_t - k_t v_t Δt ;  f_t = s_t - c_t v_t
 /// [10]  f_n ≤ 0: the joint opens, nothing is transmitted and s_t is reset
 /// [11][12] |s_t| > μ f_n: the slider slips, s_t ← μ f_n ŝ_t and f_t = s_t (no dashpot);
-///          likewise when |s_t - c_t v_t| > μ f_n, with the direction of s_t - c_t v_t
+///          when |s_t| ≤ μ f_n but |s_t - c_t v_t| > μ f_n, f_t is that sum scaled to μ f_n
 /// [13][14] F_i = -f_n n + f_t ;  T_i = r_i n × f_t ;  T_j = r_j n × f_t
 ///
 /// The Coulomb limit uses the total normal force f_n (spring and dashpot) rather than s_n alone,
@@ -72,12 +72,13 @@ pub fn force(law: &PairLaw, p: &Pair, s_t: &mut Vec3, dt: f64) -> Reaction {
         // when their sum exceeds μ f_n (the source's (11) tests s_t alone, which let the dashpot
         // push the friction force to several times μ f_n while an oblique contact forms and
         // gave a sliding impact ~30 % more tangential impulse than μ times the normal one).
-        // The spring then relaxes to the slider force, as in [12].
+        // Only the transmitted force is bounded: the spring keeps its elastic state (already
+        // within μ f_n), since setting it to the slider force would store energy that no
+        // deformation put there.
         let f = s - c_t * v_t;
         let len = f.length();
         if len > limit {
-            s = f * (limit / len);
-            s
+            f * (limit / len)
         } else {
             f
         }

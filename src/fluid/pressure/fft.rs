@@ -25,6 +25,7 @@
 //! made once in [`SpectralPoisson::new`]; `solve` allocates nothing.
 
 use super::PoissonSolver;
+use crate::fluid::grid::{for_each_chunk, SERIAL_BELOW};
 use rayon::prelude::*;
 use rustdct::{DctPlanner, TransformType2And3};
 use rustfft::num_complex::Complex;
@@ -65,8 +66,10 @@ const GROUPS: usize = 64;
 pub struct SpectralPoisson {
     n: [usize; 3],
     transforms: [Transform; 3],
-    /// λ_a(k) [m⁻²] along each axis, divided by the round-trip factor of that axis.
+    /// λ_a(k) [m⁻²] along each axis.
     eigenvalues: [Vec<f64>; 3],
+    /// The product of the round-trip factors of the unnormalised transforms of the three axes.
+    round_trip: f64,
     /// True when some axis is periodic (the imaginary part is needed).
     complex: bool,
     a: Vec<Complex<f64>>,
@@ -97,15 +100,17 @@ impl SpectralPoisson {
                 Transform::Cosine(d)
             }
         });
+        let mut round_trip = 1.0;
         let eigenvalues = std::array::from_fn(|a| {
             let (len, h2) = (n[a], h[a] * h[a]);
-            let (arg, round_trip) = match (kinds[a], len) {
+            let (arg, factor) = match (kinds[a], len) {
                 (_, 1) => (0.0, 1.0),
                 (AxisKind::Periodic, _) => (PI / len as f64, len as f64),
                 (AxisKind::Neumann, _) => (PI / (2.0 * len as f64), 0.5 * len as f64),
             };
+            round_trip *= factor;
             (0..len)
-                .map(|k| -4.0 * (arg * k as f64).sin().powi(2) / h2 * round_trip)
+                .map(|k| -4.0 * (arg * k as f64).sin().powi(2) / h2)
                 .collect()
         });
         let complex = (0..3).any(|a| kinds[a] == AxisKind::Periodic && n[a] > 1);
@@ -122,6 +127,7 @@ impl SpectralPoisson {
             n,
             transforms,
             eigenvalues,
+            round_trip,
             complex,
             a: vec![Complex::new(0.0, 0.0); total],
             b: vec![Complex::new(0.0, 0.0); total],
@@ -144,9 +150,7 @@ fn transform_lines(
     }
     let lines = buf.len() / len;
     let per_group = lines.div_ceil(scratch.len());
-    buf.par_chunks_mut(per_group * len)
-        .zip(scratch.par_iter_mut())
-        .for_each(|(chunk, s)| match transform {
+    let work = |(chunk, s): (&mut [Complex<f64>], &mut LineScratch)| match transform {
             Transform::Identity => {}
             Transform::Fourier(f, i) => {
                 let plan = if forward { f } else { i };
@@ -175,7 +179,16 @@ fn transform_lines(
                     }
                 }
             }
-        });
+        };
+    if buf.len() < SERIAL_BELOW {
+        buf.chunks_mut(per_group * len)
+            .zip(scratch.iter_mut())
+            .for_each(work);
+    } else {
+        buf.par_chunks_mut(per_group * len)
+            .zip(scratch.par_iter_mut())
+            .for_each(work);
+    }
 }
 
 /// Parallel gather `dst[m·len + q] = src[index(m, q)]`: each destination line written by one task.
@@ -183,7 +196,7 @@ fn permute<F>(src: &[Complex<f64>], dst: &mut [Complex<f64>], len: usize, index:
 where
     F: Fn(usize, usize) -> usize + Sync,
 {
-    dst.par_chunks_mut(len).enumerate().for_each(|(m, line)| {
+    for_each_chunk(dst, len, |m, line| {
         for (q, z) in line.iter_mut().enumerate() {
             *z = src[index(m, q)];
         }
@@ -199,21 +212,21 @@ impl PoissonSolver for SpectralPoisson {
         let t = &self.transforms;
         // Layouts: A = x fastest (i + nx (j + ny k)), B = y fastest (j + ny (i + nx k)),
         // C = z fastest (k + nz (i + nx j)).
-        a.par_iter_mut()
-            .zip(data.par_iter())
-            .for_each(|(z, &f)| *z = Complex::new(f, 0.0));
+        for (z, &f) in a.iter_mut().zip(data.iter()) {
+            *z = Complex::new(f, 0.0);
+        }
         transform_lines(a, nx, &t[0], true, complex, s);
         permute(a, b, ny, |m, j| (m % nx) + nx * (j + ny * (m / nx)));
         transform_lines(b, ny, &t[1], true, complex, s);
         permute(b, a, nz, |m, k| k_to_b(m, k, nx, ny));
         transform_lines(a, nz, &t[2], true, complex, s);
 
-        // Divide each mode by its eigenvalue λ_x + λ_y + λ_z (round trips folded in).
-        let lam = &self.eigenvalues;
-        a.par_chunks_mut(nz).enumerate().for_each(|(m, line)| {
+        // Divide each mode by its eigenvalue λ_x + λ_y + λ_z and by the round-trip factor.
+        let (lam, round_trip) = (&self.eigenvalues, self.round_trip);
+        for_each_chunk(a, nz, |m, line| {
             let (i, j) = (m % nx, m / nx);
             for (k, z) in line.iter_mut().enumerate() {
-                let l = lam[0][i] + lam[1][j] + lam[2][k];
+                let l = (lam[0][i] + lam[1][j] + lam[2][k]) * round_trip;
                 *z = if l == 0.0 {
                     Complex::new(0.0, 0.0)
                 } else {
@@ -233,7 +246,9 @@ impl PoissonSolver for SpectralPoisson {
             j + ny * (i + nx * k)
         });
         transform_lines(a, nx, &t[0], false, complex, s);
-        data.par_iter_mut().zip(a.par_iter()).for_each(|(f, z)| *f = z.re);
+        for (f, z) in data.iter_mut().zip(a.iter()) {
+            *f = z.re;
+        }
     }
 }
 
@@ -249,7 +264,7 @@ mod tests {
     use super::*;
 
     /// Applies the 7-point Laplacian with periodic or Neumann ends to compact data.
-    fn laplacian(n: [usize; 3], h: [f64; 3], kinds: [AxisKind; 3], p: &[f64]) -> Vec<f64> {
+    pub(super) fn laplacian(n: [usize; 3], h: [f64; 3], kinds: [AxisKind; 3], p: &[f64]) -> Vec<f64> {
         let idx = |i: usize, j: usize, k: usize| i + n[0] * (j + n[1] * k);
         let mut out = vec![0.0; p.len()];
         for k in 0..n[2] {

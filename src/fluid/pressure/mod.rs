@@ -25,10 +25,9 @@
 pub mod fft;
 
 use super::boundary::{fill_scalar_ghosts, Boundaries};
-use super::grid::{update_region, IndexBox, StaggeredGrid, Stencil};
+use super::grid::{for_each_chunk, reduce_chunks, update_region, IndexBox, StaggeredGrid, Stencil};
 use super::operators::{divergence, gradient, interp_to_face};
 use fft::{AxisKind, SpectralPoisson};
-use rayon::prelude::*;
 
 /// A solver of the constant-coefficient discrete Poisson equation L p = f on the cells.
 pub trait PoissonSolver: Send + Sync {
@@ -105,10 +104,12 @@ impl Projection {
         // q = (1 − ρ₀/ρ̄_f) G p̂ on the faces the projection moves; zero on boundary faces.
         if variable {
             let (pn, pm) = (p.current, p.previous);
-            self.p_hat
-                .par_iter_mut()
-                .enumerate()
-                .for_each(|(c, x)| *x = (1.0 + r) * pn[c] - r * pm[c]);
+            for_each_chunk(&mut self.p_hat, grid.padded()[0], |row, line| {
+                let base = row * line.len();
+                for (i, x) in line.iter_mut().enumerate() {
+                    *x = (1.0 + r) * pn[base + i] - r * pm[base + i];
+                }
+            });
             let p_hat = &self.p_hat;
             for (a, q) in self.q.iter_mut().enumerate() {
                 update_region(grid, &regions[a], q, |c, _| {
@@ -124,10 +125,7 @@ impl Projection {
         {
             let uu = [&u[0][..], &u[1][..], &u[2][..]];
             let qq = [&self.q[0][..], &self.q[1][..], &self.q[2][..]];
-            self.rhs
-                .par_chunks_mut(nx)
-                .enumerate()
-                .for_each(|(row, line)| {
+            for_each_chunk(&mut self.rhs, nx, |row, line| {
                     let c0 = grid.cell(0, row % ny, row / ny);
                     for (i, f) in line.iter_mut().enumerate() {
                         let c = c0 + i;
@@ -138,7 +136,7 @@ impl Projection {
                         };
                         *f = rho0 / dt * divergence(&st, uu, c) + dq;
                     }
-                });
+            });
         }
         self.solver.solve(&mut self.rhs);
         grid.scatter_interior(&self.rhs, p.next);
@@ -160,23 +158,22 @@ impl Projection {
 /// order, so the parallel reduction is deterministic).
 pub fn density_range(grid: &StaggeredGrid, rho: &[f64]) -> (f64, f64) {
     let p = grid.padded();
-    rho.par_chunks(p[0])
-        .enumerate()
-        .filter(|(row, _)| {
+    let empty = (f64::INFINITY, f64::NEG_INFINITY);
+    reduce_chunks(
+        rho,
+        p[0],
+        empty,
+        |row, line| {
             let (j, k) = (row % p[1], row / p[1]);
-            grid.interior(1).contains(&j) && grid.interior(2).contains(&k)
-        })
-        .map(|(_, line)| {
+            if !grid.interior(1).contains(&j) || !grid.interior(2).contains(&k) {
+                return empty;
+            }
             line[1..=grid.n[0]]
                 .iter()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
-                    (lo.min(x), hi.max(x))
-                })
-        })
-        .reduce(
-            || (f64::INFINITY, f64::NEG_INFINITY),
-            |(a, b), (c, d)| (a.min(c), b.max(d)),
-        )
+                .fold(empty, |(lo, hi), &x| (lo.min(x), hi.max(x)))
+        },
+        |(a, b), (c, d)| (a.min(c), b.max(d)),
+    )
 }
 
 /// On a periodic axis a, copies the a-face 0 into the slot of face n_a (the same face).

@@ -1,0 +1,357 @@
+//! The `riprap` binary as a user drives it: `check` on the shipped examples and on bad files,
+//! `run` with its outputs, a restart that continues bit for bit, and a run that goes unstable.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const BIN: &str = env!("CARGO_BIN_EXE_riprap");
+
+fn examples() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples")
+}
+
+/// A fresh, empty folder under the system temp dir, unique to this process and `name`.
+fn temp_dir(name: &str) -> PathBuf {
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .unwrap()
+        .subsec_nanos();
+    let d = std::env::temp_dir().join(format!("riprap_cli_{}_{name}_{nanos}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn riprap(args: &[&str]) -> Output {
+    Command::new(BIN)
+        .args(["--threads", "2"])
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the riprap binary runs")
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+fn path_str(p: &Path) -> &str {
+    p.to_str().expect("temp paths are UTF-8")
+}
+
+/// The rows of a CSV file (header dropped), each as its list of numbers.
+fn csv_rows(path: &Path) -> Vec<Vec<f64>> {
+    let t = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    t.lines()
+        .skip(1)
+        .map(|l| {
+            l.split(',')
+                .map(|v| {
+                    v.parse::<f64>()
+                        .unwrap_or_else(|_| panic!("bad number {v}"))
+                })
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn check_passes_on_every_example_and_prints_the_derived_quantities() {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(examples())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    let names: Vec<String> = files
+        .iter()
+        .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+        .collect();
+    for expected in [
+        "hopper_feed.toml",
+        "mesh_chute.toml",
+        "shaker.toml",
+        "gate_release.toml",
+        "single_impact.toml",
+    ] {
+        assert!(
+            names.iter().any(|n| n == expected),
+            "examples/{expected} is missing: {names:?}"
+        );
+    }
+    for file in &files {
+        let out = riprap(&["check", path_str(file)]);
+        let stdout = text(&out.stdout);
+        assert!(
+            out.status.success(),
+            "check {} failed:\n{}{}",
+            file.display(),
+            stdout,
+            text(&out.stderr)
+        );
+        for needle in [
+            "valid",
+            "contact pairings",
+            "t_c [s]",
+            "shortest spring period",
+            "time step:",
+            "memory estimate:",
+        ] {
+            assert!(
+                stdout.contains(needle),
+                "check {}: no `{needle}` in\n{stdout}",
+                file.display()
+            );
+        }
+        // Every example opens with a comment block that says how to run it and how long it takes.
+        let body = std::fs::read_to_string(file).unwrap();
+        let head: String = body
+            .lines()
+            .take_while(|l| l.starts_with('#'))
+            .collect::<Vec<_>>()
+            .join("\n");
+        assert!(
+            head.lines().count() >= 3,
+            "{} opens without a comment block",
+            file.display()
+        );
+        if file.file_name().unwrap() != "armour_on_slope.toml" {
+            let name = file.file_name().unwrap().to_string_lossy();
+            assert!(
+                head.contains(&format!("riprap run examples/{name}")),
+                "{name}: how to run it"
+            );
+            assert!(
+                head.contains("Time:") && head.contains("2 cores"),
+                "{name}: how long it takes"
+            );
+        }
+    }
+    // The built-in default scenario too.
+    let out = riprap(&["check"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+}
+
+#[test]
+fn check_on_bad_files_fails_naming_file_line_and_key() {
+    let dir = temp_dir("bad");
+    let good = std::fs::read_to_string(examples().join("single_impact.toml")).unwrap();
+    // An unknown key in a wall (a tagged table), and a sphere below the plate.
+    let cases = [
+        (
+            good.replace(
+                "normal = [0.0, 0.0, 1.0]",
+                "normal = [0.0, 0.0, 1.0]\nroughness = 0.1",
+            ),
+            "roughness",
+            "wall[0].roughness",
+        ),
+        (
+            good.replace("0.0, 0.0, 0.006]", "0.0, 0.0, -0.006]"),
+            "-0.006]",
+            "spheres[0].spheres[0].position",
+        ),
+        (
+            good.replace("young_modulus = 6.3e10", "young_modulus = -6.3e10"),
+            "young_modulus = -",
+            "material[0].young_modulus",
+        ),
+    ];
+    for (k, (body, marker, key)) in cases.iter().enumerate() {
+        let file = dir.join(format!("bad_{k}.toml"));
+        std::fs::write(&file, body).unwrap();
+        let line = body.lines().position(|l| l.contains(marker)).unwrap() + 1;
+        let out = riprap(&["check", path_str(&file)]);
+        let stderr = text(&out.stderr);
+        assert!(!out.status.success(), "check accepted {}", file.display());
+        assert!(
+            stderr.contains(&format!("bad_{k}.toml:{line}:")),
+            "file:line missing (line {line}):\n{stderr}"
+        );
+        assert!(
+            stderr.contains(&format!("`{key}`")),
+            "key `{key}` missing:\n{stderr}"
+        );
+        // `run` refuses it the same way, before writing anything.
+        let out_dir = dir.join(format!("out_{k}"));
+        let out = riprap(&[
+            "run",
+            path_str(&file),
+            "--output",
+            path_str(&out_dir),
+            "--steps",
+            "1",
+        ]);
+        assert!(!out.status.success());
+        assert!(text(&out.stderr).contains(&format!("bad_{k}.toml:{line}:")));
+    }
+    // A file that does not exist.
+    let missing = dir.join("no_such_scenario.toml");
+    let out = riprap(&["check", path_str(&missing)]);
+    assert!(!out.status.success());
+    assert!(
+        text(&out.stderr).contains("no_such_scenario.toml"),
+        "{}",
+        text(&out.stderr)
+    );
+}
+
+/// Steps of the first part of the interrupted run: the glass bead of single_impact.toml is in
+/// contact with the plate from step ~1991 to ~2050, so the restart happens mid-contact and
+/// the contact history must survive the checkpoint.
+const FIRST_PART: u64 = 2000;
+
+#[test]
+fn run_writes_its_outputs_and_a_restart_continues_bit_for_bit() {
+    let scenario = examples().join("single_impact.toml");
+    let scenario = path_str(&scenario);
+
+    // Interrupted: FIRST_PART steps, then a restart from the checkpoint into the same folder.
+    let a = temp_dir("restart_a");
+    let out = riprap(&[
+        "run",
+        scenario,
+        "--output",
+        path_str(&a),
+        "--steps",
+        &FIRST_PART.to_string(),
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    for f in [
+        "spheres.pvd",
+        "series.csv",
+        "probe_0.csv",
+        "checkpoint.ck",
+        "spheres_000000.vtu",
+    ] {
+        assert!(a.join(f).is_file(), "{f} was not written");
+    }
+    let vtu = std::fs::read_dir(&a)
+        .unwrap()
+        .filter(|e| {
+            e.as_ref()
+                .unwrap()
+                .path()
+                .extension()
+                .is_some_and(|x| x == "vtu")
+        })
+        .count();
+    assert!(vtu >= 2, "only {vtu} .vtu files");
+    let pvd = std::fs::read_to_string(a.join("spheres.pvd")).unwrap();
+    assert!(pvd.contains("spheres_000000.vtu"), "{pvd}");
+    let first = csv_rows(&a.join("series.csv"));
+    assert_eq!(
+        first.last().unwrap()[1],
+        FIRST_PART as f64,
+        "series.csv ends at the last step"
+    );
+    let t_restart = first.last().unwrap()[0];
+    let probe = csv_rows(&a.join("probe_0.csv"));
+    assert_eq!(
+        probe.len() as u64,
+        FIRST_PART + 1,
+        "probe_0.csv has a row per step"
+    );
+
+    let ck = a.join("checkpoint.ck");
+    let out = riprap(&[
+        "run",
+        scenario,
+        "--restart",
+        path_str(&ck),
+        "--output",
+        path_str(&a),
+    ]);
+    assert!(
+        out.status.success(),
+        "restart failed: {}",
+        text(&out.stderr)
+    );
+
+    // Uninterrupted.
+    let b = temp_dir("restart_b");
+    let out = riprap(&["run", scenario, "--output", path_str(&b)]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+
+    for file in ["series.csv", "probe_0.csv"] {
+        let (ra, rb) = (csv_rows(&a.join(file)), csv_rows(&b.join(file)));
+        let after = |rows: &[Vec<f64>]| -> Vec<Vec<u64>> {
+            rows.iter()
+                .filter(|r| r[0] > t_restart)
+                .map(|r| r.iter().map(|v| v.to_bits()).collect())
+                .collect()
+        };
+        let (aa, bb) = (after(&ra), after(&rb));
+        assert!(
+            aa.len() > 10,
+            "{file}: only {} rows after the restart",
+            aa.len()
+        );
+        assert_eq!(aa.len(), bb.len(), "{file}: rows after the restart");
+        for (k, (x, y)) in aa.iter().zip(&bb).enumerate() {
+            assert_eq!(
+                x, y,
+                "{file}: row {k} after the restart differs:\n{:?}\n{:?}",
+                ra[k], rb[k]
+            );
+        }
+        assert_eq!(ra.len(), rb.len(), "{file}: rows in all");
+    }
+    // The bead did bounce, in both: the contact straddled the restart.
+    let series = csv_rows(&b.join("series.csv"));
+    let bounced = csv_rows(&b.join("probe_0.csv")).last().unwrap()[7];
+    assert!(bounced > 0.9, "rebound speed {bounced}");
+    assert!(
+        series.iter().any(|r| r[7] > 0.0 && r[0] > t_restart),
+        "no wall contact after the restart"
+    );
+    let _ = std::fs::remove_dir_all(&a);
+    let _ = std::fs::remove_dir_all(&b);
+}
+
+#[test]
+fn an_unstable_run_fails_with_a_diagnosis_and_keeps_its_output() {
+    let dir = temp_dir("unstable");
+    // The bead 0.5 mm above the plate and a step of 1 ms, 17 times the contact period: the
+    // first step drives it deep into the plate.
+    let body = std::fs::read_to_string(examples().join("single_impact.toml"))
+        .unwrap()
+        .replace(
+            "time_step = 5.0e-7",
+            "time_step = 1.0e-3\nforce_time_step = true\n#",
+        )
+        .replace("0.0, 0.0, 0.006]", "0.0, 0.0, 0.0055]");
+    let file = dir.join("unstable.toml");
+    std::fs::write(&file, &body).unwrap();
+    // Refused by check without force_time_step...
+    std::fs::write(
+        dir.join("unforced.toml"),
+        body.replace("force_time_step = true", ""),
+    )
+    .unwrap();
+    let out = riprap(&["check", path_str(&dir.join("unforced.toml"))]);
+    assert!(!out.status.success());
+    assert!(
+        text(&out.stderr).contains("force_time_step = true"),
+        "{}",
+        text(&out.stderr)
+    );
+    // ... accepted with it, and then the run blows up.
+    let out_dir = dir.join("out");
+    let out = riprap(&["run", path_str(&file), "--output", path_str(&out_dir)]);
+    let stderr = text(&out.stderr);
+    assert!(!out.status.success(), "the run should fail:\n{stderr}");
+    assert!(stderr.contains("unstable"), "{stderr}");
+    assert!(stderr.contains("likely cause"), "{stderr}");
+    assert!(
+        stderr.contains("time step"),
+        "the diagnosis names the time step:\n{stderr}"
+    );
+    assert!(out_dir.join("series.csv").is_file(), "series.csv kept");
+    assert!(
+        out_dir.join("spheres_failed.vtu").is_file(),
+        "spheres_failed.vtu written"
+    );
+    assert!(out_dir.join("spheres.pvd").is_file(), "spheres.pvd kept");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,0 +1,175 @@
+//! Oblique impact of a sphere on a plane wall (Voigt law, friction μ, restitution e < 1).
+//!
+//! Gross sliding throughout (v_t/v_n > 3.5 μ (1+e)): the rigid-body Coulomb impulse solution
+//! (e.g. Brach, Mechanical Impact Dynamics §4; Maw, Barber & Fawcett 1976) is, with normal
+//! impulse J_n = m (1+e) v_n and tangential impulse J_t = μ J_n opposing the slip,
+//!
+//!   v_t' = v_t - μ (1+e) v_n,   ω' = (5/2) μ (1+e) v_n / R  about N × t̂
+//!
+//! (I = (2/5) m R², torque (-R N) × (-J_t t̂) = R J_t N × t̂, N the wall normal into the free
+//! side, t̂ the direction of the tangential velocity). It holds while the contact point keeps
+//! slipping forwards: v_t' - R ω' = v_t - 3.5 μ (1+e) v_n > 0. e is the measured normal
+//! restitution of the same impact.
+//!
+//! Tolerance 1e-9 (relative to the tangential impulse): when the contact slides at every step,
+//! the friction force of each step is exactly μ times that step's normal force (the Coulomb
+//! limit uses the total normal force and bounds spring plus dashpot), so the tangential and
+//! normal impulses are in the ratio μ whatever the time step: Δt enters only through e, which
+//! is measured. What remains is round-off over ~10³ steps (measured ~1e-14).
+
+mod common;
+
+use common::*;
+use riprap::dem::material::{ContactModel, Damping, NormalSpring};
+use riprap::math::Vec3;
+
+const R: f64 = 0.01;
+const DENSITY: f64 = 2500.0;
+const MU: f64 = 0.3;
+
+struct Outcome {
+    /// Measured normal restitution.
+    e: f64,
+    /// Tangential velocity after, along t̂ [m s⁻¹].
+    vt: f64,
+    /// Angular velocity after [rad s⁻¹].
+    w: Vec3,
+}
+
+/// The wall normal (into the free side) and a unit tangent, both oblique to the axes.
+fn frame() -> (Vec3, Vec3) {
+    let n = Vec3::new(0.2, -0.3, 1.0).normalize();
+    let t = n.cross(Vec3::new(1.0, 1.0, 0.0)).normalize();
+    (n, t)
+}
+
+/// Sphere hitting the plane through the origin with normal speed v_n and tangential speed v_t.
+fn impact(spring: NormalSpring, e: f64, vn: f64, vt: f64, steps_per_contact: f64) -> Outcome {
+    let mat = material(DENSITY, 5.0e7, 0.3, MU, e);
+    let model = ContactModel::Voigt {
+        spring,
+        damping: Damping::Restitution,
+    };
+    let m = sphere_mass(DENSITY, R);
+    let tc = match spring {
+        NormalSpring::Linear { stiffness } => std::f64::consts::PI * (m / stiffness).sqrt(),
+        _ => hertz_theory(4.0 / 3.0 * e_star(&mat, &mat) * R.sqrt(), m, vn).duration,
+    };
+    let dt = tc / steps_per_contact;
+    let (n, t) = frame();
+    let mut d = dem(mat, model, open_box(1.0), dt);
+    d.walls.push(plane_wall(Vec3::ZERO, n));
+    d.add_sphere((R + 10.37 * dt * vn) * n, vt * t - vn * n, Vec3::ZERO, R, 0);
+    let imp = run_impact(d, 2.0 * tc, 100_000);
+    let v = imp.state.v[0];
+    // The velocity stays in the plane spanned by n and t̂ (no lateral force).
+    assert!(
+        v.dot(n.cross(t)).abs() < 1e-12 * v.length(),
+        "lateral velocity {v}"
+    );
+    Outcome {
+        e: imp.restitution(),
+        vt: v.dot(t),
+        w: imp.state.w[0],
+    }
+}
+
+fn springs() -> [(&'static str, NormalSpring); 2] {
+    [
+        ("linear", NormalSpring::Linear { stiffness: 2.0e4 }),
+        ("Hertz", NormalSpring::Hertz),
+    ]
+}
+
+#[test]
+fn gross_sliding_matches_coulomb_impulse() {
+    let (n, t) = frame();
+    for (name, spring) in springs() {
+        for e in [1.0, 0.9, 0.5, 0.2] {
+            for ratio in [1.1, 3.0] {
+                // v_t/v_n = ratio × 3.5 μ (1+e): beyond the sliding threshold.
+                let vn = 1.0;
+                let vt = ratio * 3.5 * MU * (1.0 + e) * vn;
+                for steps in [50.0, 500.0] {
+                    let o = impact(spring, e, vn, vt, steps);
+                    let jt = MU * (1.0 + o.e) * vn; // J_t / m
+                    let vt_ref = vt - jt;
+                    let w_ref = 2.5 * jt / R * n.cross(t);
+                    let err_v = (o.vt - vt_ref) / jt;
+                    let err_w = (o.w - w_ref).length() / w_ref.length();
+                    eprintln!(
+                        "{name} e = {e} (measured {:.5}), v_t/v_n = {:.3}, {steps} steps: v_t' \
+                         {:.6} vs {vt_ref:.6} (err {err_v:+.1e}), |ω'| {:.4} vs {:.4} (err \
+                         {err_w:.1e})",
+                        o.e,
+                        vt / vn,
+                        o.vt,
+                        o.w.length(),
+                        w_ref.length()
+                    );
+                    assert!(
+                        err_v.abs() < 1e-9,
+                        "{name} e={e}: v_t' {} vs {vt_ref}",
+                        o.vt
+                    );
+                    assert!(err_w < 1e-9, "{name} e={e}: ω' {} vs {w_ref}", o.w);
+                }
+            }
+        }
+    }
+}
+
+/// Low angle, v_t/v_n = 0.3 × 3.5 μ (1+e): the contact sticks for part of the impact. Checked
+/// against the sticking limit, with u = v_t - R ω·(N × t̂) the tangential velocity of the
+/// contact point (u = v_t before) and J_stick = (2/7) m u the impulse that brings u to zero on a
+/// rigid sphere:
+///
+/// * gross sliding would reverse u to v_t - 3.5 μ (1+e) v_n = -2.3 v_t; here |u'| < |u| (the
+///   tangential spring may give part of it back, reversed, as in Maw, Barber & Fawcett 1976,
+///   but a dissipative contact cannot increase it), i.e. 0 < J_t < 2 J_stick;
+/// * J_t < 0.9 μ J_n: strictly inside the Coulomb bound (the contact did not slide throughout);
+/// * the kinetic energy does not grow, and the spin is in the rolling sense about N × t̂.
+#[test]
+fn low_angle_sticks() {
+    let (n, t) = frame();
+    let axis = n.cross(t);
+    let m = sphere_mass(DENSITY, R);
+    for (name, spring) in springs() {
+        for e in [0.9, 0.5] {
+            let vn = 1.0;
+            let vt = 0.3 * 3.5 * MU * (1.0 + e) * vn;
+            let o = impact(spring, e, vn, vt, 500.0);
+            let u_after = o.vt - R * o.w.dot(axis);
+            let jt = vt - o.vt; // J_t / m
+            let coulomb = MU * (1.0 + o.e) * vn;
+            let stick = 2.0 / 7.0 * vt; // J_t / m that brings u to zero for a rigid sphere
+            let energy = |v_t: f64, v_n: f64, w: f64| {
+                0.5 * m * (v_t * v_t + v_n * v_n) + 0.5 * 0.4 * m * R * R * w * w
+            };
+            let (e0, e1) = (energy(vt, vn, 0.0), energy(o.vt, o.e * vn, o.w.length()));
+            eprintln!(
+                "{name} e = {e}: u {vt:.4} -> {u_after:+.4} (u'/u = {:+.3}), J_t/(μJ_n) = {:.3}, \
+                 J_t/J_stick = {:.3}, energy ratio {:.4}",
+                u_after / vt,
+                jt / coulomb,
+                jt / stick,
+                e1 / e0
+            );
+            assert!(
+                u_after.abs() < vt,
+                "{name} e={e}: slip not reduced: {u_after} vs {vt}"
+            );
+            assert!(
+                jt > 0.0 && jt < 0.9 * coulomb,
+                "{name} e={e}: J_t/m {jt} vs Coulomb {coulomb}"
+            );
+            assert!(
+                jt <= 2.0 * stick * (1.0 + 1e-9),
+                "{name} e={e}: J_t/m {jt} vs stick {stick}"
+            );
+            assert!(e1 <= e0, "{name} e={e}: energy grew {e0} -> {e1}");
+            // The spin is forward (rolling sense), from the friction torque.
+            assert!(o.w.dot(axis) > 0.0 && o.w.cross(axis).length() < 1e-9 * o.w.length());
+        }
+    }
+}
