@@ -43,7 +43,11 @@ pub fn b1_simulation(n: [usize; 3]) -> Simulation {
         friction_coefficient: 0.5,
         restitution_coefficient: 0.5,
     };
-    let domain = Domain { min: Vec3::ZERO, max: hi, periodic: [false; 3] };
+    let domain = Domain {
+        min: Vec3::ZERO,
+        max: hi,
+        periodic: [false; 3],
+    };
     let mut dem = Dem::new(vec![material], ContactModel::HertzMindlin, domain, 3.0e-5);
     dem.neighbors.skin = 0.2 * d;
     dem.spheres.reserve(n[0] * n[1] * n[2]);
@@ -129,7 +133,11 @@ pub struct B1Result {
 }
 
 /// Runs B1 for `steps` steps, recording diagnostics every `every` steps.
-pub fn run_b1(n: [usize; 3], steps: u64, every: u64) -> Result<B1Result, crate::simulation::Instability> {
+pub fn run_b1(
+    n: [usize; 3],
+    steps: u64,
+    every: u64,
+) -> Result<B1Result, crate::simulation::Instability> {
     let mut sim = b1_simulation(n);
     let mut rows = vec![b1_row(&sim)];
     let builds0 = sim.dem.neighbors.builds;
@@ -145,7 +153,13 @@ pub fn run_b1(n: [usize; 3], steps: u64, every: u64) -> Result<B1Result, crate::
         done += chunk;
         rows.push(b1_row(&sim));
     }
-    Ok(B1Result { rows, loop_seconds, n: sim.dem.spheres.len(), steps, rebuilds: sim.dem.neighbors.builds - builds0 })
+    Ok(B1Result {
+        rows,
+        loop_seconds,
+        n: sim.dem.spheres.len(),
+        steps,
+        rebuilds: sim.dem.neighbors.builds - builds0,
+    })
 }
 
 /// Peak resident memory of this process [bytes] (Linux), if known.

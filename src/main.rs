@@ -9,7 +9,11 @@ use riprap::scenario::default::DEFAULT_SCENARIO;
 use riprap::scenario::{build, Source};
 
 #[derive(Parser)]
-#[command(name = "riprap", version, about = "DEM of sand, gravel and armour blocks (METHOD.md)")]
+#[command(
+    name = "riprap",
+    version,
+    about = "DEM of sand, gravel and armour blocks (METHOD.md)"
+)]
 struct Cli {
     /// Worker threads (default: all cores). Results do not depend on it.
     #[arg(long, global = true)]
@@ -65,7 +69,10 @@ fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
     let threads = rayon::current_num_threads();
     println!("B1 box-settle: lattice {lattice:?}, {steps} steps, {threads} thread(s)");
     let r = run_b1(lattice, steps, 2000)?;
-    println!("{:>6} {:>12} {:>12} {:>10} {:>10} {:>10}", "step", "KE [J]", "KE rot [J]", "mean z", "max z", "contacts");
+    println!(
+        "{:>6} {:>12} {:>12} {:>10} {:>10} {:>10}",
+        "step", "KE [J]", "KE rot [J]", "mean z", "max z", "contacts"
+    );
     for row in &r.rows {
         println!(
             "{:>6} {:>12.4e} {:>12.4e} {:>10.5} {:>10.5} {:>10.3}",
@@ -79,7 +86,11 @@ fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
     println!("particle-steps/s: {rate:.4e}");
     println!("particle-steps/s per thread: {:.4e}", rate / threads as f64);
     if let Some(m) = peak_memory() {
-        println!("peak memory: {:.1} MB ({:.0} bytes per sphere)", m as f64 / 1e6, m as f64 / r.n as f64);
+        println!(
+            "peak memory: {:.1} MB ({:.0} bytes per sphere)",
+            m as f64 / 1e6,
+            m as f64 / r.n as f64
+        );
     }
     Ok(())
 }
@@ -87,26 +98,46 @@ fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
 fn source(path: &Option<PathBuf>) -> Result<Source, riprap::scenario::ScenarioError> {
     match path {
         Some(p) => Source::from_file(p),
-        None => Source::from_str(DEFAULT_SCENARIO, "<built-in armour_on_slope.toml>", PathBuf::from(".")),
+        None => Source::from_str(
+            DEFAULT_SCENARIO,
+            "<built-in armour_on_slope.toml>",
+            PathBuf::from("."),
+        ),
     }
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     if let Some(n) = cli.threads {
-        if let Err(e) = rayon::ThreadPoolBuilder::new().num_threads(n).build_global() {
+        if let Err(e) = rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build_global()
+        {
             eprintln!("error: cannot start {n} threads: {e}");
             return ExitCode::FAILURE;
         }
     }
     let result = match cli.command {
-        Command::Run { scenario, restart, output, steps } => (|| {
+        Command::Run {
+            scenario,
+            restart,
+            output,
+            steps,
+        } => (|| {
             let src = source(&scenario)?;
-            eprintln!("riprap: running `{}` from {}", src.scenario.run.name, src.file);
+            eprintln!(
+                "riprap: running `{}` from {}",
+                src.scenario.run.name, src.file
+            );
             let built = build(&src)?;
             eprint!("{}", built.derived.report());
             drop(built);
-            let opts = RunOptions { output_dir: output, restart, progress: true, max_steps: steps };
+            let opts = RunOptions {
+                output_dir: output,
+                restart,
+                progress: true,
+                max_steps: steps,
+            };
             let s = execute(&src, &opts)?;
             eprintln!(
                 "done: t = {:.4} s, {} steps in {:.1} s ({:.3e} sphere-steps/s), {} spheres; results in {}",
@@ -117,10 +148,19 @@ fn main() -> ExitCode {
                 s.spheres,
                 s.output_dir.display()
             );
+            if s.spheres_lost > 0 {
+                eprintln!(
+                    "note: {} sphere(s) left the domain and were removed (an outflow, or a \
+                     domain too small for the motion)",
+                    s.spheres_lost
+                );
+            }
             eprintln!("view: paraview {}/spheres.pvd", s.output_dir.display());
             Ok::<(), anyhow::Error>(())
         })(),
-        Command::Bench { case: BenchCase::B1 { n, steps } } => bench_b1(n, steps),
+        Command::Bench {
+            case: BenchCase::B1 { n, steps },
+        } => bench_b1(n, steps),
         Command::Check { scenario } => (|| {
             let src = source(&scenario)?;
             let built = build(&src)?;

@@ -44,6 +44,8 @@ pub struct RunSummary {
     pub wall_seconds: f64,
     /// Spheres at the end.
     pub spheres: usize,
+    /// Spheres removed because they left the domain (during the whole run).
+    pub spheres_lost: usize,
 }
 
 /// Columns of `series.csv`.
@@ -62,7 +64,8 @@ pub const SERIES_COLUMNS: [&str; 11] = [
 ];
 
 const PROBE_COLUMNS: [&str; 17] = [
-    "time", "step", "x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "fx", "fy", "fz", "tx", "ty", "tz",
+    "time", "step", "x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "fx", "fy", "fz", "tx",
+    "ty", "tz",
 ];
 
 fn every(interval: f64, dt: f64) -> u64 {
@@ -90,7 +93,12 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     if let Some(path) = &opts.restart {
         let ck = Checkpoint::read(path)?;
         if ck.dt.to_bits() != dt.to_bits() {
-            bail!("{}: saved with time step {:e} s, the scenario now gives {:e} s", path.display(), ck.dt, dt);
+            bail!(
+                "{}: saved with time step {:e} s, the scenario now gives {:e} s",
+                path.display(),
+                ck.dt,
+                dt
+            );
         }
         sim = restore(sim, ck);
     }
@@ -105,7 +113,14 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     let mut probes = Vec::new();
     for &id in &sc.output.probes {
         let p = out.join(format!("probe_{id}.csv"));
-        probes.push((id, if resuming { CsvSeries::resume(&p, &PROBE_COLUMNS, t0)? } else { CsvSeries::create(&p, &PROBE_COLUMNS)? }));
+        probes.push((
+            id,
+            if resuming {
+                CsvSeries::resume(&p, &PROBE_COLUMNS, t0)?
+            } else {
+                CsvSeries::create(&p, &PROBE_COLUMNS)?
+            },
+        ));
     }
     if !resuming {
         snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
@@ -147,7 +162,11 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
                 last_line = Instant::now();
                 eprintln!(
                     "  t = {:.4} s, step {} of {}, {} spheres, {} contacts, {:.0} s elapsed",
-                    sim.time, k + 1, total_steps, sim.dem.spheres.len(), sim.dem.stats.pair_contacts,
+                    sim.time,
+                    k + 1,
+                    total_steps,
+                    sim.dem.spheres.len(),
+                    sim.dem.stats.pair_contacts,
                     started.elapsed().as_secs_f64()
                 );
             }
@@ -172,14 +191,17 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         time: sim.time,
         wall_seconds: started.elapsed().as_secs_f64(),
         spheres: sim.dem.spheres.len(),
+        spheres_lost: sim.dem.stats.spheres_lost,
     })
 }
 
 fn progress_bar(n: u64) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new(n);
     bar.set_style(
-        indicatif::ProgressStyle::with_template("{bar:40} {percent:>3}% step {pos}/{len} elapsed {elapsed} ETA {eta}")
-            .expect("valid template"),
+        indicatif::ProgressStyle::with_template(
+            "{bar:40} {percent:>3}% step {pos}/{len} elapsed {elapsed} ETA {eta}",
+        )
+        .expect("valid template"),
     );
     bar
 }
@@ -207,7 +229,9 @@ pub fn checkpoint_of(sim: &Simulation) -> Checkpoint {
 }
 
 fn save(sim: &Simulation, path: &Path) -> anyhow::Result<()> {
-    checkpoint_of(sim).write(path).with_context(|| format!("cannot write {}", path.display()))
+    checkpoint_of(sim)
+        .write(path)
+        .with_context(|| format!("cannot write {}", path.display()))
 }
 
 /// Puts a checkpoint's state into a freshly built simulation of the same scenario.
@@ -255,9 +279,31 @@ fn record_probes(sim: &Simulation, probes: &mut [(u32, CsvSeries)]) -> std::io::
     let s = &sim.dem.spheres;
     for (id, csv) in probes {
         if let Some(i) = s.slot_of(*id) {
-            let (x, v, w, f, t) = (s.position[i], s.velocity[i], s.angular_velocity[i], s.force[i], s.torque[i]);
+            let (x, v, w, f, t) = (
+                s.position[i],
+                s.velocity[i],
+                s.angular_velocity[i],
+                s.force[i],
+                s.torque[i],
+            );
             csv.row(&[
-                sim.time, sim.step as f64, x.x, x.y, x.z, v.x, v.y, v.z, w.x, w.y, w.z, f.x, f.y, f.z, t.x, t.y, t.z,
+                sim.time,
+                sim.step as f64,
+                x.x,
+                x.y,
+                x.z,
+                v.x,
+                v.y,
+                v.z,
+                w.x,
+                w.y,
+                w.z,
+                f.x,
+                f.y,
+                f.z,
+                t.x,
+                t.y,
+                t.z,
             ])?;
         }
     }
@@ -273,17 +319,40 @@ fn write_spheres(sim: &Simulation, path: &Path) -> std::io::Result<()> {
         path,
         &s.position,
         &[
-            Array { name: "id", values: Values::Ints(&id) },
-            Array { name: "diameter", values: Values::Scalars(&diameter) },
-            Array { name: "velocity", values: Values::Vectors(&s.velocity) },
-            Array { name: "angular_velocity", values: Values::Vectors(&s.angular_velocity) },
-            Array { name: "force", values: Values::Vectors(&s.force) },
-            Array { name: "material", values: Values::Ints(&material) },
+            Array {
+                name: "id",
+                values: Values::Ints(&id),
+            },
+            Array {
+                name: "diameter",
+                values: Values::Scalars(&diameter),
+            },
+            Array {
+                name: "velocity",
+                values: Values::Vectors(&s.velocity),
+            },
+            Array {
+                name: "angular_velocity",
+                values: Values::Vectors(&s.angular_velocity),
+            },
+            Array {
+                name: "force",
+                values: Values::Vectors(&s.force),
+            },
+            Array {
+                name: "material",
+                values: Values::Ints(&material),
+            },
         ],
     )
 }
 
-fn snapshot(sim: &Simulation, out: &Path, spheres: &mut PvdSeries, walls: &mut PvdSeries) -> anyhow::Result<()> {
+fn snapshot(
+    sim: &Simulation,
+    out: &Path,
+    spheres: &mut PvdSeries,
+    walls: &mut PvdSeries,
+) -> anyhow::Result<()> {
     let k = spheres.entries().len();
     let name = format!("spheres_{k:06}.vtu");
     write_spheres(sim, &out.join(&name))?;
@@ -293,7 +362,15 @@ fn snapshot(sim: &Simulation, out: &Path, spheres: &mut PvdSeries, walls: &mut P
         let (v, tri) = wall.surface(sim.time, d.min, d.max);
         let name = format!("walls_{k:06}_{w}.vtp");
         let id = vec![w as i64; tri.len()];
-        write_surface(&out.join(&name), &v, &tri, &[Array { name: "wall", values: Values::Ints(&id) }])?;
+        write_surface(
+            &out.join(&name),
+            &v,
+            &tri,
+            &[Array {
+                name: "wall",
+                values: Values::Ints(&id),
+            }],
+        )?;
         walls.add(sim.time, &name, w)?;
     }
     Ok(())
@@ -303,21 +380,35 @@ fn snapshot(sim: &Simulation, out: &Path, spheres: &mut PvdSeries, walls: &mut P
 pub fn plot_energy(out: &Path) -> anyhow::Result<()> {
     let (cols, rows) = read_csv(&out.join("series.csv"))?;
     let col = |name: &str| cols.iter().position(|c| c == name);
-    let (Some(t), Some(kt), Some(kr)) =
-        (col("time"), col("kinetic_energy_translational"), col("kinetic_energy_rotational"))
-    else {
+    let (Some(t), Some(kt), Some(kr)) = (
+        col("time"),
+        col("kinetic_energy_translational"),
+        col("kinetic_energy_rotational"),
+    ) else {
         bail!("series.csv lacks the energy columns");
     };
     let pts = |c: usize| rows.iter().map(|r| (r[t], r[c])).collect::<Vec<_>>();
     let (a, b) = (pts(kt), pts(kr));
     line_plot(
         &out.join("energy.png"),
-        &Axes { title: "Kinetic energy of the spheres", x_label: "time [s]", y_label: "energy [J]", log_y: true },
+        &Axes {
+            title: "Kinetic energy of the spheres",
+            x_label: "time [s]",
+            y_label: "energy [J]",
+            log_y: true,
+        },
         &[
-            Series { label: "translational", points: &a, style: LineStyle::Line },
-            Series { label: "rotational", points: &b, style: LineStyle::Dashed },
+            Series {
+                label: "translational",
+                points: &a,
+                style: LineStyle::Line,
+            },
+            Series {
+                label: "rotational",
+                points: &b,
+                style: LineStyle::Dashed,
+            },
         ],
     )?;
     Ok(())
 }
-

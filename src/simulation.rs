@@ -17,7 +17,7 @@ use crate::dem::forces::{compute_forces, MeshCandidates};
 use crate::dem::insertion::Feeder;
 use crate::dem::integrate::{drift, half_kick};
 use crate::dem::{Dem, WALL_SLOTS_EMPTY};
-use crate::math::is_finite;
+use crate::math::{is_finite, Vec3};
 
 /// Why a run stopped before its end.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -103,20 +103,23 @@ impl Simulation {
     }
 
     /// Wraps periodic axes and removes spheres outside the domain; true if any was removed.
+    /// A sphere that leaves at an absurd speed (or with a non-finite state) is kept, so that the
+    /// stability check reports it instead of the run quietly losing it.
     fn apply_boundaries(&mut self) -> bool {
         let d = &mut self.dem;
         let domain = d.domain;
-        let mut lost = 0;
-        for x in d.spheres.position.iter_mut() {
+        let v_max = d.limits.max_speed;
+        let s = &mut d.spheres;
+        for x in s.position.iter_mut() {
             *x = domain.wrap(*x);
-            lost += usize::from(!(domain.contains(*x) || !is_finite(*x)));
         }
+        let stays = |x: Vec3, v: Vec3| domain.contains(x) || !is_finite(x) || !(v.length() <= v_max);
+        let lost = (0..s.len()).filter(|&i| !stays(s.position[i], s.velocity[i])).count();
         if lost == 0 {
             return false; // The common case allocates nothing.
         }
-        let keep: Vec<bool> =
-            d.spheres.position.iter().map(|&x| domain.contains(x) || !is_finite(x)).collect();
-        d.spheres.retain(&keep);
+        let keep: Vec<bool> = (0..s.len()).map(|i| stays(s.position[i], s.velocity[i])).collect();
+        s.retain(&keep);
         let mut k = 0;
         d.wall_slots.retain(|_| {
             k += 1;

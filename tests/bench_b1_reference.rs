@@ -20,9 +20,17 @@ fn b1_matches_liggghts_and_lammps() {
     for &(step, ke_l, ke_m, z_l, z_m, c_l, c_m) in &REFERENCE {
         let row = r.rows.iter().find(|x| x.step == step).expect("row");
         let (lo, hi) = (ke_l.min(ke_m) * 0.99, ke_l.max(ke_m) * 1.01);
-        assert!(row.kinetic >= lo && row.kinetic <= hi, "step {step}: KE {} outside [{lo}, {hi}]", row.kinetic);
+        assert!(
+            row.kinetic >= lo && row.kinetic <= hi,
+            "step {step}: KE {} outside [{lo}, {hi}]",
+            row.kinetic
+        );
         let z = 0.5 * (z_l + z_m);
-        assert!((row.mean_z - z).abs() < 0.005 * d, "step {step}: mean z {} vs {z}", row.mean_z);
+        assert!(
+            (row.mean_z - z).abs() < 0.005 * d,
+            "step {step}: mean z {} vs {z}",
+            row.mean_z
+        );
         let (lo, hi) = (c_l.min(c_m) * 0.98, c_l.max(c_m) * 1.02);
         assert!(
             row.contacts_per_sphere >= lo && row.contacts_per_sphere <= hi,

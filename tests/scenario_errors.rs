@@ -452,6 +452,10 @@ fn wrong_types() {
 
 #[test]
 fn missing_keys() {
+    // A whole table missing: line 1, the table's name.
+    let text = format!("[domain]{}", BASE.split_once("[domain]").unwrap().1);
+    let msg = refused_in(&text, "[domain]", "run", &["missing field `run`"]);
+    assert!(!msg.contains("domain.run"), "{msg}");
     let text = BASE.replace("end_time = 0.1\n", "");
     refused_in(
         &text,

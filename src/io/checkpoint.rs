@@ -72,11 +72,17 @@ impl Checkpoint {
         }
         let version = u32::from_le_bytes(bytes[8..12].try_into().expect("4 bytes"));
         if version != VERSION {
-            return Err(bad(&format!("format version {version}, this riprap reads {VERSION}")));
+            return Err(bad(&format!(
+                "format version {version}, this riprap reads {VERSION}"
+            )));
         }
         let len = u64::from_le_bytes(bytes[12..20].try_into().expect("8 bytes")) as usize;
         if bytes.len() != 24 + len {
-            return Err(bad(&format!("truncated: {} bytes, expected {}", bytes.len(), 24 + len)));
+            return Err(bad(&format!(
+                "truncated: {} bytes, expected {}",
+                bytes.len(),
+                24 + len
+            )));
         }
         let payload = &bytes[20..20 + len];
         let crc = u32::from_le_bytes(bytes[20 + len..].try_into().expect("4 bytes"));
@@ -124,13 +130,22 @@ mod tests {
         let c = sample();
         c.write(&path).unwrap();
         let r = Checkpoint::read(&path).unwrap();
-        assert_eq!(r.spheres.velocity[0].y.to_bits(), c.spheres.velocity[0].y.to_bits());
+        assert_eq!(
+            r.spheres.velocity[0].y.to_bits(),
+            c.spheres.velocity[0].y.to_bits()
+        );
         assert_eq!(r.step, 7);
         let mut bytes = std::fs::read(&path).unwrap();
         bytes[30] ^= 1;
         std::fs::write(&path, &bytes).unwrap();
-        assert!(Checkpoint::read(&path).unwrap_err().to_string().contains("checksum"));
+        assert!(Checkpoint::read(&path)
+            .unwrap_err()
+            .to_string()
+            .contains("checksum"));
         std::fs::write(&path, &bytes[..40]).unwrap();
-        assert!(Checkpoint::read(&path).unwrap_err().to_string().contains("truncated"));
+        assert!(Checkpoint::read(&path)
+            .unwrap_err()
+            .to_string()
+            .contains("truncated"));
     }
 }

@@ -16,17 +16,32 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// Writes `bytes` to `path` so that readers see either the old file or the
-/// complete new one, never a partial file.
+/// complete new one, never a partial file, and the new file survives a power
+/// cut once this returns (used for checkpoints).
 ///
 /// The data goes to `<path>.tmp` in the same directory (a rename is only
 /// atomic within one file system), is fsynced, and is then renamed over
 /// `path`. On failure the temporary file is removed and `path` is untouched.
 pub(crate) fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    write_via_tmp(path, bytes, true)
+}
+
+/// Like [`write_atomically`] but without forcing the data to disk: a crashed
+/// process still leaves the old or the new file, never a partial one. For
+/// output that is rewritten often (VTK frames, `.pvd`, plots), where an fsync
+/// per file would dominate the run time of small cases.
+pub(crate) fn write_replacing(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    write_via_tmp(path, bytes, false)
+}
+
+fn write_via_tmp(path: &Path, bytes: &[u8], durable: bool) -> std::io::Result<()> {
     let tmp = tmp_path(path, ".tmp");
     let result = (|| {
         let mut file = File::create(&tmp)?;
         file.write_all(bytes)?;
-        file.sync_all()?;
+        if durable {
+            file.sync_all()?;
+        }
         drop(file);
         fs::rename(&tmp, path)
     })();
@@ -35,7 +50,9 @@ pub(crate) fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()>
         let _ = fs::remove_file(&tmp);
         return result;
     }
-    sync_parent_dir(path);
+    if durable {
+        sync_parent_dir(path);
+    }
     result
 }
 

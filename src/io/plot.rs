@@ -105,7 +105,7 @@ pub fn line_plot(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), Plot
                 draw(&root, axes, series)?;
                 root.present().map_err(drawing)?;
             }
-            super::write_atomically(path, svg.as_bytes())?;
+            super::write_replacing(path, svg.as_bytes())?;
         }
         Some("png") => {
             // The encoder picks the format from the extension, so the

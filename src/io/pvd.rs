@@ -1,7 +1,7 @@
 //! ParaView collection files (.pvd): the list of (time, file) pairs that
 //! turns a folder of VTK frames into one animated time series.
 
-use super::{invalid_data, invalid_input, write_atomically, xml_escape};
+use super::{invalid_data, invalid_input, write_replacing, xml_escape};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -86,7 +86,7 @@ impl PvdSeries {
             );
         }
         xml.push_str("  </Collection>\n</VTKFile>\n");
-        write_atomically(&self.path, xml.as_bytes())
+        write_replacing(&self.path, xml.as_bytes())
     }
 }
 

@@ -7,7 +7,7 @@
 //! compression library, and it stores every f64 exactly. Each file is written
 //! atomically, so ParaView never loads a half-written frame.
 
-use super::{invalid_input, write_atomically, xml_escape};
+use super::{invalid_input, write_replacing, xml_escape};
 use glam::DVec3;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -295,7 +295,7 @@ impl VtkFile {
         bytes.reserve(self.data.len() + 40);
         bytes.extend_from_slice(&self.data);
         bytes.extend_from_slice(b"\n  </AppendedData>\n</VTKFile>\n");
-        write_atomically(path, &bytes)
+        write_replacing(path, &bytes)
     }
 }
 

@@ -189,7 +189,7 @@ fn material_or_default(
     }
 }
 
-/// Checks a scenario and builds the simulation. `force_time_step` overrides the file's flag.
+/// Checks a scenario and builds the simulation.
 pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     let sc = &src.scenario;
     positive(src, "run.end_time", sc.run.end_time)?;
@@ -436,7 +436,12 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         }
     }
     let limits = Limits {
-        max_speed: positive(src, "run.max_speed", sc.run.max_speed.unwrap_or(100.0))?,
+        // An impact at 20 times the expected speed means the integration has failed.
+        max_speed: positive(
+            src,
+            "run.max_speed",
+            sc.run.max_speed.unwrap_or(20.0 * v_ref),
+        )?,
         max_overlap_ratio: positive(
             src,
             "run.max_overlap_ratio",
@@ -465,7 +470,7 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         min_period,
         max_time_step: max_dt,
         time_step: dt,
-        steps: (sc.run.end_time / dt).ceil() as u64,
+        steps: (sc.run.end_time / dt).round() as u64,
         spheres: (dem.spheres.len(), n_fed),
         pairings,
         // Per sphere: state ~200 B, neighbour pairs ~8 × 60 B, wall slots 336 B.

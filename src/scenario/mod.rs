@@ -355,7 +355,8 @@ fn parse_error(text: &str, file: &str, e: toml::de::Error) -> ScenarioError {
         }
     }
     let mut path = Vec::new();
-    if let Some(span) = err.span() {
+    // (An error about the whole document, such as a missing [run], has the root's span.)
+    if let Some(span) = err.span().filter(|s| *s != root.span()) {
         locate(&root, span.start, &mut path);
     }
     let message = err.message().trim_end().to_string();

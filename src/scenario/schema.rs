@@ -49,7 +49,7 @@ pub struct RunSection {
     pub reference_velocity: Option<f64>,
     /// Verlet skin as a fraction of the largest diameter [-] (default 0.2).
     pub skin_fraction: Option<f64>,
-    /// Largest plausible sphere speed [m s⁻¹] (default 100).
+    /// Largest plausible sphere speed [m s⁻¹] (default 20 × `reference_velocity`).
     pub max_speed: Option<f64>,
     /// Largest plausible overlap / smaller radius [-] (default 0.5).
     pub max_overlap_ratio: Option<f64>,

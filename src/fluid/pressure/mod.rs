@@ -46,6 +46,8 @@ pub struct Projection {
     p_hat: Vec<f64>,
     /// q = (1 − ρ₀/ρ̄_f) G p̂ on faces [Pa m⁻¹].
     q: [Vec<f64>; 3],
+    /// A copy of u* for repeated passes (sized on first use) [m s⁻¹].
+    u_star: [Vec<f64>; 3],
 }
 
 /// The pressure fields one projection reads and writes (padded, ghosts filled on exit).
@@ -75,15 +77,22 @@ impl Projection {
             rhs: vec![0.0; grid.cell_count()],
             p_hat: grid.field(),
             q: std::array::from_fn(|_| grid.field()),
+            u_star: std::array::from_fn(|_| grid.field()),
         }
     }
 
     /// Projects `u` (faces, ghosts filled, boundary faces at their new values) onto the
-    /// divergence-free fields with the splitting of the module docs and writes pⁿ⁺¹.
+    /// divergence-free fields with the splitting of the module docs and writes pⁿ⁺¹; returns
+    /// the number of passes made.
     ///
     /// `regions[a]` are the faces of component a that the projection may change (not the
     /// boundary faces of non-periodic axes). `rho` is ρ̄ at cell centres with ghosts, `dt` the
     /// step [s], `r` = Δtⁿ/Δtⁿ⁻¹ (0 on the first step: p̂ = pⁿ).
+    ///
+    /// With variable density, `passes` > 1 repeats the projection of the same u* with p̂ set
+    /// to the previous pass's pⁿ⁺¹ (a fixed-point iteration that converges, at the rate
+    /// 1 − ρ₀/ρ̄_max per pass, to the exact variable-coefficient projection), until the
+    /// pressure changes by less than `passes.tolerance` times its largest value.
     #[allow(clippy::too_many_arguments)]
     pub fn project(
         &mut self,
@@ -95,37 +104,55 @@ impl Projection {
         rho: &[f64],
         dt: f64,
         r: f64,
-    ) {
+        passes: Passes,
+    ) -> usize {
         let st = Stencil::new(grid);
         let (rho_min, rho_max) = density_range(grid, rho);
         let rho0 = rho_min;
         let variable = rho_max > rho_min;
-
-        // q = (1 − ρ₀/ρ̄_f) G p̂ on the faces the projection moves; zero on boundary faces.
-        if variable {
-            let (pn, pm) = (p.current, p.previous);
-            for_each_chunk(&mut self.p_hat, grid.padded()[0], |row, line| {
-                let base = row * line.len();
-                for (i, x) in line.iter_mut().enumerate() {
-                    *x = (1.0 + r) * pn[base + i] - r * pm[base + i];
-                }
-            });
-            let p_hat = &self.p_hat;
-            for (a, q) in self.q.iter_mut().enumerate() {
-                update_region(grid, &regions[a], q, |c, _| {
-                    let rho_f = interp_to_face(&st, a, rho, c);
-                    (1.0 - rho0 / rho_f) * gradient(&st, a, p_hat, c)
-                });
-                copy_periodic_face(grid, bcs, a, q);
+        let max_passes = if variable { passes.max.max(1) } else { 1 };
+        if max_passes > 1 {
+            for (s, v) in self.u_star.iter_mut().zip(u.iter()) {
+                s.resize(v.len(), 0.0);
+                s.copy_from_slice(v);
             }
         }
 
-        // rhs = (ρ₀/Δt) D u* + D q, compact.
-        let [nx, ny, _] = grid.n;
-        {
-            let uu = [&u[0][..], &u[1][..], &u[2][..]];
-            let qq = [&self.q[0][..], &self.q[1][..], &self.q[2][..]];
-            for_each_chunk(&mut self.rhs, nx, |row, line| {
+        let mut pass = 0;
+        loop {
+            // p̂: the extrapolation on the first pass, the previous pass's pⁿ⁺¹ afterwards.
+            if variable {
+                let (pn, pm) = (p.current, p.previous);
+                if pass == 0 {
+                    for_each_chunk(&mut self.p_hat, grid.padded()[0], |row, line| {
+                        let base = row * line.len();
+                        for (i, x) in line.iter_mut().enumerate() {
+                            *x = (1.0 + r) * pn[base + i] - r * pm[base + i];
+                        }
+                    });
+                } else {
+                    self.p_hat.copy_from_slice(p.next);
+                    for (v, s) in u.iter_mut().zip(self.u_star.iter()) {
+                        v.copy_from_slice(s);
+                    }
+                }
+                // q = (1 − ρ₀/ρ̄_f) G p̂ on the faces the projection moves; 0 on boundaries.
+                let p_hat = &self.p_hat;
+                for (a, q) in self.q.iter_mut().enumerate() {
+                    update_region(grid, &regions[a], q, |c, _| {
+                        let rho_f = interp_to_face(&st, a, rho, c);
+                        (1.0 - rho0 / rho_f) * gradient(&st, a, p_hat, c)
+                    });
+                    copy_periodic_face(grid, bcs, a, q);
+                }
+            }
+
+            // rhs = (ρ₀/Δt) D u* + D q, compact.
+            let [nx, ny, _] = grid.n;
+            {
+                let uu = [&u[0][..], &u[1][..], &u[2][..]];
+                let qq = [&self.q[0][..], &self.q[1][..], &self.q[2][..]];
+                for_each_chunk(&mut self.rhs, nx, |row, line| {
                     let c0 = grid.cell(0, row % ny, row / ny);
                     for (i, f) in line.iter_mut().enumerate() {
                         let c = c0 + i;
@@ -136,22 +163,54 @@ impl Projection {
                         };
                         *f = rho0 / dt * divergence(&st, uu, c) + dq;
                     }
-            });
-        }
-        self.solver.solve(&mut self.rhs);
-        grid.scatter_interior(&self.rhs, p.next);
-        fill_scalar_ghosts(grid, bcs, p.next);
+                });
+            }
+            self.solver.solve(&mut self.rhs);
+            grid.scatter_interior(&self.rhs, p.next);
+            fill_scalar_ghosts(grid, bcs, p.next);
 
-        // uⁿ⁺¹ = u* − (Δt/ρ₀)(G pⁿ⁺¹ − q).
-        let p_next = &*p.next;
-        for (a, ua) in u.iter_mut().enumerate() {
-            let q = &self.q[a];
-            update_region(grid, &regions[a], ua, |c, old| {
-                let q_c = if variable { q[c] } else { 0.0 };
-                old - dt / rho0 * (gradient(&st, a, p_next, c) - q_c)
-            });
+            // uⁿ⁺¹ = u* − (Δt/ρ₀)(G pⁿ⁺¹ − q).
+            let p_next = &*p.next;
+            for (a, ua) in u.iter_mut().enumerate() {
+                let q = &self.q[a];
+                update_region(grid, &regions[a], ua, |c, old| {
+                    let q_c = if variable { q[c] } else { 0.0 };
+                    old - dt / rho0 * (gradient(&st, a, p_next, c) - q_c)
+                });
+            }
+            pass += 1;
+            if pass >= max_passes {
+                return pass;
+            }
+            // Converged when the pressure stopped changing (serial max: deterministic).
+            let (mut change, mut size) = (0.0f64, 0.0f64);
+            for (a, b) in p_next.iter().zip(&self.p_hat) {
+                change = change.max((a - b).abs());
+                size = size.max(a.abs());
+            }
+            if change <= passes.tolerance * size {
+                return pass;
+            }
         }
     }
+}
+
+/// How many fixed-point passes of the variable-density projection to make (see
+/// [`Projection::project`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Passes {
+    /// Largest number of passes (1: the single pass of Dodd & Ferrante).
+    pub max: usize,
+    /// Stop when max |pⁿ⁺¹ − p̂| ≤ tolerance · max |pⁿ⁺¹|.
+    pub tolerance: f64,
+}
+
+impl Passes {
+    /// One pass: the splitting as Dodd & Ferrante (2014) make it.
+    pub const ONE: Passes = Passes {
+        max: 1,
+        tolerance: 0.0,
+    };
 }
 
 /// Smallest and largest ρ̄ over the interior cells [kg m⁻³] (min and max are exact in any
