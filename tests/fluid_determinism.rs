@@ -10,8 +10,8 @@
 
 use glam::DVec3;
 use riprap::fluid::{
-    Boundaries, Boundary, DrivingPressureGradient, Fluid, FluidParameters, FluidState,
-    Smagorinsky, StaggeredGrid,
+    Boundaries, Boundary, DrivingPressureGradient, Fluid, FluidParameters, FluidState, Smagorinsky,
+    StaggeredGrid,
 };
 
 fn case() -> Fluid {

@@ -4,9 +4,7 @@
 //! Run: `cargo test --release --test fluid_inflow_outflow -- --nocapture` (about a second).
 
 use glam::DVec3;
-use riprap::fluid::{
-    Boundaries, Boundary, Fluid, FluidParameters, InflowVelocity, StaggeredGrid,
-};
+use riprap::fluid::{Boundaries, Boundary, Fluid, FluidParameters, InflowVelocity, StaggeredGrid};
 use std::f64::consts::TAU;
 
 const RHO: f64 = 1000.0;

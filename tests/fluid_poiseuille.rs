@@ -34,9 +34,8 @@ fn start_up(z: f64, t: f64) -> f64 {
     for n in (1..200).step_by(2) {
         let n = n as f64;
         let decay = (-n * n * PI * PI * NU * t / (H * H)).exp();
-        transient += 4.0 * G * H * H / (RHO * NU * PI.powi(3) * n.powi(3))
-            * (n * PI * z / H).sin()
-            * decay;
+        transient +=
+            4.0 * G * H * H / (RHO * NU * PI.powi(3) * n.powi(3)) * (n * PI * z / H).sin() * decay;
     }
     steady(z) - transient
 }
@@ -98,7 +97,10 @@ fn start_up_and_steady_profile_converge_at_second_order() {
         println!("{name}: orders {p1:.3}, {p2:.3}");
         // Second order: the wall ghost value 2U_w − u₁ and the central differences are both
         // O(Δ²); the time error with the viscous step Δt ∝ Δ² is O(Δ⁴). Orders within 0.1.
-        assert!((p1 - 2.0).abs() < 0.1 && (p2 - 2.0).abs() < 0.1, "{name}: {p1} {p2}");
+        assert!(
+            (p1 - 2.0).abs() < 0.1 && (p2 - 2.0).abs() < 0.1,
+            "{name}: {p1} {p2}"
+        );
     }
     // Accuracy on the finest grid, relative to u_max = 1 m/s: measured ~1e-4.
     assert!(start_errors[2] < 3e-4 && steady_errors[2] < 3e-4);

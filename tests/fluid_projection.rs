@@ -65,8 +65,14 @@ fn projected_velocity_is_divergence_free_to_round_off() {
         // after, what is left is the round-off of the transforms: ε·(1/Δ)·O(log N) ≈
         // 1e-14 s⁻¹. 1e-11 s⁻¹ (≈ 3e-13 of the initial divergence) leaves room for compilers.
         println!("{name}: max |D u| before {before:.3e}, after {after:.3e} s^-1");
-        assert!(before > 1.0, "{name}: the random field should not be solenoidal");
-        assert!(after < 1e-11, "{name}: divergence {after:e} after projection");
+        assert!(
+            before > 1.0,
+            "{name}: the random field should not be solenoidal"
+        );
+        assert!(
+            after < 1e-11,
+            "{name}: divergence {after:e} after projection"
+        );
     }
 }
 

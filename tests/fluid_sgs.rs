@@ -49,7 +49,7 @@ fn uniform_shear_without_damping_gives_the_smagorinsky_value() {
     };
     let g = *fluid.grid();
     let delta = g.cell_volume().cbrt(); // 0.05 m
-    // |S| = sqrt(2 S_ij S_ij) = γ for simple shear (S_xz = S_zx = γ/2) [57].
+                                        // |S| = sqrt(2 S_ij S_ij) = γ for simple shear (S_xz = S_zx = γ/2) [57].
     let expected = RHO * (0.1 * delta).powi(2) * GAMMA;
     let out = mu_t(&fluid, &model);
     let mut worst = 0.0f64;
@@ -83,7 +83,10 @@ fn van_driest_damping_follows_the_wall_distance() {
         let f_w = 1.0 - (-y_plus / 25.0).exp();
         let expected = RHO * (0.1 * delta * f_w).powi(2) * GAMMA;
         if k < 3 {
-            println!("z = {z:.3} m: y+ = {y_plus:.1}, F_w = {f_w:.4}, μ_SGS = {:.4e}", out[c]);
+            println!(
+                "z = {z:.3} m: y+ = {y_plus:.1}, F_w = {f_w:.4}, μ_SGS = {:.4e}",
+                out[c]
+            );
         }
         worst = worst.max((out[c] - expected).abs() / expected);
     }

@@ -87,7 +87,10 @@ fn oscillatory_boundary_layer_converges_to_the_analytical_solution() {
     // order approaches 2 from below as the layer is resolved (measured 1.78, 1.86, 1.94, 1.97
     // for Δz = δ/2 … δ/32: the next error term is relatively O(Δz/δ)), so: within 0.2 of 2
     // on the pair δ/4, δ/8 and within 0.1 on δ/8, δ/16.
-    assert!((p1 - 2.0).abs() < 0.2 && (p2 - 2.0).abs() < 0.1, "orders {p1} {p2}");
+    assert!(
+        (p1 - 2.0).abs() < 0.2 && (p2 - 2.0).abs() < 0.1,
+        "orders {p1} {p2}"
+    );
     // Δz = δ/16 resolves the layer to 0.1 % of U_max (measured 9.4e-4).
     assert!(errors[2] < 1.2e-3, "error {}", errors[2]);
 }

@@ -26,8 +26,12 @@ fn exact(x: DVec3, t: f64) -> DVec3 {
 fn vortex(n: usize) -> Fluid {
     let d = TAU / n as f64;
     let grid = StaggeredGrid::new([n, 1, n], DVec3::new(TAU, d, TAU), DVec3::ZERO);
-    let mut fluid = Fluid::new(grid, Boundaries::periodic(), FluidParameters::laminar(1.0, NU))
-        .expect("valid set-up");
+    let mut fluid = Fluid::new(
+        grid,
+        Boundaries::periodic(),
+        FluidParameters::laminar(1.0, NU),
+    )
+    .expect("valid set-up");
     fluid.set_velocity(|x| exact(x, 0.0));
     fluid
 }
@@ -135,8 +139,12 @@ fn every_axis_pair_gives_the_same_answer() {
             v[q] = -x[p].cos() * x[q].sin() * f;
             v
         };
-        let mut fluid =
-            Fluid::new(grid, Boundaries::periodic(), FluidParameters::laminar(1.0, NU)).unwrap();
+        let mut fluid = Fluid::new(
+            grid,
+            Boundaries::periodic(),
+            FluidParameters::laminar(1.0, NU),
+        )
+        .unwrap();
         fluid.set_velocity(|x| field(x, 0.0));
         for _ in 0..40 {
             fluid.step(T_END / 40.0);

@@ -10,8 +10,12 @@ use std::f64::consts::TAU;
 #[test]
 fn limits_follow_the_formula() {
     let grid = StaggeredGrid::new([10, 5, 4], DVec3::new(1.0, 1.0, 0.2), DVec3::ZERO);
-    let mut fluid = Fluid::new(grid, Boundaries::periodic(), FluidParameters::laminar(1.0, 0.0))
-        .unwrap();
+    let mut fluid = Fluid::new(
+        grid,
+        Boundaries::periodic(),
+        FluidParameters::laminar(1.0, 0.0),
+    )
+    .unwrap();
     // At rest and inviscid there is no limit but the user bound.
     assert_eq!(fluid.stable_time_step(), f64::INFINITY);
     fluid.parameters_mut().time_step.max = 0.7;
@@ -31,19 +35,21 @@ fn limits_follow_the_formula() {
 
 #[test]
 fn adaptive_steps_land_on_the_end_time_and_keep_second_order() {
-    // Taylor-Green vortex (see fluid_taylor_green) with the adaptive step at a Courant number
-    // of 0.3, then at 0.15: the variable-step AB2 keeps the time error second order.
+    // Taylor-Green vortex (see fluid_taylor_green) with the adaptive step at the default
+    // limits (C = 0.3, C_v = 0.2), then with both halved: every step halves, and the
+    // variable-step AB2 keeps the time error second order.
     let nu = 0.1;
     let exact = |x: DVec3, t: f64| {
         let f = (-2.0 * nu * t).exp();
         DVec3::new(x.x.sin() * x.z.cos() * f, 0.0, -x.x.cos() * x.z.sin() * f)
     };
     let n = 32;
-    let run = |cfl: f64| {
+    let run = |scale: f64| {
         let d = TAU / n as f64;
         let grid = StaggeredGrid::new([n, 1, n], DVec3::new(TAU, d, TAU), DVec3::ZERO);
         let mut par = FluidParameters::laminar(1.0, nu);
-        par.time_step.cfl = cfl;
+        par.time_step.cfl *= scale;
+        par.time_step.viscous *= scale;
         let mut fluid = Fluid::new(grid, Boundaries::periodic(), par).unwrap();
         fluid.set_velocity(|x| exact(x, 0.0));
         while fluid.time() < 1.0 {
@@ -51,9 +57,9 @@ fn adaptive_steps_land_on_the_end_time_and_keep_second_order() {
         }
         fluid
     };
-    let coarse = run(0.3);
-    let fine = run(0.15);
-    let finest = run(0.0375);
+    let coarse = run(1.0);
+    let fine = run(0.5);
+    let finest = run(0.125);
     assert_eq!(coarse.time(), 1.0, "the last step lands on t_end exactly");
     let diff = |a: &Fluid, b: &Fluid| {
         a.velocity()[0]
@@ -68,8 +74,7 @@ fn adaptive_steps_land_on_the_end_time_and_keep_second_order() {
         coarse.steps(),
         fine.steps()
     );
-    // Halving the Courant number halves every step (the speed decays smoothly), so the
-    // temporal error falls by 4; the reference's own error (1/64 of the coarse) and the
+    // The temporal error falls by 4; the reference's own error (1/64 of the coarse) and the
     // shortened last step leave the order within 0.15 of 2.
     assert!((order - 2.0).abs() < 0.15, "order {order}");
 }

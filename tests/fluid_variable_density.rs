@@ -47,7 +47,13 @@ fn heavy_slab_falls_with_the_exact_buoyant_acceleration() {
     let grid = StaggeredGrid::new([4, 4, 32], DVec3::new(0.04, 0.04, 0.32), DVec3::ZERO);
     let mut fluid = Fluid::new(grid, Boundaries::periodic(), parameters()).unwrap();
     // Quartz between z = 0.12 and 0.20 m: a quarter of the column.
-    fluid.set_mixture_density(|x| if (0.12..0.2).contains(&x.z) { RHO_S } else { RHO_W });
+    fluid.set_mixture_density(|x| {
+        if (0.12..0.2).contains(&x.z) {
+            RHO_S
+        } else {
+            RHO_W
+        }
+    });
     let mean = RHO_W + 0.25 * (RHO_S - RHO_W);
     let a = -G * (mean - RHO_W) / mean; // −2.865 m s⁻²
     let dt = 1e-3;
@@ -68,7 +74,10 @@ fn heavy_slab_falls_with_the_exact_buoyant_acceleration() {
         // Each step adds a Δt exactly, the first (iterated to convergence) included:
         // relative 1e-10 is the first step's pressure tolerance (1e-13) amplified by ρ̄/ρ₀.
         let accel = (w0 - w_last) / dt;
-        assert!((accel - a).abs() < 1e-10 * a.abs(), "step {n}: {accel} vs {a}");
+        assert!(
+            (accel - a).abs() < 1e-10 * a.abs(),
+            "step {n}: {accel} vs {a}"
+        );
         w_last = w0;
     }
     let t = fluid.time();
@@ -79,7 +88,9 @@ fn heavy_slab_falls_with_the_exact_buoyant_acceleration() {
     assert!((w_last - a * t).abs() < 1e-10 * (a * t).abs());
     // Horizontal velocities stay zero.
     for comp in [0, 1] {
-        let m = fluid.velocity()[comp].iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let m = fluid.velocity()[comp]
+            .iter()
+            .fold(0.0f64, |m, x| m.max(x.abs()));
         assert!(m < 1e-14, "component {comp}: {m:e}");
     }
 }
@@ -128,9 +139,9 @@ fn heavy_cube_released_in_still_water() {
     let inside = |x: DVec3| (x - DVec3::splat(0.08)).abs().max_element() < 0.02;
     fluid.set_mixture_density(|x| if inside(x) { RHO_S } else { RHO_W });
     let excess_mass = (RHO_S - RHO_W) * 0.04f64.powi(3); // [kg]
-    // 5 steps of 2 ms: the cube would have moved by 0.25 mm, 2.5 % of a cell. ρ̄ is fixed in
-    // space in the fluid-only solver (the coupling moves it with the solids), so only the
-    // start of the fall is meaningful here.
+                                                         // 5 steps of 2 ms: the cube would have moved by 0.25 mm, 2.5 % of a cell. ρ̄ is fixed in
+                                                         // space in the fluid-only solver (the coupling moves it with the solids), so only the
+                                                         // start of the fall is meaningful here.
     let dt = 2e-3;
     let steps = 5;
     let mut max_div = 0.0f64;

@@ -26,13 +26,12 @@ pub fn advection(st: &Stencil, u: Velocity, a: usize, c: usize) -> f64 {
     let ua = u[a];
     let sa = st.s[a];
     let mut sum = 0.0;
-    for b in 0..3 {
+    for (b, ub) in u.iter().enumerate() {
         if b == a {
             let hi = 0.5 * (ua[c] + ua[c + sa]);
             let lo = 0.5 * (ua[c - sa] + ua[c]);
             sum += (hi * hi - lo * lo) * st.inv_d[a];
         } else {
-            let ub = u[b];
             let sb = st.s[b];
             let edge = |e: usize| 0.25 * (ub[e] + ub[e - sa]) * (ua[e] + ua[e - sb]);
             sum += (edge(c + sb) - edge(c)) * st.inv_d[b];

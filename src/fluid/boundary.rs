@@ -171,9 +171,8 @@ fn for_each_in_plane(grid: &StaggeredGrid, axis: usize, mut f: impl FnMut(usize)
 
 /// Fills the ghost values of a cell-centred scalar: periodic copy, or zero normal gradient.
 pub fn fill_scalar_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, f: &mut [f64]) {
-    let s = grid.strides();
-    for a in 0..3 {
-        let (sa, na) = (s[a], grid.n[a]);
+    for (a, &sa) in grid.strides().iter().enumerate() {
+        let na = grid.n[a];
         let periodic = bcs.is_periodic(a);
         for_each_in_plane(grid, a, |base| {
             let (lo, hi) = (base, base + (na + 1) * sa);
@@ -190,15 +189,9 @@ pub fn fill_scalar_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, f: &mut [f64])
 
 /// Sets the normal velocity on the boundary faces (walls, free slip, inflow at time `t`; outflow
 /// faces keep their value) and fills all velocity ghosts, as in the table of the module docs.
-pub fn fill_velocity_ghosts(
-    grid: &StaggeredGrid,
-    bcs: &Boundaries,
-    u: &mut [Vec<f64>; 3],
-    t: f64,
-) {
-    let s = grid.strides();
-    for a in 0..3 {
-        let (sa, na) = (s[a], grid.n[a]);
+pub fn fill_velocity_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec<f64>; 3], t: f64) {
+    for (a, &sa) in grid.strides().iter().enumerate() {
+        let na = grid.n[a];
         for (m, f) in u.iter_mut().enumerate() {
             if bcs.is_periodic(a) {
                 for_each_in_plane(grid, a, |base| {

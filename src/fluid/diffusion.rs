@@ -36,11 +36,10 @@ pub fn subgrid(st: &Stencil, u: Velocity, mu_t: &[f64], a: usize, c: usize) -> f
     let sa = st.s[a];
     let normal = |e: usize| 2.0 * mu_t[e] * (ua[e + sa] - ua[e]) * st.inv_d[a];
     let mut sum = (normal(c) - normal(c - sa)) * st.inv_d[a];
-    for b in 0..3 {
+    for (b, ub) in u.iter().enumerate() {
         if b == a {
             continue;
         }
-        let ub = u[b];
         let sb = st.s[b];
         let shear = |e: usize| {
             let mu_e = 0.25 * (mu_t[e] + mu_t[e - sa] + mu_t[e - sb] + mu_t[e - sa - sb]);

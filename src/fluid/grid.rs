@@ -64,11 +64,7 @@ impl StaggeredGrid {
             lengths.y / n[1] as f64,
             lengths.z / n[2] as f64,
         );
-        StaggeredGrid {
-            n,
-            spacing,
-            origin,
-        }
+        StaggeredGrid { n, spacing, origin }
     }
 
     /// Domain size (Lx, Ly, Lz) [m].
@@ -230,7 +226,9 @@ where
     if data.len() < SERIAL_BELOW {
         data.chunks_mut(len).enumerate().for_each(|(m, c)| f(m, c));
     } else {
-        data.par_chunks_mut(len).enumerate().for_each(|(m, c)| f(m, c));
+        data.par_chunks_mut(len)
+            .enumerate()
+            .for_each(|(m, c)| f(m, c));
     }
 }
 
@@ -284,7 +282,11 @@ mod tests {
 
     #[test]
     fn index_and_positions_agree() {
-        let g = StaggeredGrid::new([4, 3, 2], DVec3::new(2.0, 1.5, 1.0), DVec3::new(1.0, 0.0, -1.0));
+        let g = StaggeredGrid::new(
+            [4, 3, 2],
+            DVec3::new(2.0, 1.5, 1.0),
+            DVec3::new(1.0, 0.0, -1.0),
+        );
         let c = g.cell(2, 1, 0);
         assert_eq!(g.coordinates(c), [3, 2, 1]);
         assert!((g.position(c, None) - g.cell_centre(2, 1, 0)).length() < 1e-15);

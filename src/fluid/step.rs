@@ -37,7 +37,10 @@ const FIRST_STEP_PASSES: usize = 100;
 impl Fluid {
     /// Advances the flow by `dt` [s]. Allocation-free; deterministic for any number of threads.
     pub fn step(&mut self, dt: f64) {
-        assert!(dt > 0.0 && dt.is_finite(), "fluid time step must be positive");
+        assert!(
+            dt > 0.0 && dt.is_finite(),
+            "fluid time step must be positive"
+        );
         let grid = self.grid;
         let bcs = self.boundaries;
         let par = self.parameters;
@@ -59,13 +62,21 @@ impl Fluid {
 
         // μ_SGS [57][58] from uⁿ.
         if let Some(model) = &par.smagorinsky {
-            let u = [&state.velocity[0][..], &state.velocity[1][..], &state.velocity[2][..]];
+            let u = [
+                &state.velocity[0][..],
+                &state.velocity[1][..],
+                &state.velocity[2][..],
+            ];
             eddy_viscosity(&grid, &bcs, model, mu, u, rho, &mut self.eddy_viscosity);
         }
 
         // Hⁿ: advection and viscous stress divergence.
         {
-            let u = [&state.velocity[0][..], &state.velocity[1][..], &state.velocity[2][..]];
+            let u = [
+                &state.velocity[0][..],
+                &state.velocity[1][..],
+                &state.velocity[2][..],
+            ];
             let mu_t = &self.eddy_viscosity[..];
             let sgs = par.smagorinsky.is_some();
             for (a, h) in self.tendency.iter_mut().enumerate() {

@@ -80,9 +80,7 @@ pub fn lid_driven_cavity(re: u32, n: usize, steady_tolerance: f64, t_max: f64) -
     let (u_ref, v_ref) = ghia_1982(re).expect("Ghia et al. tabulate Re = 100, 400, 1000");
     let h = 1.0 / n as f64;
     let grid = StaggeredGrid::new([n, 1, n], DVec3::new(1.0, h, 1.0), DVec3::ZERO);
-    let lid = Boundary::Wall {
-        velocity: DVec3::X,
-    };
+    let lid = Boundary::Wall { velocity: DVec3::X };
     let bcs = Boundaries::periodic()
         .with(0, Boundary::WALL, Boundary::WALL)
         .with(2, Boundary::WALL, lid);

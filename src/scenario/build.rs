@@ -18,6 +18,7 @@ use crate::dem::material::{ContactModel, Damping, Material, NormalSpring, PairLa
 use crate::dem::neighbor::NeighborList;
 use crate::dem::spheres::{NewSphere, Spheres};
 use crate::dem::timestep::{
+    discrete_impact,
     contact_scales, ContactScales, DEFAULT_STEPS_PER_PERIOD, MIN_STEPS_PER_PERIOD,
 };
 use crate::dem::walls::{Motion, Shape, Wall};
@@ -45,6 +46,9 @@ pub struct Derived {
     pub pairings: Vec<(String, ContactScales)>,
     /// Rough memory estimate [bytes].
     pub memory: f64,
+    /// Per pairing: (restitution a run at this step shows, steps in contact), from
+    /// `timestep::discrete_impact` at the reference velocity.
+    pub at_step: Vec<(f64, u64)>,
 }
 
 impl Derived {
@@ -81,6 +85,22 @@ impl Derived {
                 c.duration,
                 c.max_overlap / c.r_star,
                 c.rest_overlap / c.r_star
+            );
+        }
+        let _ = writeln!(
+            s,
+            "restitution a run at this time step shows (head-on, reference velocity):"
+        );
+        for ((name, c), (e, n)) in self.pairings.iter().zip(&self.at_step) {
+            let target = ideal_restitution(&c.law);
+            let _ = writeln!(
+                s,
+                "  {:<34} target {:.3}, at Δt {:.3} ({:+.1} %), {} steps in contact",
+                name,
+                target,
+                e,
+                100.0 * (e - target) / target,
+                n
             );
         }
         let _ = writeln!(
@@ -475,12 +495,30 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         pairings,
         // Per sphere: state ~200 B, neighbour pairs ~8 × 60 B, wall slots 336 B.
         memory: n_total as f64 * 1100.0,
+        at_step: Vec::new(),
     };
+    let mut derived = derived;
+    derived.at_step = derived
+        .pairings
+        .iter()
+        .map(|(_, c)| discrete_impact(&c.law, c.r_star, c.m_star, v_ref, dt))
+        .collect();
     let simulation = Simulation::new(dem, feeders, min_period);
     Ok(Built {
         simulation,
         derived,
     })
+}
+
+/// The restitution of a head-on impact in continuous time: what the dashpots were chosen for.
+fn ideal_restitution(law: &PairLaw) -> f64 {
+    use crate::dem::contact::damping;
+    use crate::dem::material::LawKind;
+    match law.kind {
+        LawKind::Linear | LawKind::ApparentLinear => damping::linear_contact(law.damping_ratio).1,
+        LawKind::Hertz => damping::hertz_contact(law.damping_ratio).1,
+        LawKind::HertzMindlin => law.restitution,
+    }
 }
 
 fn contact_model(

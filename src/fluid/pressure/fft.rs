@@ -151,35 +151,35 @@ fn transform_lines(
     let lines = buf.len() / len;
     let per_group = lines.div_ceil(scratch.len());
     let work = |(chunk, s): (&mut [Complex<f64>], &mut LineScratch)| match transform {
-            Transform::Identity => {}
-            Transform::Fourier(f, i) => {
-                let plan = if forward { f } else { i };
-                plan.process_with_scratch(chunk, &mut s.fft);
-            }
-            Transform::Cosine(d) => {
-                for line in chunk.chunks_mut(len) {
-                    let parts = if complex { 2 } else { 1 };
-                    for part in 0..parts {
-                        let r = &mut s.line[..len];
-                        for (x, z) in r.iter_mut().zip(line.iter()) {
-                            *x = if part == 0 { z.re } else { z.im };
-                        }
-                        if forward {
-                            d.process_dct2_with_scratch(r, &mut s.dct);
+        Transform::Identity => {}
+        Transform::Fourier(f, i) => {
+            let plan = if forward { f } else { i };
+            plan.process_with_scratch(chunk, &mut s.fft);
+        }
+        Transform::Cosine(d) => {
+            for line in chunk.chunks_mut(len) {
+                let parts = if complex { 2 } else { 1 };
+                for part in 0..parts {
+                    let r = &mut s.line[..len];
+                    for (x, z) in r.iter_mut().zip(line.iter()) {
+                        *x = if part == 0 { z.re } else { z.im };
+                    }
+                    if forward {
+                        d.process_dct2_with_scratch(r, &mut s.dct);
+                    } else {
+                        d.process_dct3_with_scratch(r, &mut s.dct);
+                    }
+                    for (z, x) in line.iter_mut().zip(r.iter()) {
+                        if part == 0 {
+                            z.re = *x;
                         } else {
-                            d.process_dct3_with_scratch(r, &mut s.dct);
-                        }
-                        for (z, x) in line.iter_mut().zip(r.iter()) {
-                            if part == 0 {
-                                z.re = *x;
-                            } else {
-                                z.im = *x;
-                            }
+                            z.im = *x;
                         }
                     }
                 }
             }
-        };
+        }
+    };
     if buf.len() < SERIAL_BELOW {
         buf.chunks_mut(per_group * len)
             .zip(scratch.iter_mut())
@@ -264,7 +264,12 @@ mod tests {
     use super::*;
 
     /// Applies the 7-point Laplacian with periodic or Neumann ends to compact data.
-    pub(super) fn laplacian(n: [usize; 3], h: [f64; 3], kinds: [AxisKind; 3], p: &[f64]) -> Vec<f64> {
+    pub(super) fn laplacian(
+        n: [usize; 3],
+        h: [f64; 3],
+        kinds: [AxisKind; 3],
+        p: &[f64],
+    ) -> Vec<f64> {
         let idx = |i: usize, j: usize, k: usize| i + n[0] * (j + n[1] * k);
         let mut out = vec![0.0; p.len()];
         for k in 0..n[2] {
@@ -307,7 +312,9 @@ mod tests {
             let h = [0.3, 0.7, 0.45];
             let total = n[0] * n[1] * n[2];
             // A zero-mean right-hand side.
-            let mut f: Vec<f64> = (0..total).map(|m| ((m * 7919) % 101) as f64 - 50.0).collect();
+            let mut f: Vec<f64> = (0..total)
+                .map(|m| ((m * 7919) % 101) as f64 - 50.0)
+                .collect();
             let mean = f.iter().sum::<f64>() / total as f64;
             f.iter_mut().for_each(|x| *x -= mean);
             let mut p = f.clone();
