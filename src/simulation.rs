@@ -52,10 +52,20 @@ impl Simulation {
     /// Prepares a simulation: builds the neighbour list and evaluates the initial forces.
     pub fn new(mut dem: Dem, feeders: Vec<Feeder>, min_period: f64) -> Self {
         if dem.neighbors.skin <= 0.0 {
-            let d_max = dem.spheres.radius.iter().fold(0.0f64, |a, &r| a.max(2.0 * r));
+            let d_max = dem
+                .spheres
+                .radius
+                .iter()
+                .fold(0.0f64, |a, &r| a.max(2.0 * r));
             dem.neighbors.skin = 0.2 * d_max;
         }
-        let mut sim = Simulation { dem, feeders, time: 0.0, step: 0, min_period };
+        let mut sim = Simulation {
+            dem,
+            feeders,
+            time: 0.0,
+            step: 0,
+            min_period,
+        };
         sim.refresh_lists();
         compute_forces(&mut sim.dem, sim.time);
         sim
@@ -64,7 +74,13 @@ impl Simulation {
     /// Prepares a simulation restored from a checkpoint: its forces and history are already
     /// those of the saved step, so they are not evaluated again (that would advance the history).
     pub fn resumed(dem: Dem, feeders: Vec<Feeder>, min_period: f64, time: f64, step: u64) -> Self {
-        let mut sim = Simulation { dem, feeders, time, step, min_period };
+        let mut sim = Simulation {
+            dem,
+            feeders,
+            time,
+            step,
+            min_period,
+        };
         sim.refresh_lists();
         sim
     }
@@ -92,7 +108,10 @@ impl Simulation {
         self.time = t_new;
         self.step += 1;
         if changed
-            || self.dem.neighbors.needs_rebuild(&self.dem.spheres, &self.dem.domain)
+            || self
+                .dem
+                .neighbors
+                .needs_rebuild(&self.dem.spheres, &self.dem.domain)
             || self.dem.mesh_candidates.stale(&self.dem, self.time)
         {
             self.refresh_lists();
@@ -113,12 +132,18 @@ impl Simulation {
         for x in s.position.iter_mut() {
             *x = domain.wrap(*x);
         }
-        let stays = |x: Vec3, v: Vec3| domain.contains(x) || !is_finite(x) || !(v.length() <= v_max);
-        let lost = (0..s.len()).filter(|&i| !stays(s.position[i], s.velocity[i])).count();
+        let stays = |x: Vec3, v: Vec3| {
+            domain.contains(x) || !is_finite(x) || v.length().is_nan() || v.length() > v_max
+        };
+        let lost = (0..s.len())
+            .filter(|&i| !stays(s.position[i], s.velocity[i]))
+            .count();
         if lost == 0 {
             return false; // The common case allocates nothing.
         }
-        let keep: Vec<bool> = (0..s.len()).map(|i| stays(s.position[i], s.velocity[i])).collect();
+        let keep: Vec<bool> = (0..s.len())
+            .map(|i| stays(s.position[i], s.velocity[i]))
+            .collect();
         s.retain(&keep);
         let mut k = 0;
         d.wall_slots.retain(|_| {
@@ -140,10 +165,18 @@ impl Simulation {
             self.dem.dt, ratio, self.min_period
         );
         let fail = |what: String, cause: String| {
-            Err(Instability { time: self.time, step: self.step, what, cause })
+            Err(Instability {
+                time: self.time,
+                step: self.step,
+                what,
+                cause,
+            })
         };
         for i in 0..s.len() {
-            if !is_finite(s.position[i]) || !is_finite(s.velocity[i]) || !is_finite(s.angular_velocity[i]) {
+            if !is_finite(s.position[i])
+                || !is_finite(s.velocity[i])
+                || !is_finite(s.angular_velocity[i])
+            {
                 return fail(
                     format!("sphere {} has a non-finite position or velocity", s.id[i]),
                     format!("numerical blow-up: {steps}; or a sphere of zero size or mass"),
@@ -180,4 +213,3 @@ impl Simulation {
         Ok(())
     }
 }
-

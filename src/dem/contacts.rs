@@ -93,7 +93,10 @@ impl PairContacts {
     pub fn save(&self) -> Vec<SavedContact> {
         (0..self.ids.len())
             .filter(|&p| self.history[p] != Vec3::ZERO)
-            .map(|p| SavedContact { ids: self.ids[p], history: self.history[p] })
+            .map(|p| SavedContact {
+                ids: self.ids[p],
+                history: self.history[p],
+            })
             .collect()
     }
 

@@ -111,7 +111,10 @@ pub fn compute_forces(dem: &mut Dem, t: f64) {
             let ratio = delta / s.radius[i].min(s.radius[j]);
             ((ratio, i), 1)
         })
-        .reduce(|| ((0.0, usize::MAX), 0), |a, b| (larger(a.0, b.0), a.1 + b.1));
+        .reduce(
+            || ((0.0, usize::MAX), 0),
+            |a, b| (larger(a.0, b.0), a.1 + b.1),
+        );
 
     // Pass 2: per sphere, pair reactions in pair order, then walls, then gravity.
     let c = &dem.contacts;
@@ -132,7 +135,15 @@ pub fn compute_forces(dem: &mut Dem, t: f64) {
             let mut hits = Hits::default();
             let mut buf = ContactBuf::new();
             for (w, wall) in walls.iter().enumerate() {
-                wall.contacts(w as u32, s.position[i], s.radius[i], t, mc.of(w, i), &mut buf, &mut hits);
+                wall.contacts(
+                    w as u32,
+                    s.position[i],
+                    s.radius[i],
+                    t,
+                    mc.of(w, i),
+                    &mut buf,
+                    &mut hits,
+                );
             }
             let mut hist = [Vec3::ZERO; WALL_SLOTS];
             match_history(slots, &hits, &mut hist);

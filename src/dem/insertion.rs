@@ -79,7 +79,12 @@ impl Occupancy {
     fn new(lo: Vec3, hi: Vec3, cell: f64) -> Self {
         let cell = cell.max(((hi - lo).max_element() / 200.0).max(1e-9));
         let n = [0, 1, 2].map(|k| (((hi[k] - lo[k]) / cell).ceil() as usize).max(1));
-        Occupancy { lo, cell, n, cells: vec![Vec::new(); n[0] * n[1] * n[2]] }
+        Occupancy {
+            lo,
+            cell,
+            n,
+            cells: vec![Vec::new(); n[0] * n[1] * n[2]],
+        }
     }
 
     fn coords(&self, x: Vec3) -> [i64; 3] {
@@ -138,7 +143,11 @@ pub fn random_fill(
     let d_max = order.first().map_or(0.0, |c| c.diameter);
     let r_existing = spheres.radius.iter().cloned().fold(0.0, f64::max);
     let reach = (0.5 * d_max).max(r_existing);
-    let mut occ = Occupancy::new(lo - Vec3::splat(reach), hi + Vec3::splat(reach), 2.0 * reach);
+    let mut occ = Occupancy::new(
+        lo - Vec3::splat(reach),
+        hi + Vec3::splat(reach),
+        2.0 * reach,
+    );
     for i in 0..spheres.len() {
         occ.insert(spheres.position[i], spheres.radius[i]);
     }
@@ -150,7 +159,10 @@ pub fn random_fill(
         let r = 0.5 * class.diameter;
         let (a, b) = (lo + Vec3::splat(r), hi - Vec3::splat(r));
         if (0..3).any(|k| a[k] > b[k]) {
-            return Err(format!("spheres of diameter {} m do not fit in the region", class.diameter));
+            return Err(format!(
+                "spheres of diameter {} m do not fit in the region",
+                class.diameter
+            ));
         }
         for _ in 0..class.count {
             let mut ok = false;

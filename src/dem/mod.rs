@@ -40,7 +40,10 @@ pub struct Limits {
 
 impl Default for Limits {
     fn default() -> Self {
-        Limits { max_speed: 100.0, max_overlap_ratio: 0.5 }
+        Limits {
+            max_speed: 100.0,
+            max_overlap_ratio: 0.5,
+        }
     }
 }
 
@@ -101,7 +104,10 @@ impl Dem {
 
     /// Index of the material with this name.
     pub fn material_index(&self, name: &str) -> Option<u16> {
-        self.materials.iter().position(|m| m.name == name).map(|i| i as u16)
+        self.materials
+            .iter()
+            .position(|m| m.name == name)
+            .map(|i| i as u16)
     }
 }
 
@@ -110,12 +116,22 @@ impl Dem {
     /// between all pairs of `materials` follow `model`. Gravity is (0, 0, -9.81) m s⁻²; the
     /// neighbour skin is set to 0.2 of the largest diameter when the simulation starts, unless
     /// set before.
-    pub fn new(materials: Vec<Material>, model: material::ContactModel, domain: Domain, dt: f64) -> Dem {
+    pub fn new(
+        materials: Vec<Material>,
+        model: material::ContactModel,
+        domain: Domain,
+        dt: f64,
+    ) -> Dem {
         let n = materials.len();
         let mut laws = Vec::with_capacity(n * n);
         for a in &materials {
             for b in &materials {
-                laws.push(PairLaw::new(&model, a, b, material::PairOverride::default()));
+                laws.push(PairLaw::new(
+                    &model,
+                    a,
+                    b,
+                    material::PairOverride::default(),
+                ));
             }
         }
         Dem {
@@ -136,8 +152,23 @@ impl Dem {
     }
 
     /// Adds a sphere of material `material` (density taken from it); returns its id.
-    pub fn add_sphere(&mut self, position: Vec3, velocity: Vec3, angular_velocity: Vec3, radius: f64, material: u16) -> spheres::SphereId {
+    pub fn add_sphere(
+        &mut self,
+        position: Vec3,
+        velocity: Vec3,
+        angular_velocity: Vec3,
+        radius: f64,
+        material: u16,
+    ) -> spheres::SphereId {
         let density = self.materials[material as usize].density;
-        self.spheres.push(spheres::NewSphere { position, velocity, angular_velocity, radius, material, density, fixed: false })
+        self.spheres.push(spheres::NewSphere {
+            position,
+            velocity,
+            angular_velocity,
+            radius,
+            material,
+            density,
+            fixed: false,
+        })
     }
 }

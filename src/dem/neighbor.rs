@@ -48,7 +48,11 @@ impl CellGrid {
         let mut c = [0; 3];
         for k in 0..3 {
             let v = ((x[k] - self.origin[k]) / self.width[k]).floor();
-            c[k] = if v.is_finite() { v.clamp(0.0, (self.n[k] - 1) as f64) as usize } else { 0 };
+            c[k] = if v.is_finite() {
+                v.clamp(0.0, (self.n[k] - 1) as f64) as usize
+            } else {
+                0
+            };
         }
         c
     }
@@ -62,7 +66,11 @@ impl CellGrid {
         // Coarser cells when the box is huge compared with the spheres, to bound memory.
         let max_cells = (8 * pos.len()).max(4096) as f64;
         let mut edge = edge;
-        while (0..3).map(|k| (size[k] / edge).floor().max(1.0)).product::<f64>() > max_cells {
+        while (0..3)
+            .map(|k| (size[k] / edge).floor().max(1.0))
+            .product::<f64>()
+            > max_cells
+        {
             edge *= 1.25;
         }
         for k in 0..3 {
@@ -124,7 +132,10 @@ impl CellGrid {
 impl NeighborList {
     /// An empty list with the given skin [m].
     pub fn new(skin: f64) -> Self {
-        Self { skin, ..Default::default() }
+        Self {
+            skin,
+            ..Default::default()
+        }
     }
 
     /// True when a sphere has moved more than skin/2 since the last build, or spheres were added
@@ -162,7 +173,9 @@ impl NeighborList {
                 cells.around(cells.coords(pos[i]), domain.periodic, &mut around);
                 js.clear();
                 for &cell in &around {
-                    for &j in &cells.items[cells.start[cell] as usize..cells.start[cell + 1] as usize] {
+                    for &j in
+                        &cells.items[cells.start[cell] as usize..cells.start[cell + 1] as usize]
+                    {
                         let j = j as usize;
                         if j <= i || (fixed_i && spheres.fixed[j]) {
                             continue;
@@ -216,8 +229,16 @@ mod tests {
             seed ^= seed << 17;
             (seed >> 11) as f64 / (1u64 << 53) as f64
         };
-        for (periodic, size) in [([false; 3], 1.0), ([true, false, true], 1.0), ([true; 3], 0.1)] {
-            let d = Domain { min: Vec3::ZERO, max: Vec3::splat(size), periodic };
+        for (periodic, size) in [
+            ([false; 3], 1.0),
+            ([true, false, true], 1.0),
+            ([true; 3], 0.1),
+        ] {
+            let d = Domain {
+                min: Vec3::ZERO,
+                max: Vec3::splat(size),
+                periodic,
+            };
             let mut s = Spheres::default();
             for _ in 0..600 {
                 let r = if rnd() < 0.2 { 0.03 } else { 0.01 };

@@ -132,12 +132,21 @@ mod tests {
             friction_coefficient: 0.5,
             restitution_coefficient: 0.3,
         };
-        let model = ContactModel::Voigt { spring: NormalSpring::Hertz, damping: Damping::Restitution };
+        let model = ContactModel::Voigt {
+            spring: NormalSpring::Hertz,
+            damping: Damping::Restitution,
+        };
         let law = PairLaw::new(&model, &m, &m, PairOverride::default());
         let c = contact_scales(&law, 0.005, 1e-3, 1.0, 0.0);
         let (fine, n) = discrete_impact(&law, 0.005, 1e-3, 1.0, c.duration / 200.0);
-        assert!((fine - 0.3).abs() < 0.002 * 0.3 * 10.0, "e = {fine} in {n} steps");
+        assert!(
+            (fine - 0.3).abs() < 0.002 * 0.3 * 10.0,
+            "e = {fine} in {n} steps"
+        );
         let (coarse, _) = discrete_impact(&law, 0.005, 1e-3, 1.0, c.period / 20.0);
-        assert!((coarse - 0.3).abs() > (fine - 0.3).abs(), "{coarse} vs {fine}");
+        assert!(
+            (coarse - 0.3).abs() > (fine - 0.3).abs(),
+            "{coarse} vs {fine}"
+        );
     }
 }

@@ -54,8 +54,16 @@ impl Motion {
     pub fn displacement(&self, t: f64) -> Vec3 {
         match *self {
             Motion::Fixed => Vec3::ZERO,
-            Motion::Linear { velocity, start, stop } => velocity * (t.min(stop) - start).max(0.0),
-            Motion::Oscillation { amplitude, frequency, phase } => {
+            Motion::Linear {
+                velocity,
+                start,
+                stop,
+            } => velocity * (t.min(stop) - start).max(0.0),
+            Motion::Oscillation {
+                amplitude,
+                frequency,
+                phase,
+            } => {
                 let w = 2.0 * std::f64::consts::PI * frequency;
                 amplitude * ((w * t + phase).sin() - phase.sin())
             }
@@ -66,14 +74,22 @@ impl Motion {
     pub fn velocity(&self, t: f64) -> Vec3 {
         match *self {
             Motion::Fixed => Vec3::ZERO,
-            Motion::Linear { velocity, start, stop } => {
+            Motion::Linear {
+                velocity,
+                start,
+                stop,
+            } => {
                 if t >= start && t < stop {
                     velocity
                 } else {
                     Vec3::ZERO
                 }
             }
-            Motion::Oscillation { amplitude, frequency, phase } => {
+            Motion::Oscillation {
+                amplitude,
+                frequency,
+                phase,
+            } => {
                 let w = 2.0 * std::f64::consts::PI * frequency;
                 amplitude * w * (w * t + phase).cos()
             }
@@ -123,7 +139,11 @@ pub struct WallContact {
 
 impl WallContact {
     /// An empty slot.
-    pub const EMPTY: WallContact = WallContact { wall: u32::MAX, normal: Vec3::ZERO, history: Vec3::ZERO };
+    pub const EMPTY: WallContact = WallContact {
+        wall: u32::MAX,
+        normal: Vec3::ZERO,
+        history: Vec3::ZERO,
+    };
 }
 
 /// Wall contacts of one sphere.
@@ -153,7 +173,11 @@ pub struct Hits {
 
 impl Default for Hits {
     fn default() -> Self {
-        Hits { len: 0, items: [None; WALL_SLOTS], dropped: 0 }
+        Hits {
+            len: 0,
+            items: [None; WALL_SLOTS],
+            dropped: 0,
+        }
     }
 }
 
@@ -203,7 +227,11 @@ impl Wall {
         for sc in buf.iter() {
             let mut contact = *sc;
             contact.point += d;
-            out.push(WallHit { wall: index, contact, velocity: u });
+            out.push(WallHit {
+                wall: index,
+                contact,
+                velocity: u,
+            });
         }
     }
 
@@ -252,6 +280,10 @@ pub fn match_history(slots: &mut WallSlots, hits: &Hits, out: &mut [Vec3; WALL_S
             }
             None => Vec3::ZERO,
         };
-        slots[k] = WallContact { wall: h.wall, normal: h.contact.normal, history: out[k] };
+        slots[k] = WallContact {
+            wall: h.wall,
+            normal: h.contact.normal,
+            history: out[k],
+        };
     }
 }

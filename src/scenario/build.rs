@@ -18,8 +18,7 @@ use crate::dem::material::{ContactModel, Damping, Material, NormalSpring, PairLa
 use crate::dem::neighbor::NeighborList;
 use crate::dem::spheres::{NewSphere, Spheres};
 use crate::dem::timestep::{
-    discrete_impact,
-    contact_scales, ContactScales, DEFAULT_STEPS_PER_PERIOD, MIN_STEPS_PER_PERIOD,
+    contact_scales, discrete_impact, ContactScales, DEFAULT_STEPS_PER_PERIOD, MIN_STEPS_PER_PERIOD,
 };
 use crate::dem::walls::{Motion, Shape, Wall};
 use crate::dem::{Dem, Limits, Stats};

@@ -147,7 +147,10 @@ mod tests {
         let (tc, e) = hertz_contact(0.0);
         assert!((e - 1.0).abs() < 1e-6, "e = {e}");
         let expected = 2.943_2 * 1.25f64.powf(0.4);
-        assert!((tc - expected).abs() / expected < 1e-3, "t_c = {tc} vs {expected}");
+        assert!(
+            (tc - expected).abs() / expected < 1e-3,
+            "t_c = {tc} vs {expected}"
+        );
     }
 
     #[test]
@@ -155,7 +158,10 @@ mod tests {
         for spring in [Spring::Linear, Spring::Hertz] {
             for &e in &[0.2, 0.35, 0.5, 0.7, 0.9, 0.99] {
                 let z = damping_ratio_for_restitution(e, spring);
-                assert!((restitution(z, spring) - e).abs() < 1e-6, "{spring:?} e={e}");
+                assert!(
+                    (restitution(z, spring) - e).abs() < 1e-6,
+                    "{spring:?} e={e}"
+                );
             }
         }
     }
