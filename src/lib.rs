@@ -28,3 +28,4 @@ pub mod run;
 pub mod scenario;
 pub mod simulation;
 pub mod units;
+pub mod validate;

@@ -43,6 +43,16 @@ enum Command {
         #[command(subcommand)]
         case: BenchCase,
     },
+    /// Validation cases against published data; writes a report with plots and exits
+    /// non-zero when a case falls outside its tolerance.
+    Validate {
+        /// Only the quick level (seconds).
+        #[arg(long)]
+        quick: bool,
+        /// Output folder for the report.
+        #[arg(long, default_value = "output/validation")]
+        output: PathBuf,
+    },
     /// Validate a scenario and print the derived quantities (contact time, time step, ...).
     Check {
         /// Scenario file (TOML); the built-in default when omitted.
@@ -161,6 +171,15 @@ fn main() -> ExitCode {
         Command::Bench {
             case: BenchCase::B1 { n, steps },
         } => bench_b1(n, steps),
+        Command::Validate { quick, output } => (|| {
+            let (_, ok) = riprap::validate::run_validation(&output, quick)?;
+            eprintln!("report: {}", output.join("report.md").display());
+            if ok {
+                Ok(())
+            } else {
+                anyhow::bail!("a validation case fell outside its tolerance")
+            }
+        })(),
         Command::Check { scenario } => (|| {
             let src = source(&scenario)?;
             let built = build(&src)?;

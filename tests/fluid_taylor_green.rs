@@ -152,11 +152,11 @@ fn every_axis_pair_gives_the_same_answer() {
         let u = fluid.velocity();
         let mut e = 0.0f64;
         for a in [p, q] {
-            for c in 0..grid.len() {
+            for (c, &uc) in u[a].iter().enumerate() {
                 let ijk = grid.coordinates(c);
                 if (0..3).all(|b| (1..=grid.n[b]).contains(&ijk[b])) {
                     let x = grid.position(c, Some(a));
-                    e = e.max((u[a][c] - field(x, T_END)[a]).abs());
+                    e = e.max((uc - field(x, T_END)[a]).abs());
                 }
             }
         }

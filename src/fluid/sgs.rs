@@ -21,7 +21,7 @@
 //! ρ̄ of that wall cell. Without no-slip walls, or with damping off, F_w = 1.
 
 use super::boundary::{fill_scalar_ghosts, Boundaries, Boundary, HIGH, LOW};
-use super::grid::{update_region, StaggeredGrid, Stencil};
+use super::grid::{for_each_chunk, StaggeredGrid, Stencil};
 use super::operators::{cell_velocity, Velocity};
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
@@ -107,17 +107,29 @@ pub fn eddy_viscosity(
             }
         }
     }
-    let region = [grid.interior(0), grid.interior(1), grid.interior(2)];
-    update_region(grid, &region, mu_t, |c, _| {
-        let strain = strain_rate_magnitude(&st, u, c);
-        let f_w = damping(grid, &st, &walls, model, mu, u, rho, c);
-        rho[c] * cs_delta2 * f_w * f_w * strain
+    let any_wall = walls.iter().any(Option::is_some);
+    let p = grid.padded();
+    for_each_chunk(mu_t, p[0], |row, line| {
+        let (j, k) = (row % p[1], row / p[1]);
+        if !grid.interior(1).contains(&j) || !grid.interior(2).contains(&k) {
+            return;
+        }
+        for i in grid.interior(0) {
+            let c = row * p[0] + i;
+            let strain = strain_rate_magnitude(&st, u, c);
+            let f_w = if any_wall {
+                damping(grid, &st, &walls, model, mu, u, rho, c, [i, j, k])
+            } else {
+                1.0
+            };
+            line[i] = rho[c] * cs_delta2 * f_w * f_w * strain;
+        }
     });
     fill_scalar_ghosts(grid, bcs, mu_t);
 }
 
-/// Van Driest damping F_w = 1 − exp(−y⁺/A⁺) [58] for cell `c`, from the nearest no-slip wall
-/// (1 when there is none).
+/// Van Driest damping F_w = 1 − exp(−y⁺/A⁺) [58] for cell `c` at padded coordinates `ijk`,
+/// from the nearest no-slip wall (1 when there is none).
 #[allow(clippy::too_many_arguments)]
 fn damping(
     grid: &StaggeredGrid,
@@ -128,8 +140,8 @@ fn damping(
     u: Velocity,
     rho: &[f64],
     c: usize,
+    ijk: [usize; 3],
 ) -> f64 {
-    let ijk = grid.coordinates(c);
     let mut nearest: Option<(f64, WallFace)> = None;
     for w in walls.iter().flatten() {
         let a = w.axis;

@@ -10,14 +10,17 @@
 //! uⁿ⁺¹ = u* − Δt (1/ρ̄_f) G pⁿ⁺¹   with D uⁿ⁺¹ = 0                            (projection)
 //! ```
 //!
-//! The first step (no history) is forward Euler (r = 0). A_a is [`super::advection`], the
+//! The first step (no history) is forward Euler (r = 0), and its variable-density projection
+//! is iterated to convergence since there is no pressure to extrapolate; p¹ then also
+//! serves as p⁰. A_a is [`super::advection`], the
 //! viscous terms [`super::diffusion`], the body forces [`super::forcing`] and the projection,
 //! with the variable-density splitting of Dodd & Ferrante, [`super::pressure`]. The driving
 //! gradient is a known function of time and is taken at the midpoint, which keeps the
 //! scheme second order for the oscillatory drive; ρ̄ and F are those set before the step.
 //!
 //! Boundary conditions: the normal velocity on boundary faces and all ghosts are set at
-//! tⁿ⁺¹ before the projection; the projection moves only interior faces (Neumann pressure).
+//! tⁿ⁺¹ before the projection (outflow faces by the convective condition, corrected to
+//! conserve volume); the projection moves only interior faces (Neumann pressure).
 
 use super::advection::advection;
 use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts};
@@ -160,10 +163,20 @@ impl Fluid {
         state.steps += 1;
     }
 
-    /// Takes one step of the stable size of [`Fluid::stable_time_step`], not past `t_end` [s];
-    /// returns the step taken [s].
+    /// Takes one step of the stable size of [`Fluid::stable_time_step`] towards `t_end` [s]
+    /// and returns it [s]. The run lands on `t_end` exactly: when less than two stable steps
+    /// remain they are split evenly (no sliver of a step, which would make the Adams-Bashforth
+    /// step ratio tiny). Panics if `t_end` is not after the current time.
     pub fn step_adaptive(&mut self, t_end: f64) -> f64 {
-        let dt = self.stable_time_step().min(t_end - self.state.time);
+        let stable = self.stable_time_step();
+        let remaining = t_end - self.state.time;
+        let dt = if remaining <= stable {
+            remaining
+        } else if remaining < 2.0 * stable {
+            0.5 * remaining
+        } else {
+            stable
+        };
         self.step(dt);
         dt
     }

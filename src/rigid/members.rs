@@ -3,7 +3,7 @@
 //!
 //! With the members of block b in consecutive sphere slots `r = blocks.member_slots(b, &s.id)`:
 //!
-//! ```ignore
+//! ```text
 //! let m = Members {
 //!     position: &mut s.position[r.clone()],
 //!     velocity: &mut s.velocity[r.clone()],
