@@ -47,7 +47,6 @@ fn re_100_matches_ghia_on_coarse_grids() {
     assert!(fine.max_error.0 < coarse.max_error.0 / 3.0);
 }
 
-
 // The validation-level runs (Re 400 and 1000 at 128², about ten minutes on 2 cores) are
 // `riprap validate`, with tolerances from the measured errors (u 0.0020, v 0.0050 at Re 400
 // without the suspect entry; u 0.0030, v 0.0124 at Re 1000) and a 50 % margin; its quick level
