@@ -3,27 +3,21 @@
 
 use std::fmt::Write as _;
 
-use super::schema::{
-    v3, ContactSection, DampingName, FeedSet, LatticeSet, ListSet, ModelName, RandomSet,
-    SizeSection, SphereSet, WallSection,
-};
+use super::schema::{v3, ContactSection, DampingName, ModelName, WallSection};
+use super::spheres::build_spheres;
 use super::{ScenarioError, Source};
 use crate::dem::contacts::PairContacts;
 use crate::dem::domain::Domain;
 use crate::dem::forces::MeshCandidates;
-use crate::dem::insertion::{
-    counts_from_mass_fractions, lattice, random_fill, Feeder, Rng, SizeClass,
-};
 use crate::dem::material::{ContactModel, Damping, Material, NormalSpring, PairLaw, PairOverride};
 use crate::dem::neighbor::NeighborList;
-use crate::dem::spheres::{NewSphere, Spheres};
 use crate::dem::timestep::{
     contact_scales, discrete_impact, ContactScales, DEFAULT_STEPS_PER_PERIOD, MIN_STEPS_PER_PERIOD,
 };
 use crate::dem::walls::{Motion, Shape, Wall};
 use crate::dem::{Dem, Limits, Stats};
 use crate::geometry::{Cuboid, Cylinder, Plane, TriMesh};
-use crate::math::{Mat3, Vec3};
+use crate::math::Mat3;
 use crate::simulation::Simulation;
 
 /// Quantities an expert computes by hand before a run.
@@ -132,7 +126,7 @@ pub struct Built {
     pub derived: Derived,
 }
 
-fn positive(src: &Source, key: &str, v: f64) -> Result<f64, ScenarioError> {
+pub(super) fn positive(src: &Source, key: &str, v: f64) -> Result<f64, ScenarioError> {
     if v.is_finite() && v > 0.0 {
         Ok(v)
     } else {
@@ -140,14 +134,14 @@ fn positive(src: &Source, key: &str, v: f64) -> Result<f64, ScenarioError> {
     }
 }
 
-fn finite(src: &Source, key: &str, v: &[f64]) -> Result<(), ScenarioError> {
+pub(super) fn finite(src: &Source, key: &str, v: &[f64]) -> Result<(), ScenarioError> {
     match v.iter().find(|x| !x.is_finite()) {
         Some(x) => Err(src.invalid(key, format!("must be finite, got {x}"))),
         None => Ok(()),
     }
 }
 
-fn non_negative(src: &Source, key: &str, v: f64) -> Result<f64, ScenarioError> {
+pub(super) fn non_negative(src: &Source, key: &str, v: f64) -> Result<f64, ScenarioError> {
     if v.is_finite() && v >= 0.0 {
         Ok(v)
     } else {
@@ -155,7 +149,7 @@ fn non_negative(src: &Source, key: &str, v: f64) -> Result<f64, ScenarioError> {
     }
 }
 
-fn restitution(src: &Source, key: &str, e: f64) -> Result<f64, ScenarioError> {
+pub(super) fn restitution(src: &Source, key: &str, e: f64) -> Result<f64, ScenarioError> {
     if e > 0.0 && e <= 1.0 {
         Ok(e)
     } else {
@@ -166,7 +160,7 @@ fn restitution(src: &Source, key: &str, e: f64) -> Result<f64, ScenarioError> {
     }
 }
 
-fn material_of(
+pub(super) fn material_of(
     src: &Source,
     names: &[String],
     key: &str,
@@ -190,7 +184,7 @@ fn material_of(
 }
 
 /// The material of a sphere or size class: its own (`key`) or else its set's (`set_key`).
-fn material_or_default(
+pub(super) fn material_or_default(
     src: &Source,
     names: &[String],
     key: &str,
@@ -651,446 +645,4 @@ fn build_walls(src: &Source, names: &[String]) -> Result<Vec<Wall>, ScenarioErro
         });
     }
     Ok(walls)
-}
-
-/// How the classes of a set are weighted.
-#[derive(Clone, Copy, PartialEq)]
-enum Weights {
-    /// `count` or `mass_fraction` of `total_mass` (random fills).
-    CountsOrFractions,
-    /// `count` only, as relative weights (feeds).
-    Counts,
-}
-
-#[allow(clippy::too_many_arguments)]
-fn size_classes(
-    src: &Source,
-    names: &[String],
-    materials: &[Material],
-    key: &str,
-    default: Option<&str>,
-    sizes: &[SizeSection],
-    total_mass: Option<f64>,
-    weights: Weights,
-) -> Result<Vec<SizeClass>, ScenarioError> {
-    if sizes.is_empty() {
-        return Err(src.invalid(&format!("{key}.sizes"), "at least one size class is needed"));
-    }
-    let mut out = Vec::new();
-    let mut fractions = Vec::new();
-    for (c, s) in sizes.iter().enumerate() {
-        let k = format!("{key}.sizes[{c}]");
-        positive(src, &format!("{k}.diameter"), s.diameter)?;
-        let m = material_or_default(
-            src,
-            names,
-            &format!("{k}.material"),
-            s.material.as_deref(),
-            &format!("{key}.material"),
-            default,
-        )?;
-        let rho = materials[m as usize].density;
-        match (s.count, s.mass_fraction) {
-            (Some(n), None) => out.push(SizeClass { diameter: s.diameter, material: m, density: rho, count: n }),
-            (None, Some(_)) if weights == Weights::Counts => {
-                return Err(src.invalid(
-                    &format!("{k}.mass_fraction"),
-                    "a feed weights its size classes by `count` (relative numbers); mass fractions are \
-                     for random fills",
-                ))
-            }
-            (None, Some(f)) => {
-                non_negative(src, &format!("{k}.mass_fraction"), f)?;
-                fractions.push((s.diameter, rho, f));
-                out.push(SizeClass { diameter: s.diameter, material: m, density: rho, count: 0 });
-            }
-            (Some(_), Some(_)) => {
-                return Err(src.invalid(&k, "give `count` or `mass_fraction`, not both"));
-            }
-            (None, None) => {
-                let what = if weights == Weights::Counts { "`count`" } else { "`count` or `mass_fraction`" };
-                return Err(src.invalid(&k, format!("give {what} for this size class")));
-            }
-        }
-    }
-    if weights == Weights::Counts && out.iter().all(|c| c.count == 0) {
-        return Err(src.invalid(
-            &format!("{key}.sizes"),
-            "every class has count = 0: nothing to feed",
-        ));
-    }
-    if !fractions.is_empty() {
-        if fractions.len() != out.len() {
-            return Err(src.invalid(
-                &format!("{key}.sizes"),
-                "use either counts or mass fractions for all classes",
-            ));
-        }
-        if fractions.iter().all(|f| f.2 == 0.0) {
-            return Err(src.invalid(&format!("{key}.sizes"), "the mass fractions are all zero"));
-        }
-        let total = total_mass.ok_or_else(|| {
-            src.invalid_at(
-                &format!("{key}.total_mass"),
-                &format!("{key}.sizes"),
-                "mass fractions need a total_mass [kg]",
-            )
-        })?;
-        positive(src, &format!("{key}.total_mass"), total)?;
-        for (c, n) in counts_from_mass_fractions(total, &fractions)
-            .into_iter()
-            .enumerate()
-        {
-            out[c].count = n;
-        }
-    }
-    Ok(out)
-}
-
-/// Refuses a region [min, max] of a sphere set that is empty or reaches outside the domain.
-fn check_region(
-    src: &Source,
-    key: &str,
-    min: [f64; 3],
-    max: [f64; 3],
-    domain: &Domain,
-) -> Result<(), ScenarioError> {
-    finite(src, &format!("{key}.min"), &min)?;
-    finite(src, &format!("{key}.max"), &max)?;
-    let axis = ["x", "y", "z"];
-    for k in 0..3 {
-        if min[k].partial_cmp(&max[k]) != Some(std::cmp::Ordering::Less) {
-            return Err(src.invalid(
-                &format!("{key}.max"),
-                format!("must exceed min along every axis ({})", axis[k]),
-            ));
-        }
-        let tol = 1e-9 * (domain.max[k] - domain.min[k]);
-        if min[k] < domain.min[k] - tol {
-            return Err(src.invalid(
-                &format!("{key}.min"),
-                format!(
-                    "the region reaches outside the domain: min {} = {} < domain.min {} = {}",
-                    axis[k], min[k], axis[k], domain.min[k]
-                ),
-            ));
-        }
-        if max[k] > domain.max[k] + tol {
-            return Err(src.invalid(
-                &format!("{key}.max"),
-                format!(
-                    "the region reaches outside the domain: max {} = {} > domain.max {} = {}",
-                    axis[k], max[k], axis[k], domain.max[k]
-                ),
-            ));
-        }
-    }
-    Ok(())
-}
-
-fn build_spheres(
-    src: &Source,
-    names: &[String],
-    materials: &[Material],
-    domain: &Domain,
-) -> Result<(Spheres, Vec<Feeder>), ScenarioError> {
-    let mut spheres = Spheres::default();
-    let mut feeders = Vec::new();
-    // Where each initial sphere comes from, for messages: its key path.
-    let mut origin: Vec<String> = Vec::new();
-    let axis = ["x", "y", "z"];
-    for (i, set) in src.scenario.spheres.iter().enumerate() {
-        let key = format!("spheres[{i}]");
-        let first = spheres.len();
-        match set {
-            SphereSet::List(ListSet {
-                material,
-                spheres: list,
-            }) => {
-                if list.is_empty() {
-                    return Err(src.invalid(&format!("{key}.spheres"), "the list has no sphere"));
-                }
-                for (k, e) in list.iter().enumerate() {
-                    let kk = format!("{key}.spheres[{k}]");
-                    positive(src, &format!("{kk}.diameter"), e.diameter)?;
-                    finite(src, &format!("{kk}.position"), &e.position)?;
-                    finite(src, &format!("{kk}.velocity"), &e.velocity)?;
-                    finite(src, &format!("{kk}.angular_velocity"), &e.angular_velocity)?;
-                    let m = material_or_default(
-                        src,
-                        names,
-                        &format!("{kk}.material"),
-                        e.material.as_deref(),
-                        &format!("{key}.material"),
-                        material.as_deref(),
-                    )?;
-                    let x = v3(e.position);
-                    if let Some(a) = (0..3).find(|&a| x[a] < domain.min[a] || x[a] > domain.max[a])
-                    {
-                        return Err(src.invalid(
-                            &format!("{kk}.position"),
-                            format!(
-                                "lies outside the domain: {} = {} is not within [{}, {}]",
-                                axis[a], x[a], domain.min[a], domain.max[a]
-                            ),
-                        ));
-                    }
-                    spheres.push(NewSphere {
-                        position: x,
-                        velocity: v3(e.velocity),
-                        angular_velocity: v3(e.angular_velocity),
-                        radius: 0.5 * e.diameter,
-                        material: m,
-                        density: materials[m as usize].density,
-                        fixed: e.fixed,
-                    });
-                    origin.push(kk);
-                }
-            }
-            SphereSet::Lattice(LatticeSet {
-                material,
-                min,
-                max,
-                spacing,
-                diameter,
-                velocity,
-            }) => {
-                positive(src, &format!("{key}.diameter"), *diameter)?;
-                positive(src, &format!("{key}.spacing"), *spacing)?;
-                finite(src, &format!("{key}.velocity"), velocity)?;
-                if spacing < diameter {
-                    return Err(src.invalid(
-                        &format!("{key}.spacing"),
-                        format!("{spacing} m is smaller than the diameter {diameter} m: neighbours would overlap"),
-                    ));
-                }
-                check_region(src, &key, *min, *max, domain)?;
-                let m = material_of(src, names, &format!("{key}.material"), Some(material))?;
-                let sites = lattice(v3(*min), v3(*max), *spacing);
-                if sites.is_empty() {
-                    return Err(src.invalid(
-                        &format!("{key}.spacing"),
-                        format!("the region [min, max] is thinner than one spacing ({spacing} m) along some axis: no sphere fits"),
-                    ));
-                }
-                for x in sites {
-                    spheres.push(NewSphere {
-                        position: x,
-                        velocity: v3(*velocity),
-                        angular_velocity: Vec3::ZERO,
-                        radius: 0.5 * diameter,
-                        material: m,
-                        density: materials[m as usize].density,
-                        fixed: false,
-                    });
-                    origin.push(key.clone());
-                }
-            }
-            SphereSet::Random(RandomSet {
-                material,
-                min,
-                max,
-                sizes,
-                total_mass,
-                seed,
-                velocity,
-            }) => {
-                check_region(src, &key, *min, *max, domain)?;
-                finite(src, &format!("{key}.velocity"), velocity)?;
-                let classes = size_classes(
-                    src,
-                    names,
-                    materials,
-                    &key,
-                    material.as_deref(),
-                    sizes,
-                    *total_mass,
-                    Weights::CountsOrFractions,
-                )?;
-                let mut rng = Rng(*seed);
-                random_fill(
-                    &mut spheres,
-                    domain,
-                    v3(*min),
-                    v3(*max),
-                    &classes,
-                    v3(*velocity),
-                    &mut rng,
-                )
-                .map_err(|e| {
-                    src.invalid(
-                        &format!("{key}.sizes"),
-                        format!("impossible random fill: {e}"),
-                    )
-                })?;
-                origin.resize(spheres.len(), key.clone());
-            }
-            SphereSet::Feed(FeedSet {
-                material,
-                min,
-                max,
-                rate,
-                total,
-                start,
-                sizes,
-                seed,
-                velocity,
-            }) => {
-                positive(src, &format!("{key}.rate"), *rate)?;
-                non_negative(src, &format!("{key}.start"), *start)?;
-                finite(src, &format!("{key}.velocity"), velocity)?;
-                check_region(src, &key, *min, *max, domain)?;
-                let classes = size_classes(
-                    src,
-                    names,
-                    materials,
-                    &key,
-                    material.as_deref(),
-                    sizes,
-                    None,
-                    Weights::Counts,
-                )?;
-                for (c, class) in classes.iter().enumerate() {
-                    if let Some(a) =
-                        (0..3).find(|&a| max[a] - min[a] < class.diameter * (1.0 - 1e-9))
-                    {
-                        return Err(src.invalid(
-                            &format!("{key}.sizes[{c}].diameter"),
-                            format!(
-                                "spheres of diameter {} m do not fit in the feed region, which is {} m wide along {}",
-                                class.diameter,
-                                max[a] - min[a],
-                                axis[a]
-                            ),
-                        ));
-                    }
-                }
-                feeders.push(Feeder {
-                    lo: v3(*min),
-                    hi: v3(*max),
-                    rate: *rate,
-                    start: *start,
-                    total: *total,
-                    classes,
-                    velocity: v3(*velocity),
-                    inserted: 0,
-                    rng: Rng(*seed),
-                });
-            }
-        }
-        check_overlaps(src, &spheres, first, domain, &origin)?;
-    }
-    check_walls(src, &spheres, &origin)?;
-    Ok((spheres, feeders))
-}
-
-/// Refuses initial spheres that overlap (spheres from `first` on against all earlier ones).
-fn check_overlaps(
-    src: &Source,
-    s: &Spheres,
-    first: usize,
-    domain: &Domain,
-    origin: &[String],
-) -> Result<(), ScenarioError> {
-    let mut nl = NeighborList::new(0.0);
-    nl.build(s, domain);
-    let mut worst: Option<(usize, usize, f64)> = None;
-    for &(i, j) in &nl.pairs {
-        let (i, j) = if i < j {
-            (i as usize, j as usize)
-        } else {
-            (j as usize, i as usize)
-        };
-        if j < first {
-            continue;
-        }
-        let d = domain.minimum_image(s.position[j] - s.position[i]).length();
-        let overlap = s.radius[i] + s.radius[j] - d;
-        if overlap > 1e-9 * (s.radius[i] + s.radius[j]) && worst.is_none_or(|w| (j, i) < (w.1, w.0))
-        {
-            worst = Some((i, j, overlap));
-        }
-    }
-    if let Some((i, j, overlap)) = worst {
-        let at = |k: usize| {
-            format!(
-                "sphere {} ({}, d = {} m, at ({}, {}, {}))",
-                s.id[k],
-                origin[k],
-                2.0 * s.radius[k],
-                s.position[k].x,
-                s.position[k].y,
-                s.position[k].z
-            )
-        };
-        return Err(src.invalid(
-            &origin[j],
-            format!(
-                "initial spheres overlap: {} and {} overlap by {:.3e} m ({:.1}% of the smaller radius); \
-                 move them apart",
-                at(i),
-                at(j),
-                overlap,
-                100.0 * overlap / s.radius[i].min(s.radius[j])
-            ),
-        ));
-    }
-    Ok(())
-}
-
-/// Refuses initial spheres whose centre lies on the wrong side of a wall (behind a plane, out of
-/// a container, inside an obstacle): the wall would throw them out with a huge force.
-fn check_walls(src: &Source, s: &Spheres, origin: &[String]) -> Result<(), ScenarioError> {
-    for (w, wall) in src.scenario.walls.iter().enumerate() {
-        let name = wall
-            .common()
-            .0
-            .clone()
-            .unwrap_or_else(|| format!("{}{w}", wall.kind()));
-        for (k, &x) in s.position.iter().enumerate() {
-            let wrong = match wall {
-                WallSection::Plane(p) => {
-                    let n = v3(p.normal).normalize_or_zero();
-                    (x - v3(p.point)).dot(n) < 0.0
-                }
-                WallSection::Box(b) => {
-                    let inside = (0..3).all(|a| x[a] >= b.min[a] && x[a] <= b.max[a]);
-                    inside != b.inside
-                }
-                WallSection::Cylinder(c) => {
-                    let (a, e) = (v3(c.start), v3(c.end));
-                    let u = (e - a).normalize_or_zero();
-                    let t = (x - a).dot(u);
-                    let rho = ((x - a) - t * u).length();
-                    let within = t >= 0.0 && t <= (e - a).length();
-                    within
-                        && if c.inside {
-                            rho > c.radius
-                        } else {
-                            rho < c.radius
-                        }
-                }
-                WallSection::Mesh(_) => false,
-            };
-            if wrong {
-                let side = match wall {
-                    WallSection::Plane(_) => {
-                        "behind the plane (on the side its normal points away from)"
-                    }
-                    WallSection::Box(b) if b.inside => "outside the box container",
-                    WallSection::Cylinder(c) if c.inside => "outside the tube",
-                    _ => "inside the solid obstacle",
-                };
-                return Err(src.invalid(
-                    &origin[k],
-                    format!(
-                        "sphere {} at ({}, {}, {}) starts {side} of wall `{name}` (wall[{w}]); \
-                         spheres must start on the open side of every wall",
-                        s.id[k], x.x, x.y, x.z
-                    ),
-                ));
-            }
-        }
-    }
-    Ok(())
 }

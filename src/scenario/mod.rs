@@ -5,6 +5,7 @@
 mod build;
 pub mod default;
 pub mod schema;
+mod spheres;
 
 use std::ops::Range;
 use std::path::{Path, PathBuf};
