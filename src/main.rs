@@ -139,9 +139,6 @@ fn main() -> ExitCode {
                 "riprap: running `{}` from {}",
                 src.scenario.run.name, src.file
             );
-            let built = build(&src)?;
-            eprint!("{}", built.derived.report());
-            drop(built);
             let opts = RunOptions {
                 output_dir: output,
                 restart,

@@ -25,7 +25,8 @@ pub struct RunOptions {
     pub output_dir: Option<PathBuf>,
     /// Continue from this checkpoint.
     pub restart: Option<PathBuf>,
-    /// Show a progress bar (on a terminal) or progress lines.
+    /// Show a progress bar (on a terminal) or progress lines, after printing the derived
+    /// quantities of the scenario (what `riprap check` prints).
     pub progress: bool,
     /// Stop after this many steps (for tests), whatever the end time.
     pub max_steps: Option<u64>,
@@ -82,6 +83,9 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         .unwrap_or_else(|| PathBuf::from("output").join(&sc.run.name));
     std::fs::create_dir_all(&out).with_context(|| format!("cannot create {}", out.display()))?;
     let built = build(src)?;
+    if opts.progress {
+        eprint!("{}", built.derived.report());
+    }
     let mut sim = built.simulation;
     let end = sc.run.end_time;
     let dt = sim.dem.dt;

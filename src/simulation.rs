@@ -158,12 +158,16 @@ impl Simulation {
     fn check(&self) -> Result<(), Instability> {
         let s = &self.dem.spheres;
         let lim = self.dem.limits;
-        let ratio = self.min_period / self.dem.dt;
-        let steps = format!(
-            "the time step Δt = {:.3e} s is {:.1} steps per contact period T = {:.3e} s ([22] asks \
-             for 10-20)",
-            self.dem.dt, ratio, self.min_period
-        );
+        // Built only when a check fails: this runs every step.
+        let steps = || {
+            format!(
+                "the time step Δt = {:.3e} s is {:.1} steps per contact period T = {:.3e} s ([22] \
+                 asks for 10-20)",
+                self.dem.dt,
+                self.min_period / self.dem.dt,
+                self.min_period
+            )
+        };
         let fail = |what: String, cause: String| {
             Err(Instability {
                 time: self.time,
@@ -179,7 +183,10 @@ impl Simulation {
             {
                 return fail(
                     format!("sphere {} has a non-finite position or velocity", s.id[i]),
-                    format!("numerical blow-up: {steps}; or a sphere of zero size or mass"),
+                    format!(
+                        "numerical blow-up: {}; or a sphere of zero size or mass",
+                        steps()
+                    ),
                 );
             }
             let v = s.velocity[i].length();
@@ -190,8 +197,9 @@ impl Simulation {
                         s.id[i], v, lim.max_speed, s.position[i].x, s.position[i].y, s.position[i].z
                     ),
                     format!(
-                        "contact forces too large for the step: {steps}; or spheres that overlapped \
-                         heavily when inserted"
+                        "contact forces too large for the step: {}; or spheres that overlapped \
+                         heavily when inserted",
+                        steps()
                     ),
                 );
             }
@@ -206,7 +214,8 @@ impl Simulation {
                 ),
                 format!(
                     "springs too soft for the loads or speeds (raise the Young's modulus or \
-                     stiffness), or {steps}"
+                     stiffness), or {}",
+                    steps()
                 ),
             );
         }

@@ -10,7 +10,7 @@
 mod common;
 
 use common::*;
-use riprap::dem::material::{ContactModel, Damping, NormalSpring};
+use riprap::dem::material::ContactModel;
 use riprap::dem::walls::{Motion, Shape, Wall};
 use riprap::geometry::{Plane, TriMesh};
 use riprap::io::checkpoint::Checkpoint;
@@ -18,19 +18,6 @@ use riprap::math::Vec3;
 use riprap::simulation::Simulation;
 
 const STEPS: usize = 400;
-
-fn models() -> [(&'static str, ContactModel); 2] {
-    [
-        (
-            "Voigt Hertz",
-            ContactModel::Voigt {
-                spring: NormalSpring::Hertz,
-                damping: Damping::Restitution,
-            },
-        ),
-        ("Hertz-Mindlin", ContactModel::HertzMindlin),
-    ]
-}
 
 /// Builds the system afresh (the same every time).
 fn build(model: ContactModel) -> Simulation {

@@ -14,7 +14,7 @@
 mod common;
 
 use common::*;
-use riprap::dem::material::{ContactModel, Damping, NormalSpring};
+use riprap::dem::material::ContactModel;
 use riprap::math::Vec3;
 
 const DENSITY: f64 = 2500.0;
@@ -24,19 +24,6 @@ const POISSON: f64 = 0.3;
 const STEPS_PER_CONTACT: f64 = 200.0;
 /// The tolerance on duration, peak overlap and peak force.
 const TOL: f64 = 0.01;
-
-fn models() -> [(&'static str, ContactModel); 2] {
-    [
-        (
-            "Voigt Hertz",
-            ContactModel::Voigt {
-                spring: NormalSpring::Hertz,
-                damping: Damping::Restitution,
-            },
-        ),
-        ("Hertz-Mindlin", ContactModel::HertzMindlin),
-    ]
-}
 
 /// One impact: sphere 0 (radius r0, velocity v0 along x) on sphere 1 (radius r1, velocity v1)
 /// or, with `r1 = ∞`, on the plane x = 0.

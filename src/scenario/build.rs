@@ -478,6 +478,10 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         mesh_candidates: MeshCandidates::default(),
         stats: Stats::default(),
     };
+    let at_step = pairings
+        .iter()
+        .map(|(_, c)| discrete_impact(&c.law, c.r_star, c.m_star, v_ref, dt))
+        .collect();
     let derived = Derived {
         reference_velocity: v_ref,
         min_period,
@@ -488,14 +492,8 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         pairings,
         // Per sphere: state ~200 B, neighbour pairs ~8 × 60 B, wall slots 336 B.
         memory: n_total as f64 * 1100.0,
-        at_step: Vec::new(),
+        at_step,
     };
-    let mut derived = derived;
-    derived.at_step = derived
-        .pairings
-        .iter()
-        .map(|(_, c)| discrete_impact(&c.law, c.r_star, c.m_star, v_ref, dt))
-        .collect();
     let simulation = Simulation::new(dem, feeders, min_period);
     Ok(Built {
         simulation,

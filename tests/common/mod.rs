@@ -5,7 +5,7 @@
 #![allow(dead_code)]
 
 use riprap::dem::domain::Domain;
-use riprap::dem::material::{ContactModel, Material};
+use riprap::dem::material::{ContactModel, Damping, Material, NormalSpring};
 use riprap::dem::walls::{Motion, Shape, Wall};
 use riprap::dem::Dem;
 use riprap::geometry::{Plane, TriMesh};
@@ -352,4 +352,18 @@ impl Rng {
     pub fn vec(&mut self, s: f64) -> Vec3 {
         Vec3::new(self.range(-s, s), self.range(-s, s), self.range(-s, s))
     }
+}
+
+/// The two Hertz laws: the source's Voigt-Hertz with restitution damping, and Hertz-Mindlin.
+pub fn models() -> [(&'static str, ContactModel); 2] {
+    [
+        (
+            "Voigt Hertz",
+            ContactModel::Voigt {
+                spring: NormalSpring::Hertz,
+                damping: Damping::Restitution,
+            },
+        ),
+        ("Hertz-Mindlin", ContactModel::HertzMindlin),
+    ]
 }
