@@ -71,6 +71,18 @@ enum BenchCase {
         #[arg(long, default_value_t = 10_000)]
         steps: u64,
     },
+    /// B2 "chute": LAMMPS's bench/in.chute (32,000 spheres, Hooke with history, frozen base).
+    B2 {
+        /// LAMMPS data file (shared/bench/data.chute.gz, uncompressed).
+        #[arg(long, default_value = "data.chute")]
+        data: PathBuf,
+        /// Steps (LAMMPS's benchmark runs 100).
+        #[arg(long, default_value_t = 100)]
+        steps: u64,
+        /// Steps between thermo rows (in.chute: 100).
+        #[arg(long, default_value_t = 100)]
+        every: u64,
+    },
 }
 
 fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
@@ -100,6 +112,46 @@ fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
             "peak memory: {:.1} MB ({:.0} bytes per sphere)",
             m as f64 / 1e6,
             m as f64 / r.n as f64
+        );
+    }
+    Ok(())
+}
+
+fn bench_b2(data: &std::path::Path, steps: u64, every: u64) -> anyhow::Result<()> {
+    use anyhow::Context;
+    use riprap::bench::{b2_simulation, peak_memory, read_lammps_data, run_b2};
+    let text = std::fs::read_to_string(data)
+        .with_context(|| format!("cannot read the LAMMPS data file {}", data.display()))?;
+    let lammps = read_lammps_data(&text).map_err(|e| anyhow::anyhow!("{}: {e}", data.display()))?;
+    let threads = rayon::current_num_threads();
+    let mut sim = b2_simulation(&lammps);
+    println!(
+        "B2 chute: {} atoms from {}, {steps} steps, {threads} thread(s)",
+        lammps.atoms.len(),
+        data.display()
+    );
+    let r = run_b2(&mut sim, steps, every)?;
+    println!(
+        "{:>6} {:>7} {:>16} {:>14}",
+        "Step", "Atoms", "KinEng", "c_1"
+    );
+    for row in &r.rows {
+        println!(
+            "{:>6} {:>7} {:>16.8} {:>14.8}",
+            row.step, row.atoms, row.kinetic, row.rotational
+        );
+    }
+    let n = sim.dem.spheres.len() as f64;
+    let rate = n * steps as f64 / r.loop_seconds;
+    println!("loop time: {:.3} s", r.loop_seconds);
+    println!("neighbour rebuilds: {}", r.rebuilds);
+    println!("particle-steps/s: {rate:.4e}");
+    println!("particle-steps/s per thread: {:.4e}", rate / threads as f64);
+    if let Some(m) = peak_memory() {
+        println!(
+            "peak memory: {:.1} MB ({:.0} bytes per sphere)",
+            m as f64 / 1e6,
+            m as f64 / n
         );
     }
     Ok(())
@@ -168,6 +220,9 @@ fn main() -> ExitCode {
         Command::Bench {
             case: BenchCase::B1 { n, steps },
         } => bench_b1(n, steps),
+        Command::Bench {
+            case: BenchCase::B2 { data, steps, every },
+        } => bench_b2(&data, steps, every),
         Command::Validate { quick, output } => (|| {
             let (_, ok) = riprap::validate::run_validation(&output, quick)?;
             eprintln!("report: {}", output.join("report.md").display());

@@ -225,8 +225,10 @@ pub fn checkpoint_of(sim: &Simulation) -> Checkpoint {
         step: sim.step,
         dt: sim.dem.dt,
         spheres: sim.dem.spheres.clone(),
-        contacts: sim.dem.contacts.save(),
-        wall_slots: sim.dem.wall_slots.clone(),
+        contacts: sim.dem.contacts.save(&sim.dem.neighbors, &sim.dem.spheres),
+        wall_contacts: sim.dem.wall_contacts.save(&sim.dem.spheres),
+        reference: sim.dem.neighbors.reference().to_vec(),
+        built_at: sim.dem.wall_contacts.built_at,
         feeders: sim.feeders.clone(),
         stats: sim.dem.stats,
     }
@@ -242,10 +244,18 @@ fn save(sim: &Simulation, path: &Path) -> anyhow::Result<()> {
 pub fn restore(sim: Simulation, ck: Checkpoint) -> Simulation {
     let mut dem = sim.dem;
     dem.spheres = ck.spheres;
-    dem.contacts.load(&ck.contacts);
-    dem.wall_slots = ck.wall_slots;
     dem.stats = ck.stats;
-    Simulation::resumed(dem, ck.feeders, sim.min_period, ck.time, ck.step)
+    Simulation::resumed(
+        dem,
+        ck.feeders,
+        sim.min_period,
+        ck.time,
+        ck.step,
+        &ck.reference,
+        ck.built_at,
+        &ck.contacts,
+        &ck.wall_contacts,
+    )
 }
 
 /// One row of `series.csv`.

@@ -13,10 +13,12 @@
 //!
 //! ARCHITECTURE.md repeats this order; keep the two in step.
 
-use crate::dem::forces::{compute_forces, MeshCandidates};
+use crate::dem::contacts::SavedContact;
+use crate::dem::forces::{compute_forces, start_forces, Kick};
 use crate::dem::insertion::Feeder;
-use crate::dem::integrate::{drift, half_kick};
-use crate::dem::{Dem, WALL_SLOTS_EMPTY};
+use crate::dem::integrate::open_step;
+use crate::dem::wall_contacts::SavedWallContacts;
+use crate::dem::Dem;
 use crate::math::{is_finite, Vec3};
 
 /// Why a run stopped before its end.
@@ -49,7 +51,8 @@ pub struct Simulation {
 }
 
 impl Simulation {
-    /// Prepares a simulation: builds the neighbour list and evaluates the initial forces.
+    /// Prepares a simulation: builds the neighbour list and evaluates the initial forces
+    /// (without advancing the contact history, as LAMMPS and LIGGGHTS do at set-up).
     pub fn new(mut dem: Dem, feeders: Vec<Feeder>, min_period: f64) -> Self {
         if dem.neighbors.skin <= 0.0 {
             let d_max = dem
@@ -66,96 +69,104 @@ impl Simulation {
             step: 0,
             min_period,
         };
-        sim.refresh_lists();
-        compute_forces(&mut sim.dem, sim.time);
+        sim.dem.rebuild_lists(sim.time);
+        start_forces(&mut sim.dem.spheres, sim.dem.gravity);
+        compute_forces(&mut sim.dem, sim.time, None, false);
         sim
     }
 
-    /// Prepares a simulation restored from a checkpoint: its forces and history are already
-    /// those of the saved step, so they are not evaluated again (that would advance the history).
-    pub fn resumed(dem: Dem, feeders: Vec<Feeder>, min_period: f64, time: f64, step: u64) -> Self {
-        let mut sim = Simulation {
+    /// Prepares a simulation restored from a checkpoint: the spheres (in their saved storage
+    /// order) with the forces of the saved step, the neighbour-build positions and time, and
+    /// the contact history. The lists are rebuilt as the saved run had them and the forces are
+    /// not evaluated again (that would advance the history), so the run continues bit for bit.
+    #[allow(clippy::too_many_arguments)]
+    pub fn resumed(
+        mut dem: Dem,
+        feeders: Vec<Feeder>,
+        min_period: f64,
+        time: f64,
+        step: u64,
+        reference: &[Vec3],
+        built_at: f64,
+        contacts: &[SavedContact],
+        wall_contacts: &[SavedWallContacts],
+    ) -> Self {
+        dem.restore_lists(reference, built_at, contacts, wall_contacts);
+        Simulation {
             dem,
             feeders,
             time,
             step,
             min_period,
-        };
-        sim.refresh_lists();
-        sim
-    }
-
-    /// Rebuilds the neighbour list, the pair history index and the mesh candidates.
-    fn refresh_lists(&mut self) {
-        let d = &mut self.dem;
-        d.wall_slots.resize(d.spheres.len(), WALL_SLOTS_EMPTY);
-        d.neighbors.build(&d.spheres, &d.domain);
-        d.contacts.rebuild(&d.neighbors.pairs, &d.spheres);
-        d.mesh_candidates = MeshCandidates::build(d, self.time);
+        }
     }
 
     /// Advances one time step Δt.
     pub fn step(&mut self) -> Result<(), Instability> {
         let dt = self.dem.dt;
-        half_kick(&mut self.dem.spheres, dt);
-        drift(&mut self.dem.spheres, dt);
+        let d = &mut self.dem;
+        let opening = open_step(
+            &mut d.spheres,
+            dt,
+            &d.domain,
+            d.gravity,
+            d.neighbors.reference(),
+            0.5 * d.neighbors.skin,
+            d.limits.max_speed,
+        );
         let t_new = self.time + dt;
-        let mut changed = self.apply_boundaries();
+        let mut changed = opening.outside > 0 && self.remove_outside();
         for f in &mut self.feeders {
             let added = f.feed(&mut self.dem.spheres, &self.dem.domain, t_new);
-            changed |= added > 0;
+            if added > 0 {
+                // Newcomers get their weight like the others.
+                let s = &mut self.dem.spheres;
+                let n = s.len();
+                for i in n - added..n {
+                    s.force[i] = s.mass[i] * self.dem.gravity;
+                }
+                changed = true;
+            }
         }
         self.time = t_new;
         self.step += 1;
-        if changed
-            || self
-                .dem
-                .neighbors
-                .needs_rebuild(&self.dem.spheres, &self.dem.domain)
-            || self.dem.mesh_candidates.stale(&self.dem, self.time)
-        {
-            self.refresh_lists();
+        if changed || opening.moved || self.dem.walls_moved(self.time) {
+            self.dem.rebuild_lists(self.time);
         }
-        compute_forces(&mut self.dem, self.time);
-        half_kick(&mut self.dem.spheres, dt);
-        self.check()
+        let kick = Kick {
+            half_dt: 0.5 * dt,
+            max_speed: self.dem.limits.max_speed,
+        };
+        let bad = compute_forces(&mut self.dem, self.time, Some(kick), true);
+        self.check(bad)
     }
 
-    /// Wraps periodic axes and removes spheres outside the domain; true if any was removed.
-    /// A sphere that leaves at an absurd speed (or with a non-finite state) is kept, so that the
-    /// stability check reports it instead of the run quietly losing it.
-    fn apply_boundaries(&mut self) -> bool {
+    /// Removes the spheres whose centre left the domain along a non-periodic axis; true if any
+    /// was removed. A sphere that leaves at an absurd speed (or with a non-finite state) is
+    /// kept, so that the stability check reports it instead of the run quietly losing it.
+    fn remove_outside(&mut self) -> bool {
         let d = &mut self.dem;
         let domain = d.domain;
         let v_max = d.limits.max_speed;
         let s = &mut d.spheres;
-        for x in s.position.iter_mut() {
-            *x = domain.wrap(*x);
-        }
         let stays = |x: Vec3, v: Vec3| {
             domain.contains(x) || !is_finite(x) || v.length().is_nan() || v.length() > v_max
         };
-        let lost = (0..s.len())
-            .filter(|&i| !stays(s.position[i], s.velocity[i]))
-            .count();
-        if lost == 0 {
-            return false; // The common case allocates nothing.
-        }
         let keep: Vec<bool> = (0..s.len())
             .map(|i| stays(s.position[i], s.velocity[i]))
             .collect();
+        let lost = keep.iter().filter(|&&k| !k).count();
+        if lost == 0 {
+            return false;
+        }
         s.retain(&keep);
-        let mut k = 0;
-        d.wall_slots.retain(|_| {
-            k += 1;
-            keep[k - 1]
-        });
         d.stats.spheres_lost += lost;
         true
     }
 
     /// Declares the run unstable on NaN, absurd speed or excessive overlap, naming the sphere.
-    fn check(&self) -> Result<(), Instability> {
+    /// `bad` is a sphere the force pass found with a non-finite state or too fast, if any.
+    fn check(&self, bad: Option<usize>) -> Result<(), Instability> {
         let s = &self.dem.spheres;
         let lim = self.dem.limits;
         // Built only when a check fails: this runs every step.
@@ -176,7 +187,7 @@ impl Simulation {
                 cause,
             })
         };
-        for i in 0..s.len() {
+        if let Some(i) = bad {
             if !is_finite(s.position[i])
                 || !is_finite(s.velocity[i])
                 || !is_finite(s.angular_velocity[i])

@@ -27,10 +27,13 @@ impl Domain {
     /// The separation `d` reduced to its nearest periodic image.
     #[inline]
     pub fn minimum_image(&self, mut d: Vec3) -> Vec3 {
-        let l = self.size();
         for k in 0..3 {
             if self.periodic[k] {
-                d[k] -= l[k] * (d[k] / l[k]).round();
+                let l = self.max[k] - self.min[k];
+                // Most separations are already the nearest image: test before dividing.
+                if d[k].abs() > 0.5 * l {
+                    d[k] -= l * (d[k] / l).round();
+                }
             }
         }
         d

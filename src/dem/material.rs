@@ -76,6 +76,19 @@ pub enum ContactModel {
     /// LIGGGHTS `model hertz tangential history` (= LAMMPS `hertz/material` + `mindlin`), exactly
     /// as `shared/bench/README.md` specifies it, for users coming from those codes.
     HertzMindlin,
+    /// LAMMPS `pair_style gran/hooke/history k_n k_t γ_n γ_t xmu dampflag` (`contact::hooke`):
+    /// a linear spring-dashpot with tangential history, for users of LAMMPS and its chute
+    /// benchmark (B2). The friction coefficient (LAMMPS xmu) is the pair's.
+    HookeHistory {
+        /// Normal stiffness k_n [N m⁻¹].
+        normal_stiffness: f64,
+        /// Tangential stiffness k_t [N m⁻¹] (LAMMPS's default: 2/7 k_n).
+        tangential_stiffness: f64,
+        /// Normal damping γ_n [s⁻¹]: the dashpot is m* γ_n.
+        normal_damping: f64,
+        /// Tangential damping γ_t [s⁻¹] (LAMMPS's default γ_n/2; 0 with dampflag 0).
+        tangential_damping: f64,
+    },
 }
 
 /// Which kernel a pair uses.
@@ -89,6 +102,8 @@ pub enum LawKind {
     ApparentLinear,
     /// LIGGGHTS/LAMMPS Hertz-Mindlin.
     HertzMindlin,
+    /// LAMMPS Hooke with history.
+    HookeHistory,
 }
 
 /// Everything the contact kernel needs for one pair of materials.
@@ -96,8 +111,12 @@ pub enum LawKind {
 pub struct PairLaw {
     /// Kernel.
     pub kind: LawKind,
-    /// Linear stiffness k_n [N m⁻¹] (`Linear` only).
+    /// Linear stiffness k_n [N m⁻¹] (`Linear` and `HookeHistory`).
     pub stiffness: f64,
+    /// Tangential stiffness k_t [N m⁻¹] (`HookeHistory` only).
+    pub tangential_stiffness: f64,
+    /// Normal and tangential damping rates γ_n, γ_t [s⁻¹] (`HookeHistory` only).
+    pub gamma: (f64, f64),
     /// Reference impact velocity for [19] [m s⁻¹] (`ApparentLinear` only).
     pub reference_velocity: f64,
     /// Effective modulus E* with 1/E* = (1-ν_i²)/E_i + (1-ν_j²)/E_j [Pa].
@@ -143,6 +162,8 @@ impl PairLaw {
         let mut law = PairLaw {
             kind: LawKind::Linear,
             stiffness: 0.0,
+            tangential_stiffness: 0.0,
+            gamma: (0.0, 0.0),
             reference_velocity: 0.0,
             e_star: 1.0 / inv_e,
             g_star: 1.0 / inv_g,
@@ -153,6 +174,17 @@ impl PairLaw {
             beta: 0.0,
         };
         match *model {
+            ContactModel::HookeHistory {
+                normal_stiffness,
+                tangential_stiffness,
+                normal_damping,
+                tangential_damping,
+            } => {
+                law.kind = LawKind::HookeHistory;
+                law.stiffness = normal_stiffness;
+                law.tangential_stiffness = tangential_stiffness;
+                law.gamma = (normal_damping, tangential_damping);
+            }
             ContactModel::HertzMindlin => {
                 law.kind = LawKind::HertzMindlin;
                 let ln_e = e.max(1e-12).ln();

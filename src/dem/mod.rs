@@ -12,22 +12,24 @@ pub mod insertion;
 pub mod integrate;
 pub mod material;
 pub mod neighbor;
+pub mod par;
 pub mod spheres;
 pub mod timestep;
+pub mod wall_contacts;
 pub mod walls;
 
 use serde::{Deserialize, Serialize};
 
 use crate::math::Vec3;
-use contacts::PairContacts;
+use contacts::{PairContacts, SavedContact};
 use domain::Domain;
 use material::{Material, PairLaw};
 use neighbor::NeighborList;
 use spheres::Spheres;
-use walls::{Wall, WallContact, WallSlots};
+use wall_contacts::{SavedWallContacts, WallContacts};
+use walls::Wall;
 
-/// Wall slots of a sphere that touches no wall.
-pub const WALL_SLOTS_EMPTY: WallSlots = [WallContact::EMPTY; walls::WALL_SLOTS];
+pub use wall_contacts::WALL_SLOTS_EMPTY;
 
 /// Bounds beyond which a run is declared unstable.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -56,7 +58,7 @@ pub struct Stats {
     pub wall_contacts: usize,
     /// Largest overlap / smaller radius [-].
     pub max_overlap_ratio: f64,
-    /// Slot of the sphere with the largest overlap ratio.
+    /// Slot of the sphere with the largest overlap ratio (`usize::MAX` if none).
     pub max_overlap_slot: usize,
     /// Wall contacts dropped because a sphere touched more than `WALL_SLOTS` surfaces.
     pub dropped_wall_contacts: usize,
@@ -83,14 +85,12 @@ pub struct Dem {
     pub dt: f64,
     /// Instability bounds.
     pub limits: Limits,
-    /// Verlet list.
+    /// Verlet list (which also keeps the spheres sorted by cell).
     pub neighbors: NeighborList,
-    /// Pair history and reactions.
+    /// Pair history, aligned with the neighbour list.
     pub contacts: PairContacts,
-    /// Wall contact history, one set of slots per sphere.
-    pub wall_slots: Vec<WallSlots>,
-    /// Mesh triangles near each sphere: CSR over spheres, for each mesh wall.
-    pub mesh_candidates: forces::MeshCandidates,
+    /// Walls within reach of each sphere and the wall-contact history.
+    pub wall_contacts: WallContacts,
     /// Counters of the last force evaluation.
     pub stats: Stats,
 }
@@ -108,6 +108,56 @@ impl Dem {
             .iter()
             .position(|m| m.name == name)
             .map(|i| i as u16)
+    }
+}
+
+impl Dem {
+    /// Rebuilds the neighbour list at the current positions (which sorts the spheres by cell),
+    /// carries the pair history over, and lists the walls within reach of each sphere at time
+    /// `t`.
+    pub fn rebuild_lists(&mut self, t: f64) {
+        self.neighbors.build(&mut self.spheres, &self.domain, None);
+        self.contacts.rebuild(&self.neighbors, &self.spheres);
+        self.rebuild_wall_lists(t);
+    }
+
+    /// Rebuilds the lists as a saved run had them: at the positions `reference` of its last
+    /// neighbour build (by slot, with the spheres in the saved storage order) and the time
+    /// `built_at` of that build, then puts the saved history back. The run then continues
+    /// with the same lists, storage order and rebuild schedule, hence bit for bit.
+    pub fn restore_lists(
+        &mut self,
+        reference: &[Vec3],
+        built_at: f64,
+        contacts: &[SavedContact],
+        walls: &[SavedWallContacts],
+    ) {
+        self.neighbors.forget();
+        self.neighbors
+            .build(&mut self.spheres, &self.domain, Some(reference));
+        self.contacts.rebuild(&self.neighbors, &self.spheres);
+        self.contacts
+            .restore(contacts, &self.neighbors, &self.spheres);
+        self.wall_contacts = WallContacts::default();
+        self.rebuild_wall_lists(built_at);
+        self.wall_contacts.restore(walls, &self.spheres);
+    }
+
+    fn rebuild_wall_lists(&mut self, t: f64) {
+        self.wall_contacts.rebuild(
+            &self.walls,
+            &self.spheres,
+            self.neighbors.reference(),
+            &self.neighbors.previous_slot,
+            t,
+            self.neighbors.skin,
+        );
+    }
+
+    /// True when a moving wall has gone more than skin/2 since the last build.
+    pub fn walls_moved(&self, t: f64) -> bool {
+        self.wall_contacts
+            .stale(&self.walls, t, self.neighbors.skin)
     }
 }
 
@@ -145,8 +195,7 @@ impl Dem {
             limits: Limits::default(),
             neighbors: NeighborList::new(0.0),
             contacts: PairContacts::default(),
-            wall_slots: Vec::new(),
-            mesh_candidates: forces::MeshCandidates::default(),
+            wall_contacts: WallContacts::default(),
             stats: Stats::default(),
         }
     }

@@ -1,49 +1,90 @@
-//! Candidate pairs: a cell list and a Verlet list with a skin.
+//! Candidate pairs and the storage order of the spheres: a cell grid and a Verlet list.
 //!
-//! Spheres are binned into cubic cells of edge 2 r_max + skin; every pair closer than
-//! r_i + r_j + skin is listed once, as slots (i, j) with i < j, sorted. The list stays valid until
-//! some sphere has moved more than skin/2 since the build. Building is O(N).
+//! At each build the spheres are binned into cells at least 2 r_max + skin wide and **sorted
+//! by cell** (`Spheres::permute`), so that spheres close in space are close in memory. The
+//! linear cell index runs fastest along the axis with the fewest cells and slowest along the
+//! axis with the most; the layers of cells across that slowest axis ("slabs") are therefore
+//! contiguous ranges of slots. A pair only joins spheres of the same or of adjacent slabs, which
+//! lets the force computation scatter pair forces from several threads at once without two
+//! threads ever writing the same sphere (`forces`).
+//!
+//! Each pair closer than r_i + r_j + skin is listed once, under its *owner*: the sphere with the
+//! lower slot, except for a pair across a periodic boundary along the slab axis, which belongs to
+//! the sphere in the last slab. The partners of sphere i are `partner[offsets[i]..offsets[i+1]]`,
+//! ascending. The list stays valid until some sphere has moved more than skin/2 since the build.
+//! Building is O(N) and allocates nothing once its buffers have grown.
 
 use rayon::prelude::*;
 
 use super::domain::Domain;
-use super::spheres::Spheres;
+use super::spheres::{PermuteScratch, SphereId, Spheres};
 use crate::math::Vec3;
 
-/// Spheres per parallel work item; fixed so that the result does not depend on the thread count.
-const CHUNK: usize = 2048;
+/// "No slot": a sphere that was not present at the previous build.
+pub const NONE: u32 = u32::MAX;
 
-/// A Verlet neighbour list.
-#[derive(Clone, Debug, Default)]
-pub struct NeighborList {
-    /// Skin distance added to the contact distance [m].
-    pub skin: f64,
-    /// Candidate pairs (slot i, slot j), i < j, sorted.
-    pub pairs: Vec<(u32, u32)>,
-    /// Positions at the last build [m].
-    reference: Vec<Vec3>,
-    /// Number of builds so far.
-    pub builds: u64,
-    cells: CellGrid,
-    chunks: Vec<Vec<(u32, u32)>>,
-}
+/// Owners per parallel work item of the build; fixed, so the result is thread-count independent.
+const CHUNK: usize = 1024;
 
+/// The cell grid of a build.
 #[derive(Clone, Debug, Default)]
 struct CellGrid {
+    /// Lower corner [m].
     origin: Vec3,
-    /// Cell widths, at least the binning edge along every axis [m].
+    /// Cell widths [m], at least the binning edge along every axis.
     width: Vec3,
+    /// Cells along x, y, z.
     n: [usize; 3],
+    /// The axes from the fastest-varying in the linear cell index to the slowest (the slab axis).
+    axes: [usize; 3],
+    /// Periodic axes (the grid then spans the whole domain along them).
+    periodic: [bool; 3],
+    /// Spheres per cell, then (after the prefix sum) the first slot of each cell; `cells + 1`.
     start: Vec<u32>,
-    items: Vec<u32>,
+    /// Cell of each sphere.
     cell_of: Vec<u32>,
 }
 
 impl CellGrid {
-    fn index(&self, c: [usize; 3]) -> usize {
-        c[0] + self.n[0] * (c[1] + self.n[1] * c[2])
+    /// Lays the grid over the domain (periodic axes) or over the spheres' extent clamped to the
+    /// domain (other axes), with cells at least `edge` wide, coarser when the cells would
+    /// outnumber 8 N (to bound memory).
+    fn lay_out(&mut self, domain: &Domain, pos: &[Vec3], edge: f64) {
+        let (mut lo, mut hi) = (domain.min, domain.max);
+        let mut seen = [f64::INFINITY, f64::NEG_INFINITY].map(Vec3::splat);
+        for x in pos {
+            seen[0] = seen[0].min(*x);
+            seen[1] = seen[1].max(*x);
+        }
+        for k in 0..3 {
+            if !domain.periodic[k] && seen[0][k] <= seen[1][k] {
+                lo[k] = seen[0][k].clamp(domain.min[k], domain.max[k]);
+                hi[k] = seen[1][k].clamp(domain.min[k], domain.max[k]);
+            }
+        }
+        let size = hi - lo;
+        let max_cells = (8 * pos.len()).max(4096) as f64;
+        let mut edge = edge;
+        while (0..3)
+            .map(|k| (size[k] / edge).floor().max(1.0))
+            .product::<f64>()
+            > max_cells
+        {
+            edge *= 1.25;
+        }
+        for k in 0..3 {
+            self.n[k] = ((size[k] / edge).floor() as usize).max(1);
+            self.width[k] = (size[k] / self.n[k] as f64).max(edge);
+        }
+        self.origin = lo;
+        self.periodic = domain.periodic;
+        let mut axes = [0, 1, 2];
+        axes.sort_by_key(|&k| self.n[k]);
+        self.axes = axes;
     }
 
+    /// Cell coordinates of a point, clamped to the grid.
+    #[inline]
     fn coords(&self, x: Vec3) -> [usize; 3] {
         let mut c = [0; 3];
         for k in 0..3 {
@@ -57,27 +98,33 @@ impl CellGrid {
         c
     }
 
-    /// Counting sort of the spheres into cells (stable: slots ascend within a cell).
-    fn bin(&mut self, domain: &Domain, pos: &[Vec3], edge: f64) {
-        let size = domain.size();
-        self.origin = domain.min;
-        // Cells tile the box exactly and are at least `edge` wide; spheres outside the box along a
-        // non-periodic axis fall into the outermost cells, which only adds candidates.
-        // Coarser cells when the box is huge compared with the spheres, to bound memory.
-        let max_cells = (8 * pos.len()).max(4096) as f64;
-        let mut edge = edge;
-        while (0..3)
-            .map(|k| (size[k] / edge).floor().max(1.0))
-            .product::<f64>()
-            > max_cells
-        {
-            edge *= 1.25;
-        }
-        for k in 0..3 {
-            self.n[k] = ((size[k] / edge).floor() as usize).max(1);
-            self.width[k] = size[k] / self.n[k] as f64;
-        }
-        let total = self.n[0] * self.n[1] * self.n[2];
+    #[inline]
+    fn index(&self, c: [usize; 3]) -> usize {
+        let [a0, a1, a2] = self.axes;
+        c[a0] + self.n[a0] * (c[a1] + self.n[a1] * c[a2])
+    }
+
+    #[inline]
+    fn cells(&self) -> usize {
+        self.n[0] * self.n[1] * self.n[2]
+    }
+
+    /// Cells per slab.
+    #[inline]
+    fn slab_cells(&self) -> usize {
+        self.n[self.axes[0]] * self.n[self.axes[1]]
+    }
+
+    /// Number of slabs.
+    #[inline]
+    fn slabs(&self) -> usize {
+        self.n[self.axes[2]]
+    }
+
+    /// Bins the points and writes in `order` the slots sorted by cell (stable: ascending slot
+    /// within a cell); `start` then holds the first sorted position of each cell.
+    fn bin(&mut self, pos: &[Vec3], order: &mut Vec<u32>) {
+        let total = self.cells();
         self.start.clear();
         self.start.resize(total + 1, 0);
         self.cell_of.clear();
@@ -89,17 +136,28 @@ impl CellGrid {
         for c in 0..total {
             self.start[c + 1] += self.start[c];
         }
-        self.items.clear();
-        self.items.resize(pos.len(), 0);
-        let mut fill = self.start.clone();
+        order.clear();
+        order.resize(pos.len(), 0);
+        // `start[c]` is used as the fill pointer of cell c, then restored.
         for (i, &c) in self.cell_of.iter().enumerate() {
-            self.items[fill[c as usize] as usize] = i as u32;
-            fill[c as usize] += 1;
+            let f = &mut self.start[c as usize];
+            order[*f as usize] = i as u32;
+            *f += 1;
         }
+        for c in (1..=total).rev() {
+            self.start[c] = self.start[c - 1];
+        }
+        self.start[0] = 0;
     }
 
-    /// The distinct cells around `c` (itself included), wrapping along periodic axes.
-    fn around(&self, c: [usize; 3], periodic: [bool; 3], out: &mut Vec<usize>) {
+    /// The distinct cells around cell `c` (itself included), wrapping along periodic axes,
+    /// ascending.
+    fn around(&self, c: usize, out: &mut Vec<u32>) {
+        let [a0, a1, _] = self.axes;
+        let mut cc = [0usize; 3];
+        cc[a0] = c % self.n[a0];
+        cc[a1] = (c / self.n[a0]) % self.n[a1];
+        cc[self.axes[2]] = c / self.slab_cells();
         out.clear();
         for dz in -1i64..=1 {
             for dy in -1i64..=1 {
@@ -108,9 +166,9 @@ impl CellGrid {
                     let mut ok = true;
                     for (k, d) in [dx, dy, dz].into_iter().enumerate() {
                         let n = self.n[k] as i64;
-                        let mut v = c[k] as i64 + d;
+                        let mut v = cc[k] as i64 + d;
                         if v < 0 || v >= n {
-                            if periodic[k] {
+                            if self.periodic[k] {
                                 v = v.rem_euclid(n);
                             } else {
                                 ok = false;
@@ -119,7 +177,7 @@ impl CellGrid {
                         q[k] = v as usize;
                     }
                     if ok {
-                        out.push(self.index(q));
+                        out.push(self.index(q) as u32);
                     }
                 }
             }
@@ -127,6 +185,47 @@ impl CellGrid {
         out.sort_unstable();
         out.dedup();
     }
+}
+
+/// Per-chunk output of a build.
+#[derive(Clone, Debug, Default)]
+struct ChunkOut {
+    partner: Vec<u32>,
+    count: Vec<u32>,
+}
+
+/// A Verlet neighbour list that also keeps the spheres sorted by cell.
+#[derive(Clone, Debug, Default)]
+pub struct NeighborList {
+    /// Skin distance added to the contact distance [m].
+    pub skin: f64,
+    /// Number of builds so far.
+    pub builds: u64,
+    /// CSR over owner slots: the pairs of owner i are `offsets[i]..offsets[i + 1]`.
+    pub offsets: Vec<u32>,
+    /// Partner slot of each pair.
+    pub partner: Vec<u32>,
+    /// For each slot, the slot the same sphere had at the previous build (`NONE` if it was not
+    /// there, and for every sphere at the first build or after `forget`).
+    pub previous_slot: Vec<u32>,
+    /// The previous build's list (CSR over its slots), with partners given by id.
+    pub old_offsets: Vec<u32>,
+    /// See `old_offsets`.
+    pub old_partner_id: Vec<SphereId>,
+    /// Slot ranges of the slabs: slab k holds slots `slabs[k]..slabs[k + 1]`.
+    slabs: Vec<u32>,
+    /// Whether pairs cross a periodic boundary along the slab axis (owned by the last slab).
+    slab_wraps: bool,
+    /// Positions at the last build [m].
+    reference: Vec<Vec3>,
+    /// Ids at the last build, by slot.
+    built_ids: Vec<SphereId>,
+    grid: CellGrid,
+    chunks: Vec<ChunkOut>,
+    order: Vec<u32>,
+    slot_before: Vec<u32>,
+    scratch: PermuteScratch,
+    tmp: Vec<Vec3>,
 }
 
 impl NeighborList {
@@ -138,8 +237,35 @@ impl NeighborList {
         }
     }
 
+    /// Positions at the last build [m], by slot.
+    pub fn reference(&self) -> &[Vec3] {
+        &self.reference
+    }
+
+    /// Slot ranges of the slabs (`slabs()[k]..slabs()[k + 1]`): a pair joins spheres of the
+    /// same slab or of consecutive slabs, or of the last and the first when `slab_wraps()`.
+    pub fn slabs(&self) -> &[u32] {
+        &self.slabs
+    }
+
+    /// True when pairs join the last slab to the first across a periodic boundary; those pairs
+    /// are owned by the spheres of the last slab.
+    pub fn slab_wraps(&self) -> bool {
+        self.slab_wraps
+    }
+
+    /// Drops the memory of the previous build, so that the next build carries nothing over
+    /// (used when the history is restored from a checkpoint instead).
+    pub fn forget(&mut self) {
+        self.builds = 0;
+        self.built_ids.clear();
+        self.offsets.clear();
+        self.partner.clear();
+    }
+
     /// True when a sphere has moved more than skin/2 since the last build, or spheres were added
-    /// or removed.
+    /// or removed. (`Simulation::step` folds this test into the drift; this is the stand-alone
+    /// version.)
     pub fn needs_rebuild(&self, spheres: &Spheres, domain: &Domain) -> bool {
         if self.reference.len() != spheres.len() || self.builds == 0 {
             return true;
@@ -152,52 +278,203 @@ impl NeighborList {
             .any(|(&x, &x0)| domain.minimum_image(x - x0).length_squared() > limit2)
     }
 
-    /// Rebuilds the candidate pairs.
-    pub fn build(&mut self, spheres: &Spheres, domain: &Domain) {
-        let pos = &spheres.position;
-        let rad = &spheres.radius;
-        let r_max = rad.iter().cloned().fold(0.0, f64::max);
+    /// Sorts the spheres by cell and rebuilds the candidate pairs. The list is built at the
+    /// positions `at` (by slot; default: the current positions), which a restart uses to
+    /// rebuild exactly the list of the saved run.
+    pub fn build(&mut self, spheres: &mut Spheres, domain: &Domain, at: Option<&[Vec3]>) {
+        let n = spheres.len();
+        self.keep_old_list(spheres);
+        self.reference.clear();
+        self.reference
+            .extend_from_slice(at.unwrap_or(&spheres.position));
+        assert_eq!(
+            self.reference.len(),
+            n,
+            "build: positions of the wrong length"
+        );
+        let r_max = spheres.radius.iter().cloned().fold(0.0, f64::max);
         let edge = (2.0 * r_max + self.skin).max(1e-12);
-        self.cells.bin(domain, pos, edge);
-        let n = pos.len();
+        self.grid.lay_out(domain, &self.reference, edge);
+        self.grid.bin(&self.reference, &mut self.order);
+
+        // Reorder the spheres and everything indexed by slot.
+        let identity = self.order.iter().enumerate().all(|(k, &o)| k == o as usize);
+        if !identity {
+            spheres.permute(&self.order, &mut self.scratch);
+            self.tmp.clear();
+            self.tmp
+                .extend(self.order.iter().map(|&o| self.reference[o as usize]));
+            std::mem::swap(&mut self.reference, &mut self.tmp);
+        }
+        self.previous_slot.clear();
+        self.previous_slot
+            .extend(self.order.iter().map(|&o| self.slot_before[o as usize]));
+        // After sorting, cell c holds slots start[c]..start[c + 1].
+        let cells = self.grid.cells();
+        self.grid.cell_of.clear();
+        for c in 0..cells {
+            let k = (self.grid.start[c + 1] - self.grid.start[c]) as usize;
+            self.grid.cell_of.extend(std::iter::repeat_n(c as u32, k));
+        }
+        self.set_slabs(n);
+        self.find_pairs(spheres, domain);
+        self.built_ids.clear();
+        self.built_ids.extend_from_slice(&spheres.id);
+        self.builds += 1;
+    }
+
+    /// Moves the current list to `old_*` with partners as ids, and writes in `slot_before`, for
+    /// each current slot, the slot of the same sphere at that build.
+    fn keep_old_list(&mut self, spheres: &Spheres) {
+        let n = spheres.len();
+        self.slot_before.clear();
+        self.slot_before.resize(n, NONE);
+        self.old_offsets.clear();
+        self.old_partner_id.clear();
+        let valid = self.builds > 0 && self.offsets.len() == self.built_ids.len() + 1;
+        if !valid {
+            return;
+        }
+        std::mem::swap(&mut self.old_offsets, &mut self.offsets);
+        let ids = &self.built_ids;
+        self.old_partner_id
+            .par_extend(self.partner.par_iter().map(|&p| ids[p as usize]));
+        let unchanged = spheres.len() == ids.len() && spheres.id == *ids;
+        if unchanged {
+            for (k, s) in self.slot_before.iter_mut().enumerate() {
+                *s = k as u32;
+            }
+        } else {
+            for (o, &id) in ids.iter().enumerate() {
+                if let Some(k) = spheres.slot_of(id) {
+                    self.slot_before[k] = o as u32;
+                }
+            }
+        }
+    }
+
+    fn set_slabs(&mut self, n: usize) {
+        let g = &self.grid;
+        let s = g.slabs();
+        let sc = g.slab_cells();
+        let axis = g.axes[2];
+        self.slabs.clear();
+        // One slab only when the slabs would wrap onto themselves (fewer than 3 across a
+        // periodic axis): then a single task computes every pair.
+        if g.periodic[axis] && s < 3 {
+            self.slabs.extend([0, n as u32]);
+            self.slab_wraps = false;
+        } else {
+            self.slabs.extend((0..=s).map(|k| g.start[k * sc]));
+            self.slab_wraps = g.periodic[axis];
+        }
+    }
+
+    fn find_pairs(&mut self, spheres: &Spheres, domain: &Domain) {
+        let n = spheres.len();
         let n_chunks = n.div_ceil(CHUNK);
-        self.chunks.resize_with(n_chunks, Vec::new);
-        let cells = &self.cells;
+        self.chunks.resize_with(n_chunks, ChunkOut::default);
+        let grid = &self.grid;
         let skin = self.skin;
+        let wrap = self.slab_wraps;
+        let slabs = grid.slabs() as u32;
+        let slab_cells = grid.slab_cells() as u32;
+        let pos = &self.reference;
+        let (rad, fixed) = (&spheres.radius, &spheres.fixed);
         self.chunks.par_iter_mut().enumerate().for_each(|(c, out)| {
-            out.clear();
+            out.partner.clear();
+            out.count.clear();
             let mut around = Vec::with_capacity(27);
-            let mut js: Vec<u32> = Vec::new();
+            // (first slot, end slot, only slots above the owner's) of the cells to search.
+            let mut ranges: Vec<(u32, u32, bool)> = Vec::with_capacity(27);
+            let mut last_cell = NONE;
             for i in c * CHUNK..((c + 1) * CHUNK).min(n) {
-                let fixed_i = spheres.fixed[i];
-                cells.around(cells.coords(pos[i]), domain.periodic, &mut around);
-                js.clear();
-                for &cell in &around {
-                    for &j in
-                        &cells.items[cells.start[cell] as usize..cells.start[cell + 1] as usize]
-                    {
-                        let j = j as usize;
-                        if j <= i || (fixed_i && spheres.fixed[j]) {
+                let cell = grid.cell_of[i];
+                if cell != last_cell {
+                    last_cell = cell;
+                    grid.around(cell as usize, &mut around);
+                    ranges.clear();
+                    let slab = cell / slab_cells;
+                    for &q in &around {
+                        let q_slab = q / slab_cells;
+                        let (s, e) = (grid.start[q as usize], grid.start[q as usize + 1]);
+                        if s == e {
                             continue;
                         }
-                        let cut = rad[i] + rad[j] + skin;
-                        if domain.minimum_image(pos[j] - pos[i]).length_squared() < cut * cut {
-                            js.push(j as u32);
+                        if wrap && slab == slabs - 1 && q_slab == 0 {
+                            ranges.push((s, e, false));
+                        } else if wrap && slab == 0 && q_slab == slabs - 1 {
+                            continue;
+                        } else if q >= cell {
+                            ranges.push((s, e, q == cell));
                         }
                     }
                 }
-                js.sort_unstable();
-                out.extend(js.iter().map(|&j| (i as u32, j)));
+                let before = out.partner.len();
+                let (xi, ri, fi) = (pos[i], rad[i], fixed[i]);
+                for &(s, e, above) in &ranges {
+                    let s = if above { s.max(i as u32 + 1) } else { s };
+                    for j in s..e {
+                        let j = j as usize;
+                        if fi && fixed[j] {
+                            continue;
+                        }
+                        let cut = ri + rad[j] + skin;
+                        if domain.minimum_image(pos[j] - xi).length_squared() < cut * cut {
+                            out.partner.push(j as u32);
+                        }
+                    }
+                }
+                out.partner[before..].sort_unstable();
+                out.count.push((out.partner.len() - before) as u32);
             }
         });
-        self.pairs.clear();
+        self.offsets.clear();
+        self.offsets.push(0);
+        self.partner.clear();
+        let mut total = 0u32;
         for ch in &self.chunks {
-            self.pairs.extend_from_slice(ch);
+            for &k in &ch.count {
+                total += k;
+                self.offsets.push(total);
+            }
+            self.partner.extend_from_slice(&ch.partner);
         }
-        self.reference.clear();
-        self.reference.extend_from_slice(pos);
-        self.builds += 1;
     }
+}
+
+/// All pairs of spheres (slots i < j) closer than r_i + r_j + `margin`, sorted, without
+/// reordering the spheres: for one-off checks such as overlaps in a scenario.
+pub fn close_pairs(spheres: &Spheres, domain: &Domain, margin: f64) -> Vec<(u32, u32)> {
+    let pos = &spheres.position;
+    let rad = &spheres.radius;
+    let r_max = rad.iter().cloned().fold(0.0, f64::max);
+    let mut grid = CellGrid::default();
+    grid.lay_out(domain, pos, (2.0 * r_max + margin).max(1e-12));
+    let mut sorted = Vec::new();
+    grid.bin(pos, &mut sorted);
+    let mut around = Vec::new();
+    let mut out = Vec::new();
+    for i in 0..pos.len() {
+        grid.around(grid.cell_of[i] as usize, &mut around);
+        let first = out.len();
+        for &q in &around {
+            for &j in &sorted[grid.start[q as usize] as usize..grid.start[q as usize + 1] as usize]
+            {
+                let cut = rad[i] + rad[j as usize] + margin;
+                if j as usize > i
+                    && domain
+                        .minimum_image(pos[j as usize] - pos[i])
+                        .length_squared()
+                        < cut * cut
+                {
+                    out.push((i as u32, j));
+                }
+            }
+        }
+        out[first..].sort_unstable();
+    }
+    out
 }
 
 #[cfg(test)]
@@ -218,43 +495,94 @@ mod tests {
         v
     }
 
-    /// The cell list finds exactly the brute-force pairs, with mixed sizes (ratio 3) and
-    /// periodic axes, including boxes only one or two cells wide.
-    #[test]
-    fn matches_brute_force() {
-        let mut seed = 12345u64;
+    fn random_spheres(periodic: [bool; 3], size: f64, seed: u64) -> (Spheres, Domain) {
+        let mut seed = seed;
         let mut rnd = || {
             seed ^= seed << 13;
             seed ^= seed >> 7;
             seed ^= seed << 17;
             (seed >> 11) as f64 / (1u64 << 53) as f64
         };
+        let d = Domain {
+            min: Vec3::ZERO,
+            max: Vec3::new(size, 0.5 * size, 0.8 * size),
+            periodic,
+        };
+        let mut s = Spheres::default();
+        for _ in 0..600 {
+            let r = if rnd() < 0.2 { 0.03 } else { 0.01 };
+            s.push(NewSphere {
+                position: Vec3::new(rnd(), 0.5 * rnd(), 0.8 * rnd()) * size,
+                velocity: Vec3::ZERO,
+                angular_velocity: Vec3::ZERO,
+                radius: r,
+                material: 0,
+                density: 1000.0,
+                fixed: false,
+            });
+        }
+        (s, d)
+    }
+
+    /// The list holds exactly the brute-force pairs (mixed sizes, periodic axes, boxes only a
+    /// few cells wide), each once, under an owner that respects the slab rule, and the spheres
+    /// end up sorted with ids and the id → slot table consistent.
+    #[test]
+    fn matches_brute_force() {
         for (periodic, size) in [
             ([false; 3], 1.0),
             ([true, false, true], 1.0),
             ([true; 3], 0.1),
+            ([true; 3], 0.5),
         ] {
-            let d = Domain {
-                min: Vec3::ZERO,
-                max: Vec3::splat(size),
-                periodic,
-            };
-            let mut s = Spheres::default();
-            for _ in 0..600 {
-                let r = if rnd() < 0.2 { 0.03 } else { 0.01 };
-                s.push(NewSphere {
-                    position: Vec3::new(rnd(), rnd(), rnd()) * size,
-                    velocity: Vec3::ZERO,
-                    angular_velocity: Vec3::ZERO,
-                    radius: r,
-                    material: 0,
-                    density: 1000.0,
-                    fixed: false,
-                });
-            }
+            let (mut s, d) = random_spheres(periodic, size, 12345);
+            let ids_before = s.id.clone();
             let mut nl = NeighborList::new(0.005);
-            nl.build(&s, &d);
-            assert_eq!(nl.pairs, brute(&s, &d, 0.005), "periodic {periodic:?}");
+            nl.build(&mut s, &d, None);
+            for (k, &id) in s.id.iter().enumerate() {
+                assert_eq!(s.slot_of(id), Some(k));
+            }
+            let mut ids = s.id.clone();
+            ids.sort_unstable();
+            assert_eq!(ids, ids_before);
+            let mut got = vec![];
+            let slab_of = |k: u32| nl.slabs().partition_point(|&b| b <= k) - 1;
+            let last = nl.slabs().len() - 2;
+            for i in 0..s.len() {
+                let own = &nl.partner[nl.offsets[i] as usize..nl.offsets[i + 1] as usize];
+                assert!(own.windows(2).all(|w| w[0] < w[1]), "partners ascending");
+                for &j in own {
+                    let (si, sj) = (slab_of(i as u32), slab_of(j));
+                    let wraps = nl.slab_wraps() && si == last && sj == 0;
+                    assert!(
+                        wraps || (j as usize > i && sj <= si + 1),
+                        "{periodic:?}: owner {i} (slab {si}) of {j} (slab {sj})"
+                    );
+                    got.push((i.min(j as usize) as u32, i.max(j as usize) as u32));
+                }
+            }
+            got.sort_unstable();
+            assert_eq!(got, brute(&s, &d, 0.005), "periodic {periodic:?}");
+            assert_eq!(close_pairs(&s, &d, 0.005), brute(&s, &d, 0.005));
         }
+    }
+
+    /// A second build after small moves maps every slot to its previous one.
+    #[test]
+    fn previous_slots_follow_the_spheres() {
+        let (mut s, d) = random_spheres([true, false, false], 1.0, 777);
+        let mut nl = NeighborList::new(0.005);
+        nl.build(&mut s, &d, None);
+        let before = s.id.clone();
+        for (k, x) in s.position.iter_mut().enumerate() {
+            *x += Vec3::new(0.02 * ((k % 7) as f64 - 3.0), 0.0, 0.0);
+            *x = d.wrap(*x);
+        }
+        nl.build(&mut s, &d, None);
+        for k in 0..s.len() {
+            assert_eq!(before[nl.previous_slot[k] as usize], s.id[k]);
+        }
+        let total = nl.old_partner_id.len();
+        assert_eq!(*nl.old_offsets.last().unwrap() as usize, total);
     }
 }

@@ -1,9 +1,13 @@
 //! `Spheres`: every DEM sphere, stored as structure-of-arrays.
 //!
-//! A storage slot `i` may change when spheres are removed (the arrays are compacted in order);
-//! `id[i]` never changes. Contact history, checkpoints and outputs are keyed by id. Slots are kept
-//! in increasing id order, so sorting by slot is sorting by id.
+//! `id[i]` never changes; the storage slot `i` of a sphere does. The neighbour list sorts the
+//! spheres by cell at each rebuild (`permute`) so that spheres close in space are close in
+//! memory, and removals compact the arrays. **Slots are therefore not in id order**: find a
+//! sphere with `slot_of(id)` (O(1), through an id → slot table that `push`, `retain` and
+//! `permute` keep up to date). Every column must be listed in those three methods and nowhere
+//! else may reorder them. Contact history and checkpoints are keyed by id; outputs carry ids.
 
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::math::Vec3;
@@ -17,7 +21,7 @@ pub type SphereId = u32;
 /// All spheres of a simulation (structure-of-arrays).
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct Spheres {
-    /// Stable ids, strictly increasing along the slots.
+    /// Stable ids (in storage order, which is not id order).
     pub id: Vec<SphereId>,
     /// Centre positions [m].
     pub position: Vec<Vec3>,
@@ -41,6 +45,29 @@ pub struct Spheres {
     pub fixed: Vec<bool>,
     /// The id the next inserted sphere gets.
     pub next_id: SphereId,
+    /// The slot of each id ever issued, `NO_SLOT` once removed (index: id).
+    slot: Vec<u32>,
+}
+
+/// `Spheres::slot_of` table value of an id that is not (or no longer) present.
+const NO_SLOT: u32 = u32::MAX;
+
+/// Scratch buffers for `Spheres::permute`, kept between calls so that reordering allocates
+/// nothing once they have grown.
+#[derive(Clone, Debug, Default)]
+pub struct PermuteScratch {
+    vec3: Vec<Vec3>,
+    f64s: Vec<f64>,
+    u32s: Vec<u32>,
+    u16s: Vec<u16>,
+    bools: Vec<bool>,
+}
+
+/// `col ← [col[order[0]], col[order[1]], ...]` through `scratch` (which then holds the old column).
+fn gather<T: Copy + Send + Sync>(col: &mut Vec<T>, order: &[u32], scratch: &mut Vec<T>) {
+    scratch.clear();
+    scratch.par_extend(order.par_iter().map(|&o| col[o as usize]));
+    std::mem::swap(col, scratch);
 }
 
 /// What is needed to add one sphere.
@@ -86,6 +113,7 @@ impl Spheres {
         self.inertia.reserve(n);
         self.material.reserve(n);
         self.fixed.reserve(n);
+        self.slot.reserve(n);
     }
 
     /// Adds a sphere and returns its id. Mass m = ρ (4/3) π r³, inertia I = (2/5) m r².
@@ -104,6 +132,8 @@ impl Spheres {
         self.inertia.push(0.4 * m * s.radius * s.radius);
         self.material.push(s.material);
         self.fixed.push(s.fixed);
+        self.slot.resize(id as usize, NO_SLOT);
+        self.slot.push((self.id.len() - 1) as u32);
         id
     }
 
@@ -130,11 +160,48 @@ impl Spheres {
         compact(&mut self.inertia, keep);
         compact(&mut self.material, keep);
         compact(&mut self.fixed, keep);
+        self.slot.fill(NO_SLOT);
+        self.index_slots();
     }
 
-    /// The slot of the sphere with this id, if present (slots are sorted by id).
+    /// Reorders the storage: the sphere at slot `order[k]` moves to slot k. `order` must be a
+    /// permutation of 0..len(). Every column moves together; ids and the id → slot table follow.
+    pub fn permute(&mut self, order: &[u32], scratch: &mut PermuteScratch) {
+        assert_eq!(
+            order.len(),
+            self.len(),
+            "permute: order of the wrong length"
+        );
+        let sc = scratch;
+        gather(&mut self.id, order, &mut sc.u32s);
+        gather(&mut self.position, order, &mut sc.vec3);
+        gather(&mut self.velocity, order, &mut sc.vec3);
+        gather(&mut self.angular_velocity, order, &mut sc.vec3);
+        gather(&mut self.force, order, &mut sc.vec3);
+        gather(&mut self.torque, order, &mut sc.vec3);
+        gather(&mut self.radius, order, &mut sc.f64s);
+        gather(&mut self.mass, order, &mut sc.f64s);
+        gather(&mut self.inertia, order, &mut sc.f64s);
+        gather(&mut self.material, order, &mut sc.u16s);
+        gather(&mut self.fixed, order, &mut sc.bools);
+        self.index_slots();
+    }
+
+    /// Writes the slot of every present id into the id → slot table.
+    fn index_slots(&mut self) {
+        self.slot.resize(self.next_id as usize, NO_SLOT);
+        for (k, &id) in self.id.iter().enumerate() {
+            self.slot[id as usize] = k as u32;
+        }
+    }
+
+    /// The slot of the sphere with this id, if present. O(1).
+    #[inline]
     pub fn slot_of(&self, id: SphereId) -> Option<usize> {
-        self.id.binary_search(&id).ok()
+        match self.slot.get(id as usize) {
+            Some(&k) if k != NO_SLOT => Some(k as usize),
+            _ => None,
+        }
     }
 
     /// Translational kinetic energy Σ ½ m v² [J] of the moving spheres.

@@ -39,6 +39,21 @@ pub struct ContactScales {
 /// and a static load `load` [N] (the sphere's weight, say).
 pub fn contact_scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> ContactScales {
     match law.kind {
+        LawKind::HookeHistory => {
+            // m* δ'' + m* γ_n δ' + k_n δ = 0: ω0² = k_n/m*, damped ω = √(ω0² - γ_n²/4).
+            let k = law.stiffness;
+            let w0 = (k / m_star).sqrt();
+            let w = (w0 * w0 - 0.25 * law.gamma.0 * law.gamma.0).max(0.0).sqrt();
+            ContactScales {
+                r_star,
+                m_star,
+                period: 2.0 * std::f64::consts::PI / w0,
+                duration: std::f64::consts::PI / w,
+                max_overlap: v / w0,
+                rest_overlap: load / k,
+                law: *law,
+            }
+        }
         LawKind::Linear | LawKind::ApparentLinear => {
             let k = law.linear_stiffness(r_star, m_star);
             let w0 = (k / m_star).sqrt();

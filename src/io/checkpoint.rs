@@ -11,11 +11,12 @@ use serde::{Deserialize, Serialize};
 use crate::dem::contacts::SavedContact;
 use crate::dem::insertion::Feeder;
 use crate::dem::spheres::Spheres;
-use crate::dem::walls::WallSlots;
+use crate::dem::wall_contacts::SavedWallContacts;
 use crate::dem::Stats;
+use crate::math::Vec3;
 
 const MAGIC: &[u8; 8] = b"RIPRAPCK";
-const VERSION: u32 = 1;
+const VERSION: u32 = 2;
 
 /// The saved state.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -26,12 +27,17 @@ pub struct Checkpoint {
     pub step: u64,
     /// Time step [s] (must match the scenario's on restart).
     pub dt: f64,
-    /// All spheres, including this step's forces (the first half kick after restart uses them).
+    /// All spheres in their storage order, including this step's forces (the first half kick
+    /// after restart uses them).
     pub spheres: Spheres,
     /// Sphere-sphere contact history.
     pub contacts: Vec<SavedContact>,
     /// Sphere-wall contact history.
-    pub wall_slots: Vec<WallSlots>,
+    pub wall_contacts: Vec<SavedWallContacts>,
+    /// Positions at the last neighbour build, by slot [m]: the restart rebuilds the lists there.
+    pub reference: Vec<Vec3>,
+    /// Time of the last neighbour build [s].
+    pub built_at: f64,
     /// Feeders with their random state.
     pub feeders: Vec<Feeder>,
     /// Counters.
@@ -97,7 +103,6 @@ impl Checkpoint {
 mod tests {
     use super::*;
     use crate::dem::spheres::NewSphere;
-    use crate::math::Vec3;
 
     fn sample() -> Checkpoint {
         let mut s = Spheres::default();
@@ -116,7 +121,9 @@ mod tests {
             dt: 1e-5,
             spheres: s,
             contacts: vec![],
-            wall_slots: vec![],
+            wall_contacts: vec![],
+            reference: vec![Vec3::new(0.1, 0.2, 0.3)],
+            built_at: 0.05,
             feeders: vec![],
             stats: Stats::default(),
         }

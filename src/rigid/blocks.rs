@@ -9,8 +9,9 @@
 //!
 //! A block's member spheres are ordinary DEM spheres (they collide with everything else); their
 //! masses are the template's fitted member masses (`member_masses`), so that they carry the
-//! block's mass, centre and inertia. Insert them together so that their ids, and therefore their
-//! storage slots, are consecutive: `member_slots` then hands the PMS recovery plain slices.
+//! block's mass, centre and inertia. Their ids are consecutive when inserted together, but their
+//! storage slots are not (the neighbour list sorts spheres by cell): find them with
+//! `Spheres::slot_of`.
 
 use std::ops::Range;
 
@@ -231,24 +232,34 @@ impl Blocks {
         &self.member_id[r.start as usize..r.end as usize]
     }
 
-    /// The storage slots of block b's members in a sphere array whose ids are `sphere_ids`
-    /// (sorted, as `Spheres::id` is), when they are consecutive and in member order; `None`
-    /// when a member is missing or the slots are not contiguous.
+    /// The storage slots of block b's members in a sphere array whose ids are `sphere_ids` (in
+    /// storage order, e.g. `Spheres::id`), when they are consecutive and in member order; `None`
+    /// when a member is missing or the slots are not contiguous. The neighbour list sorts the
+    /// spheres by cell, so a block's members are in general *not* contiguous: gather them with
+    /// `Spheres::slot_of` instead (see `tests/rigid_dem_pms.rs`).
     pub fn member_slots(&self, b: usize, sphere_ids: &[SphereId]) -> Option<Range<usize>> {
         let ids = self.member_ids(b);
-        let first = sphere_ids.binary_search(ids.first()?).ok()?;
+        let head = ids.first()?;
+        let first = sphere_ids.iter().position(|id| id == head)?;
         let slots = first..first + ids.len();
         (sphere_ids.get(slots.clone())? == ids).then_some(slots)
     }
 
-    /// For each sphere slot (ids `sphere_ids`, sorted), the slot of the block that owns it, or
-    /// `NO_BLOCK`. Two spheres with the same owner must not touch (their contact is internal).
+    /// For each sphere slot (ids `sphere_ids`, in storage order), the slot of the block that
+    /// owns it, or `NO_BLOCK`. Two spheres with the same owner must not touch (their contact is
+    /// internal).
     pub fn sphere_owners(&self, sphere_ids: &[SphereId]) -> Vec<u32> {
+        let mut by_id: Vec<(SphereId, usize)> = sphere_ids
+            .iter()
+            .enumerate()
+            .map(|(k, &id)| (id, k))
+            .collect();
+        by_id.sort_unstable();
         let mut owner = vec![NO_BLOCK; sphere_ids.len()];
         for b in 0..self.len() {
             for id in self.member_ids(b) {
-                if let Ok(slot) = sphere_ids.binary_search(id) {
-                    owner[slot] = b as u32;
+                if let Ok(k) = by_id.binary_search_by_key(id, |e| e.0) {
+                    owner[by_id[k].1] = b as u32;
                 }
             }
         }

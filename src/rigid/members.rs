@@ -1,7 +1,9 @@
 //! A block's member spheres seen as slices of the DEM's sphere arrays, and the two things done
 //! to them whatever the integrator: putting them in the rigid shape, and summing their forces.
 //!
-//! With the members of block b in consecutive sphere slots `r = blocks.member_slots(b, &s.id)`:
+//! With the members of block b in consecutive sphere slots `r = blocks.member_slots(b, &s.id)`
+//! (the neighbour list sorts spheres by cell, so in a running simulation gather them by
+//! `Spheres::slot_of` into local arrays instead, as `tests/rigid_dem_pms.rs` does):
 //!
 //! ```text
 //! let m = Members {

@@ -8,12 +8,12 @@ use super::spheres::build_spheres;
 use super::{ScenarioError, Source};
 use crate::dem::contacts::PairContacts;
 use crate::dem::domain::Domain;
-use crate::dem::forces::MeshCandidates;
 use crate::dem::material::{ContactModel, Damping, Material, NormalSpring, PairLaw, PairOverride};
 use crate::dem::neighbor::NeighborList;
 use crate::dem::timestep::{
     contact_scales, discrete_impact, ContactScales, DEFAULT_STEPS_PER_PERIOD, MIN_STEPS_PER_PERIOD,
 };
+use crate::dem::wall_contacts::WallContacts;
 use crate::dem::walls::{Motion, Shape, Wall};
 use crate::dem::{Dem, Limits, Stats};
 use crate::geometry::{Cuboid, Cylinder, Plane, TriMesh};
@@ -474,8 +474,7 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         limits,
         neighbors: NeighborList::new(skin_fraction * d_max.max(1e-9)),
         contacts: PairContacts::default(),
-        wall_slots: Vec::new(),
-        mesh_candidates: MeshCandidates::default(),
+        wall_contacts: WallContacts::default(),
         stats: Stats::default(),
     };
     let at_step = pairings
@@ -509,6 +508,15 @@ fn ideal_restitution(law: &PairLaw) -> f64 {
         LawKind::Linear | LawKind::ApparentLinear => damping::linear_contact(law.damping_ratio).1,
         LawKind::Hertz => damping::hertz_contact(law.damping_ratio).1,
         LawKind::HertzMindlin => law.restitution,
+        LawKind::HookeHistory => {
+            // e = exp(-γ_n π / (2 ω)) for a pair of unit effective mass scale: γ_n and k_n/m*
+            // both enter; report the value for m* = 1 (scenarios do not use this law).
+            let w0 = law.stiffness.sqrt();
+            let w = (w0 * w0 - 0.25 * law.gamma.0 * law.gamma.0)
+                .max(1e-300)
+                .sqrt();
+            (-0.5 * law.gamma.0 * std::f64::consts::PI / w).exp()
+        }
     }
 }
 

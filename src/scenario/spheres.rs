@@ -11,7 +11,7 @@ use crate::dem::insertion::{
     counts_from_mass_fractions, lattice, random_fill, Feeder, Rng, SizeClass,
 };
 use crate::dem::material::Material;
-use crate::dem::neighbor::NeighborList;
+use crate::dem::neighbor::close_pairs;
 use crate::dem::spheres::{NewSphere, Spheres};
 use crate::math::Vec3;
 
@@ -355,10 +355,8 @@ fn check_overlaps(
     domain: &Domain,
     origin: &[String],
 ) -> Result<(), ScenarioError> {
-    let mut nl = NeighborList::new(0.0);
-    nl.build(s, domain);
     let mut worst: Option<(usize, usize, f64)> = None;
-    for &(i, j) in &nl.pairs {
+    for &(i, j) in &close_pairs(s, domain, 0.0) {
         let (i, j) = if i < j {
             (i as usize, j as usize)
         } else {

@@ -216,23 +216,30 @@ pub fn run_impact(dem: Dem, min_period: f64, max_steps: usize) -> Impact {
     let mut sim = sim(dem, min_period);
     let dt = sim.dem.dt;
     // Overlap, normal approach speed and normal force of the current state.
+    // Slots of spheres 0 and 1 (the neighbour list sorts the spheres, so find them by id).
+    let slots = |s: &riprap::dem::spheres::Spheres| {
+        let first = s.id.iter().copied().min().expect("a sphere");
+        let a = s.slot_of(first).expect("sphere 0");
+        (a, s.slot_of(first + 1).unwrap_or(a))
+    };
     let measure = |sim: &Simulation| -> (f64, f64, f64) {
         let s = &sim.dem.spheres;
+        let (a, b) = slots(s);
         if pair {
-            let d = sim.dem.domain.minimum_image(s.position[1] - s.position[0]);
+            let d = sim.dem.domain.minimum_image(s.position[b] - s.position[a]);
             let n = d / d.length();
-            let delta = s.radius[0] + s.radius[1] - d.length();
+            let delta = s.radius[a] + s.radius[b] - d.length();
             (
                 (delta),
-                (s.velocity[0] - s.velocity[1]).dot(n),
-                s.force[1].dot(n),
+                (s.velocity[a] - s.velocity[b]).dot(n),
+                s.force[b].dot(n),
             )
         } else {
-            let dist = (s.position[0] - wall_point).dot(wall_normal);
+            let dist = (s.position[a] - wall_point).dot(wall_normal);
             (
-                s.radius[0] - dist,
-                -s.velocity[0].dot(wall_normal),
-                s.force[0].dot(wall_normal),
+                s.radius[a] - dist,
+                -s.velocity[a].dot(wall_normal),
+                s.force[a].dot(wall_normal),
             )
         }
     };
@@ -282,12 +289,13 @@ pub fn run_impact(dem: Dem, min_period: f64, max_steps: usize) -> Impact {
         "run_impact: no separation within {max_steps} steps"
     );
     let s = &sim.dem.spheres;
+    let (a, b) = slots(s);
     let state = ImpactState {
-        v: [s.velocity[0], if pair { s.velocity[1] } else { Vec3::ZERO }],
+        v: [s.velocity[a], if pair { s.velocity[b] } else { Vec3::ZERO }],
         w: [
-            s.angular_velocity[0],
+            s.angular_velocity[a],
             if pair {
-                s.angular_velocity[1]
+                s.angular_velocity[b]
             } else {
                 Vec3::ZERO
             },

@@ -333,6 +333,8 @@ mod tests {
             let law = PairLaw {
                 kind: LawKind::Linear,
                 stiffness: k_n,
+                tangential_stiffness: 0.0,
+                gamma: (0.0, 0.0),
                 reference_velocity: 0.0,
                 e_star: 1.0,
                 g_star: 1.0,

@@ -4,10 +4,12 @@
 //! radius and mass). The unit normal n points from i to j. The kernel returns the force on i; j
 //! receives its opposite. The per-contact history (`hist`) is a world-frame vector whose meaning
 //! depends on the law: the tangential spring force s_t [N] for the Voigt laws (METHOD.md [9]),
-//! the tangential displacement ξ [m] for Hertz-Mindlin (as LIGGGHTS stores it).
+//! the tangential displacement ξ [m] for Hertz-Mindlin (as LIGGGHTS stores it) and for LAMMPS's
+//! Hooke law. Whatever the law, the history of the pair (j, i) is the opposite of that of (i, j).
 
 pub mod damping;
 pub mod hertz_mindlin;
+pub mod hooke;
 pub mod voigt;
 
 #[cfg(test)]
@@ -92,6 +94,7 @@ pub struct Reaction {
 pub fn contact_force(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
     match law.kind {
         LawKind::HertzMindlin => hertz_mindlin::force(law, p, hist, dt),
+        LawKind::HookeHistory => hooke::force(law, p, hist, dt),
         _ => voigt::force(law, p, hist, dt),
     }
 }

@@ -1,0 +1,192 @@
+//! Sphere-wall contacts between rebuilds: which walls each sphere can reach, and the history of
+//! its wall contacts.
+//!
+//! At each neighbour rebuild the walls within r + skin of every sphere are listed (for a mesh,
+//! with the triangles within reach). Until the next rebuild a sphere moves less than skin/2 and
+//! every wall less than skin/2 (`stale` forces a rebuild otherwise), so no other wall can touch
+//! it. Most spheres reach no wall: they have no entry and cost nothing per step. Spheres that
+//! do have an entry holding their wall-contact history slots (`walls::match_history`), carried
+//! over from one build to the next by sphere.
+
+use serde::{Deserialize, Serialize};
+
+use super::neighbor::NONE;
+use super::spheres::{SphereId, Spheres};
+use super::walls::{Shape, Wall, WallContact, WallSlots, WALL_SLOTS};
+use crate::geometry::ContactBuf;
+use crate::math::Vec3;
+
+/// Spheres per parallel work item of the per-sphere force pass (fixed, so that results do not
+/// depend on the thread count); `WallContacts::chunk_start` is kept for it.
+pub const CHUNK: usize = 2048;
+
+/// Wall slots of a sphere that touches no wall.
+pub const WALL_SLOTS_EMPTY: WallSlots = [WallContact::EMPTY; WALL_SLOTS];
+
+/// A sphere with walls within reach.
+#[derive(Clone, Copy, Debug)]
+pub struct WallEntry {
+    /// Its slot.
+    pub sphere: u32,
+    /// Its reachable walls: `near[near.0..near.1]` of `WallContacts`.
+    pub near: (u32, u32),
+    /// History of its wall contacts.
+    pub slots: WallSlots,
+}
+
+/// A wall within reach of a sphere.
+#[derive(Clone, Copy, Debug)]
+pub struct NearWall {
+    /// Index of the wall.
+    pub wall: u32,
+    /// For a mesh, its triangles within reach: `triangles[tri.0..tri.1]` of `WallContacts`.
+    pub tri: (u32, u32),
+}
+
+/// The wall-contact history of one sphere, as saved in checkpoints.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SavedWallContacts {
+    /// Sphere id.
+    pub id: SphereId,
+    /// Its history slots.
+    pub slots: WallSlots,
+}
+
+/// The sphere-wall contact lists of the last build.
+#[derive(Clone, Debug, Default)]
+pub struct WallContacts {
+    /// For each sphere slot, its entry in `entries`, or `NONE`.
+    pub entry_of: Vec<u32>,
+    /// Spheres with walls within reach, by ascending slot.
+    pub entries: Vec<WallEntry>,
+    /// Reachable walls of the entries.
+    pub near: Vec<NearWall>,
+    /// Reachable mesh triangles.
+    pub triangles: Vec<u32>,
+    /// For each chunk of `CHUNK` slots (and one past the last), its first entry.
+    pub chunk_start: Vec<u32>,
+    /// Each wall's displacement at the build [m].
+    pub displacement: Vec<Vec3>,
+    /// Time of the build [s].
+    pub built_at: f64,
+    old_entry_of: Vec<u32>,
+    old_entries: Vec<WallEntry>,
+    tri_buf: Vec<u32>,
+}
+
+impl WallContacts {
+    /// True when a wall has moved more than skin/2 since the build, so that the lists must be
+    /// rebuilt.
+    pub fn stale(&self, walls: &[Wall], t: f64, skin: f64) -> bool {
+        walls.iter().enumerate().any(|(w, wall)| {
+            !matches!(wall.motion, super::walls::Motion::Fixed)
+                && (w >= self.displacement.len()
+                    || (wall.motion.displacement(t) - self.displacement[w]).length() > 0.5 * skin)
+        })
+    }
+
+    /// Lists the walls within reach of each sphere, at the positions `pos` (by slot) and time
+    /// `t`, and carries the history over from the previous lists through `previous_slot` (the
+    /// slot each sphere had at the previous build, or `NONE`).
+    pub fn rebuild(
+        &mut self,
+        walls: &[Wall],
+        spheres: &Spheres,
+        pos: &[Vec3],
+        previous_slot: &[u32],
+        t: f64,
+        skin: f64,
+    ) {
+        std::mem::swap(&mut self.entry_of, &mut self.old_entry_of);
+        std::mem::swap(&mut self.entries, &mut self.old_entries);
+        self.entry_of.clear();
+        self.entries.clear();
+        self.near.clear();
+        self.triangles.clear();
+        self.chunk_start.clear();
+        self.displacement.clear();
+        self.displacement
+            .extend(walls.iter().map(|w| w.motion.displacement(t)));
+        self.built_at = t;
+        let mut buf = ContactBuf::new();
+        for (i, &x) in pos.iter().enumerate().take(spheres.len()) {
+            if i % CHUNK == 0 {
+                self.chunk_start.push(self.entries.len() as u32);
+            }
+            let first = self.near.len() as u32;
+            let reach = spheres.radius[i] + skin;
+            for (w, wall) in walls.iter().enumerate() {
+                let q = x - self.displacement[w];
+                let tri0 = self.triangles.len() as u32;
+                let near = match &wall.shape {
+                    Shape::Plane(p) => p.signed_distance(q) < reach,
+                    Shape::Cuboid(c) => {
+                        buf.clear();
+                        c.sphere_contacts(q, reach, &mut buf);
+                        !buf.as_slice().is_empty()
+                    }
+                    Shape::Cylinder(c) => {
+                        buf.clear();
+                        c.sphere_contacts(q, reach, &mut buf);
+                        !buf.as_slice().is_empty()
+                    }
+                    Shape::Mesh(m) => {
+                        m.candidates(q, reach, &mut self.tri_buf);
+                        self.triangles.extend_from_slice(&self.tri_buf);
+                        !self.tri_buf.is_empty()
+                    }
+                };
+                if near {
+                    self.near.push(NearWall {
+                        wall: w as u32,
+                        tri: (tri0, self.triangles.len() as u32),
+                    });
+                }
+            }
+            let last = self.near.len() as u32;
+            if last == first {
+                self.entry_of.push(NONE);
+                continue;
+            }
+            let prev = previous_slot.get(i).copied().unwrap_or(NONE);
+            let slots = match self.old_entry_of.get(prev as usize) {
+                Some(&e) if e != NONE => self.old_entries[e as usize].slots,
+                _ => WALL_SLOTS_EMPTY,
+            };
+            self.entry_of.push(self.entries.len() as u32);
+            self.entries.push(WallEntry {
+                sphere: i as u32,
+                near: (first, last),
+                slots,
+            });
+        }
+        self.chunk_start.push(self.entries.len() as u32);
+    }
+
+    /// The spheres with wall contacts and their history, for a checkpoint.
+    pub fn save(&self, spheres: &Spheres) -> Vec<SavedWallContacts> {
+        self.entries
+            .iter()
+            .filter(|e| e.slots[0].wall != u32::MAX)
+            .map(|e| SavedWallContacts {
+                id: spheres.id[e.sphere as usize],
+                slots: e.slots,
+            })
+            .collect()
+    }
+
+    /// Puts saved history back into lists built at the saved run's build positions.
+    pub fn restore(&mut self, saved: &[SavedWallContacts], spheres: &Spheres) {
+        for e in &mut self.entries {
+            e.slots = WALL_SLOTS_EMPTY;
+        }
+        for s in saved {
+            if let Some(i) = spheres.slot_of(s.id) {
+                let e = self.entry_of[i];
+                if e != NONE {
+                    self.entries[e as usize].slots = s.slots;
+                }
+            }
+        }
+    }
+}
