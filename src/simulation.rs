@@ -62,6 +62,15 @@ impl Simulation {
                 .fold(0.0f64, |a, &r| a.max(2.0 * r));
             dem.neighbors.skin = 0.2 * d_max;
         }
+        // Along periodic axes, positions are kept inside the box (the pair loops rely on it).
+        let domain = dem.domain;
+        for x in &mut dem.spheres.position {
+            for k in (0..3).filter(|&k| domain.periodic[k]) {
+                let l = domain.max[k] - domain.min[k];
+                x[k] = domain.min[k] + (x[k] - domain.min[k]).rem_euclid(l);
+            }
+            *x = domain.wrap(*x);
+        }
         let mut sim = Simulation {
             dem,
             feeders,

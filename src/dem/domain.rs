@@ -30,7 +30,6 @@ impl Domain {
         for k in 0..3 {
             if self.periodic[k] {
                 let l = self.max[k] - self.min[k];
-                // Most separations are already the nearest image: test before dividing.
                 if d[k].abs() > 0.5 * l {
                     d[k] -= l * (d[k] / l).round();
                 }
@@ -59,5 +58,88 @@ impl Domain {
     #[inline]
     pub fn contains(&self, x: Vec3) -> bool {
         (0..3).all(|k| self.periodic[k] || (x[k] >= self.min[k] && x[k] <= self.max[k]))
+    }
+
+    /// The periodic geometry in the form the hot loops use (`Images`).
+    pub fn images(&self) -> Images {
+        let mut im = Images {
+            length: Vec3::ZERO,
+            half: Vec3::INFINITY,
+            lo: self.min,
+            hi: self.max,
+            wrap_lo: Vec3::NEG_INFINITY,
+            wrap_hi: Vec3::INFINITY,
+        };
+        for k in 0..3 {
+            if self.periodic[k] {
+                im.length[k] = self.max[k] - self.min[k];
+                im.half[k] = 0.5 * im.length[k];
+                im.lo[k] = f64::NEG_INFINITY;
+                im.hi[k] = f64::INFINITY;
+                im.wrap_lo[k] = self.min[k];
+                im.wrap_hi[k] = self.max[k];
+            }
+        }
+        im
+    }
+}
+
+/// `Domain::minimum_image` and `Domain::contains` with the periodic flags folded into numbers,
+/// for the per-pair and per-sphere loops: half periods are infinite along open axes, and the
+/// bounds infinite along periodic ones.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Images {
+    /// Period along each axis (0 when open) [m].
+    length: Vec3,
+    /// Half the period (infinite when open) [m].
+    half: Vec3,
+    /// Lower bounds of `contains` (-∞ along periodic axes) [m].
+    lo: Vec3,
+    /// Upper bounds of `contains` (+∞ along periodic axes) [m].
+    hi: Vec3,
+    /// The box along periodic axes, (-∞, +∞) along open ones [m].
+    wrap_lo: Vec3,
+    /// See `wrap_lo`.
+    wrap_hi: Vec3,
+}
+
+impl Images {
+    /// The separation `d` reduced to its nearest periodic image, for separations of less than
+    /// 1.5 periods, as between two positions inside the box (`Domain::minimum_image` takes any).
+    /// One compare per axis, and no function call: the callers' values stay in registers.
+    #[inline(always)]
+    pub fn nearest(&self, mut d: Vec3) -> Vec3 {
+        for k in 0..3 {
+            if d[k] > self.half[k] {
+                d[k] -= self.length[k];
+            } else if d[k] < -self.half[k] {
+                d[k] += self.length[k];
+            }
+        }
+        d
+    }
+
+    /// Wraps a position back into the box along periodic axes (as `Domain::wrap`).
+    #[inline(always)]
+    pub fn wrap(&self, mut x: Vec3) -> Vec3 {
+        for k in 0..3 {
+            if x[k] < self.wrap_lo[k] {
+                x[k] += self.length[k];
+            } else if x[k] >= self.wrap_hi[k] {
+                x[k] -= self.length[k];
+            }
+        }
+        x
+    }
+
+    /// True when `x` lies inside the box along the open axes (as `Domain::contains`).
+    #[inline(always)]
+    pub fn contains(&self, x: Vec3) -> bool {
+        x.x >= self.lo.x
+            && x.x <= self.hi.x
+            && x.y >= self.lo.y
+            && x.y <= self.hi.y
+            && x.z >= self.lo.z
+            && x.z <= self.hi.z
     }
 }

@@ -19,15 +19,16 @@
 
 use rayon::prelude::*;
 
-use super::contact::{contact_force, Pair, Reaction};
-use super::neighbor::NONE;
+use super::contact::{contact_force, hertz_mindlin, hooke, Pair, Reaction};
+use super::domain::Images;
+use super::material::{LawKind, PairLaw};
 use super::par::for_chunks;
 use super::spheres::Spheres;
 use super::wall_contacts::{WallEntry, CHUNK};
 use super::walls::{match_history, Hits, WALL_SLOTS};
 use super::Dem;
 use crate::geometry::ContactBuf;
-use crate::math::{is_finite, Vec3};
+use crate::math::Vec3;
 
 /// What the sphere pass does after the forces, during a step.
 #[derive(Clone, Copy, Debug)]
@@ -133,7 +134,7 @@ struct Out<'a> {
 }
 
 impl Out<'_> {
-    #[inline]
+    #[inline(always)]
     fn add(&mut self, j: usize, f: Vec3, t: Vec3) {
         if j >= self.base {
             self.f[j - self.base] += f;
@@ -256,7 +257,7 @@ struct PairContext<'a> {
     fixed: &'a [bool],
     offsets: &'a [u32],
     partner: &'a [u32],
-    laws: &'a [super::material::PairLaw],
+    laws: &'a [PairLaw],
     n_mat: usize,
     domain: super::domain::Domain,
     dt: f64,
@@ -272,65 +273,169 @@ impl PairContext<'_> {
         hist: &mut [Vec3],
         touch: &mut [u8],
     ) -> Tally {
+        let periodic = self.domain.periodic.iter().any(|&p| p);
+        let kind = self.laws.first().map(|l| l.kind);
+        let uniform = self.laws.iter().all(|l| Some(l.kind) == kind);
+        let args = (owners, out, hist, touch);
+        match (periodic, if uniform { kind } else { None }) {
+            (true, Some(LawKind::HertzMindlin)) => self.run_with::<true, HertzMindlin>(args),
+            (false, Some(LawKind::HertzMindlin)) => self.run_with::<false, HertzMindlin>(args),
+            (true, Some(LawKind::HookeHistory)) => self.run_with::<true, Hooke>(args),
+            (false, Some(LawKind::HookeHistory)) => self.run_with::<false, Hooke>(args),
+            (true, _) => self.run_with::<true, AnyLaw>(args),
+            (false, _) => self.run_with::<false, AnyLaw>(args),
+        }
+    }
+
+    /// `run` for a domain with (`PERIODIC`) or without periodic axes and the contact law `K`.
+    ///
+    /// A first loop (`mark_close`) only tests the distance of every candidate, marking in its
+    /// touch flag (bit 1) those whose centres are closer than r_i + r_j and keeping whether they
+    /// touched at the last step (bit 0); a second loop evaluates the contacts so marked. Most
+    /// candidates leave after the test, in a loop small enough to keep everything in registers.
+    fn run_with<const PERIODIC: bool, K: Kernel>(
+        &self,
+        (owners, out, hist, touch): (std::ops::Range<usize>, &mut Out, &mut [Vec3], &mut [u8]),
+    ) -> Tally {
         let mut tally = Tally::ZERO;
         let Some(first) = owners.clone().next() else {
             return tally;
         };
         let base = self.offsets[first] as usize;
+        let im = self.domain.images();
+        mark_close::<PERIODIC>(self, owners.clone(), &im, touch);
+        // Columns cut to one length n, so that a single test j < n covers every access below.
+        let n = self.pos.len();
+        let (pos, rad, vel, ang) = (self.pos, &self.rad[..n], &self.vel[..n], &self.ang[..n]);
+        let (mass, fixed, material) = (&self.mass[..n], &self.fixed[..n], &self.material[..n]);
         for i in owners {
-            let (xi, ri) = (self.pos[i], self.rad[i]);
-            let m_i = if self.fixed[i] {
-                f64::INFINITY
-            } else {
-                self.mass[i]
-            };
-            let laws = &self.laws[self.material[i] as usize * self.n_mat..];
+            let (p0, p1) = (self.offsets[i] as usize, self.offsets[i + 1] as usize);
+            let touch = &mut touch[p0 - base..p1 - base];
+            if touch.iter().all(|&t| t & 2 == 0) {
+                touch.fill(0);
+                continue;
+            }
+            let partners = &self.partner[p0..p1];
+            let hist = &mut hist[p0 - base..p1 - base];
+            let (xi, ri, vi, wi) = (pos[i], rad[i], vel[i], ang[i]);
+            let (fixed_i, m_i) = (fixed[i], mass[i]);
+            let laws = &self.laws[material[i] as usize * self.n_mat..];
             let (mut f_i, mut t_i) = (Vec3::ZERO, Vec3::ZERO);
-            for p in self.offsets[i] as usize..self.offsets[i + 1] as usize {
-                let j = self.partner[p] as usize;
-                let q = p - base;
-                let d = self.domain.minimum_image(self.pos[j] - xi);
-                let r_sum = ri + self.rad[j];
-                let dist2 = d.length_squared();
-                if dist2 >= r_sum * r_sum {
-                    touch[q] = 0;
+            for ((t, h), &j) in touch.iter_mut().zip(hist.iter_mut()).zip(partners) {
+                let flags = *t;
+                *t = 0;
+                if flags & 2 == 0 {
                     continue;
                 }
-                let dist = dist2.sqrt();
-                let delta = r_sum - dist;
+                let j = j as usize;
+                assert!(j < n);
+                let mut d = pos[j] - xi;
+                if PERIODIC {
+                    d = im.nearest(d);
+                }
+                let (rj, mj) = (rad[j], mass[j]);
+                let dist = d.length();
+                let delta = ri + rj - dist;
                 if delta <= 0.0 || dist == 0.0 {
-                    touch[q] = 0;
                     continue;
                 }
-                let pair = Pair {
-                    n: d / dist,
-                    delta,
-                    dv: self.vel[i] - self.vel[j],
-                    w_i: self.ang[i],
-                    w_j: self.ang[j],
-                    r_i: ri,
-                    r_j: self.rad[j],
-                    m_i,
-                    m_j: if self.fixed[j] {
-                        f64::INFINITY
-                    } else {
-                        self.mass[j]
-                    },
+                // Effective mass and radius: a fixed sphere counts as infinitely heavy.
+                let m_star = match (fixed_i, fixed[j]) {
+                    (false, false) => m_i * mj / (m_i + mj),
+                    (true, _) => mj,
+                    (false, true) => m_i,
                 };
-                let mut h = if touch[q] != 0 { hist[q] } else { Vec3::ZERO };
-                let r: Reaction =
-                    contact_force(&laws[self.material[j] as usize], &pair, &mut h, self.dt);
-                hist[q] = h;
-                touch[q] = 1;
+                let pair = Pair {
+                    n: d * (1.0 / dist),
+                    delta,
+                    dv: vi - vel[j],
+                    w_i: wi,
+                    w_j: ang[j],
+                    r_i: ri,
+                    r_j: rj,
+                    r_star: ri * rj / (ri + rj),
+                    m_star,
+                };
+                if flags & 1 == 0 {
+                    *h = Vec3::ZERO;
+                }
+                let r = K::force(&laws[material[j] as usize], &pair, h, self.dt);
+                *t = 1;
                 f_i += r.force;
                 t_i += r.torque_i;
                 out.add(j, -r.force, r.torque_j);
                 tally.contacts += 1;
-                tally.worst = larger(tally.worst, (delta / ri.min(self.rad[j]), i));
+                tally.worst = larger(tally.worst, (delta / ri.min(rj), i));
             }
             out.add(i, f_i, t_i);
         }
         tally
+    }
+}
+
+/// A contact law the pair loop is compiled for.
+trait Kernel {
+    /// The reaction of one contact (as `contact::contact_force`).
+    fn force(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction;
+}
+
+/// Any law, dispatched per pair.
+struct AnyLaw;
+/// Hertz-Mindlin only.
+struct HertzMindlin;
+/// LAMMPS Hooke with history only.
+struct Hooke;
+
+impl Kernel for AnyLaw {
+    #[inline(always)]
+    fn force(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
+        contact_force(law, p, hist, dt)
+    }
+}
+
+impl Kernel for HertzMindlin {
+    #[inline(always)]
+    fn force(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
+        hertz_mindlin::force(law, p, hist, dt)
+    }
+}
+
+impl Kernel for Hooke {
+    #[inline(always)]
+    fn force(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
+        hooke::force(law, p, hist, dt)
+    }
+}
+
+/// Marks in bit 1 of each pair's touch flag whether the partner's centre is closer to the
+/// owner's than the sum of their radii, keeping bit 0 (touched at the last step), for the pairs
+/// of `owners` (flags from the first of them on). Not inlined, so that this loop, which every
+/// candidate pair goes through, keeps its few values in registers.
+#[inline(never)]
+fn mark_close<const PERIODIC: bool>(
+    ctx: &PairContext,
+    owners: std::ops::Range<usize>,
+    im: &Images,
+    touch: &mut [u8],
+) {
+    let (pos, rad, offsets) = (ctx.pos, ctx.rad, ctx.offsets);
+    let base = offsets[owners.start] as usize;
+    for i in owners {
+        let (xi, ri) = (pos[i], rad[i]);
+        let (p0, p1) = (offsets[i] as usize, offsets[i + 1] as usize);
+        for (t, &j) in touch[p0 - base..p1 - base]
+            .iter_mut()
+            .zip(&ctx.partner[p0..p1])
+        {
+            let j = j as usize;
+            let mut d = pos[j] - xi;
+            if PERIODIC {
+                d = im.nearest(d);
+            }
+            let r_sum = ri + rad[j];
+            let near = d.length_squared() < r_sum * r_sum;
+            *t = (*t & 1) | ((near as u8) << 1);
+        }
     }
 }
 
@@ -341,7 +446,7 @@ type Pair2<'a> = (&'a mut [Vec3], &'a mut [Vec3]);
 fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
     let n = dem.spheres.len();
     let wc = &mut dem.wall_contacts;
-    let (entry_of, near, triangles) = (&wc.entry_of, &wc.near, &wc.triangles);
+    let (near, triangles) = (&wc.near, &wc.triangles);
     let chunk_entry = &wc.chunk_start;
     let entries = &mut wc.entries;
     let walls = &dem.walls;
@@ -365,66 +470,69 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
     let bounds = |c: usize| ((c * CHUNK).min(n), chunk_entry[c] as usize);
     let leaf = |c: usize, ((f, tq), (v, w)): (Pair2, Pair2), ents: &mut [WallEntry]| {
         let i0 = c * CHUNK;
-        let e0 = chunk_entry[c] as usize;
         let mut tally = Tally::ZERO;
+        // Walls, for the spheres that have some within reach.
         let mut buf = ContactBuf::new();
-        for k in 0..f.len() {
-            let i = i0 + k;
-            let (mut fi, mut ti) = (f[k], tq[k]);
-            let e = entry_of.get(i).copied().unwrap_or(NONE);
-            if e != NONE {
-                let entry = &mut ents[e as usize - e0];
-                let mut hits = Hits::default();
-                for nw in &near[entry.near.0 as usize..entry.near.1 as usize] {
-                    walls[nw.wall as usize].contacts(
-                        nw.wall,
-                        position[i],
-                        radius[i],
-                        t,
-                        &triangles[nw.tri.0 as usize..nw.tri.1 as usize],
-                        &mut buf,
-                        &mut hits,
-                    );
-                }
-                let mut hist = [Vec3::ZERO; WALL_SLOTS];
-                match_history(&mut entry.slots, &hits, &mut hist);
-                for (s, h) in hits.iter().enumerate() {
-                    let p = Pair {
-                        n: h.contact.normal,
-                        delta: h.contact.overlap,
-                        dv: v[k] - h.velocity,
-                        w_i: w[k],
-                        w_j: Vec3::ZERO,
-                        r_i: radius[i],
-                        r_j: f64::INFINITY,
-                        m_i: if fixed[i] { f64::INFINITY } else { mass[i] },
-                        m_j: f64::INFINITY,
-                    };
-                    let m_wall = walls[h.wall as usize].material as usize;
-                    let law = &laws[material[i] as usize * n_mat + m_wall];
-                    let r = contact_force(law, &p, &mut hist[s], dt);
-                    entry.slots[s].history = hist[s];
-                    fi += r.force;
-                    ti += r.torque_i;
-                    tally.worst = larger(tally.worst, (h.contact.overlap / radius[i], i));
-                }
-                tally.contacts += hits.len;
-                tally.dropped += hits.dropped;
+        for entry in ents.iter_mut() {
+            let i = entry.sphere as usize;
+            let k = i - i0;
+            let mut hits = Hits::default();
+            for nw in &near[entry.near.0 as usize..entry.near.1 as usize] {
+                walls[nw.wall as usize].contacts(
+                    nw.wall,
+                    position[i],
+                    radius[i],
+                    t,
+                    &triangles[nw.tri.0 as usize..nw.tri.1 as usize],
+                    &mut buf,
+                    &mut hits,
+                );
             }
-            f[k] = fi;
-            tq[k] = ti;
-            if let Some(kick) = kick {
-                if !fixed[i] {
-                    v[k] += kick.half_dt / mass[i] * fi;
-                    w[k] += kick.half_dt / inertia[i] * ti;
+            let mut hist = [Vec3::ZERO; WALL_SLOTS];
+            match_history(&mut entry.slots, &hits, &mut hist);
+            for (s, h) in hits.iter().enumerate() {
+                let p = Pair::new(
+                    h.contact.normal,
+                    h.contact.overlap,
+                    v[k] - h.velocity,
+                    (w[k], Vec3::ZERO),
+                    (radius[i], f64::INFINITY),
+                    (
+                        if fixed[i] { f64::INFINITY } else { mass[i] },
+                        f64::INFINITY,
+                    ),
+                );
+                let m_wall = walls[h.wall as usize].material as usize;
+                let law = &laws[material[i] as usize * n_mat + m_wall];
+                let r = contact_force(law, &p, &mut hist[s], dt);
+                entry.slots[s].history = hist[s];
+                f[k] += r.force;
+                tq[k] += r.torque_i;
+                tally.worst = larger(tally.worst, (h.contact.overlap / radius[i], i));
+            }
+            tally.contacts += hits.len;
+            tally.dropped += hits.dropped;
+        }
+        // The closing half kick and the checks.
+        if let Some(kick) = kick {
+            let range = i0..i0 + f.len();
+            let h = kick.half_dt;
+            let max2 = kick.max_speed * kick.max_speed;
+            let own = (mass[range.clone()].iter())
+                .zip(&inertia[range.clone()])
+                .zip(&fixed[range.clone()])
+                .zip(&position[range]);
+            let cols = f.iter().zip(tq.iter()).zip(v.iter_mut()).zip(w.iter_mut());
+            for (k, ((((f, t), v), w), (((&m, &i), &fixed), x))) in cols.zip(own).enumerate() {
+                if !fixed {
+                    *v += h / m * *f;
+                    *w += h / i * *t;
                 }
-                let speed2 = v[k].length_squared();
-                let fine = is_finite(position[i])
-                    && is_finite(v[k])
-                    && is_finite(w[k])
-                    && speed2 <= kick.max_speed * kick.max_speed;
+                // Non-finite values propagate into the sum; NaN fails the comparison.
+                let fine =
+                    (x.x + x.y + x.z + w.x + w.y + w.z).is_finite() && v.length_squared() <= max2;
                 if !fine && tally.bad.is_none() {
-                    tally.bad = Some(i);
+                    tally.bad = Some(i0 + k);
                 }
             }
         }

@@ -11,6 +11,7 @@
 use rayon::prelude::*;
 
 use super::domain::Domain;
+use super::par::for_chunks;
 use super::spheres::Spheres;
 use crate::math::{is_finite, Vec3};
 
@@ -52,6 +53,9 @@ pub struct Opening {
     pub outside: usize,
 }
 
+/// Spheres per parallel work item of `open_step`.
+const CHUNK: usize = 4096;
+
 /// The opening of a step in one pass over the spheres: half kick with the current forces and
 /// drift [1][2] (as `half_kick` and `drift`), wrap of the periodic axes, the neighbour-list
 /// displacement test against `reference` (positions at the build; a sphere farther than
@@ -68,7 +72,10 @@ pub fn open_step(
 ) -> Opening {
     let h = 0.5 * dt;
     let limit2 = limit * limit;
-    let check_moves = reference.len() == s.len();
+    let max2 = max_speed * max_speed;
+    let n = s.len();
+    let check_moves = reference.len() == n;
+    let im = domain.images();
     let Spheres {
         position,
         velocity,
@@ -81,35 +88,57 @@ pub fn open_step(
         ..
     } = s;
     let (mass, inertia, fixed) = (&*mass, &*inertia, &*fixed);
-    position
-        .par_iter_mut()
-        .zip(velocity.par_iter_mut())
-        .zip(angular_velocity.par_iter_mut())
-        .zip(force.par_iter_mut().zip(torque.par_iter_mut()))
-        .enumerate()
-        .map(|(i, (((x, v), w), (f, t)))| {
-            if !fixed[i] {
-                *v += h / mass[i] * *f;
-                *w += h / inertia[i] * *t;
-                *x += dt * *v;
-                *x = domain.wrap(*x);
-                *f = mass[i] * gravity;
+    let leaf = |c: usize, ((x, v), (w, (f, t))): Columns, ()| {
+        let range = c * CHUNK..c * CHUNK + x.len();
+        let mut o = Opening::default();
+        let own = (mass[range.clone()].iter())
+            .zip(&inertia[range.clone()])
+            .zip(&fixed[range.clone()]);
+        let cols = x.iter_mut().zip(v).zip(w).zip(f).zip(t);
+        for (k, (((((x, v), w), f), t), ((&m, &i), &fixed))) in cols.zip(own).enumerate() {
+            if !fixed {
+                *v += h / m * *f;
+                *w += h / i * *t;
+                *x = im.wrap(*x + dt * *v);
+                *f = m * gravity;
             } else {
                 *f = Vec3::ZERO;
             }
             *t = Vec3::ZERO;
-            let moved =
-                !check_moves || domain.minimum_image(*x - reference[i]).length_squared() > limit2;
-            let out = !domain.contains(*x)
-                && is_finite(*x)
-                && v.length_squared() <= max_speed * max_speed;
-            Opening {
-                moved,
-                outside: out as usize,
+            if check_moves {
+                let d = im.nearest(*x - reference[range.start + k]);
+                o.moved |= d.length_squared() > limit2;
             }
-        })
-        .reduce(Opening::default, |a, b| Opening {
+            // Outside along an open axis, finite and not absurdly fast: an outflow.
+            if !im.contains(*x) && is_finite(*x) && v.length_squared() <= max2 {
+                o.outside += 1;
+            }
+        }
+        o.moved |= !check_moves;
+        o
+    };
+    for_chunks(
+        0..n.div_ceil(CHUNK),
+        (
+            (&mut position[..], &mut velocity[..]),
+            (&mut angular_velocity[..], (&mut force[..], &mut torque[..])),
+        ),
+        (),
+        &|c| ((c * CHUNK).min(n), 0),
+        &leaf,
+        &|a: Opening, b: Opening| Opening {
             moved: a.moved || b.moved,
             outside: a.outside + b.outside,
-        })
+        },
+    )
+    .unwrap_or(Opening {
+        moved: !check_moves,
+        outside: 0,
+    })
 }
+
+/// The mutable columns `open_step` walks.
+type Columns<'a> = (
+    (&'a mut [Vec3], &'a mut [Vec3]),
+    (&'a mut [Vec3], (&'a mut [Vec3], &'a mut [Vec3])),
+);

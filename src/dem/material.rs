@@ -133,6 +133,10 @@ pub struct PairLaw {
     pub damping_ratio: f64,
     /// LIGGGHTS β = ln e / √(ln² e + π²) [-] (`HertzMindlin` only).
     pub beta: f64,
+    /// Hertz-Mindlin factors, derived once (`HertzMindlin` only): k_n = c.0 a, k_t = c.1 a
+    /// [Pa], γ_n = c.2 √(m* a), γ_t = c.3 √(m* a) [Pa^½], with a = √(R* δ) (see
+    /// `contact::hertz_mindlin`).
+    pub hertz_mindlin: (f64, f64, f64, f64),
 }
 
 /// Per-pair overrides of the mixing rules.
@@ -172,6 +176,7 @@ impl PairLaw {
             restitution: e,
             damping_ratio: 0.0,
             beta: 0.0,
+            hertz_mindlin: (0.0, 0.0, 0.0, 0.0),
         };
         match *model {
             ContactModel::HookeHistory {
@@ -189,6 +194,14 @@ impl PairLaw {
                 law.kind = LawKind::HertzMindlin;
                 let ln_e = e.max(1e-12).ln();
                 law.beta = ln_e / (ln_e * ln_e + std::f64::consts::PI.powi(2)).sqrt();
+                // γ = -2 √(5/6) β √(S m*), S = 2 E* a (normal) or 8 G* a (tangential).
+                let c = -2.0 * (5.0f64 / 6.0).sqrt() * law.beta;
+                law.hertz_mindlin = (
+                    4.0 / 3.0 * law.e_star,
+                    8.0 * law.g_star,
+                    c * (2.0 * law.e_star).sqrt(),
+                    c * (8.0 * law.g_star).sqrt(),
+                );
             }
             ContactModel::Voigt { spring, damping } => {
                 let shape = match spring {

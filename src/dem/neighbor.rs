@@ -381,6 +381,17 @@ impl NeighborList {
         let slab_cells = grid.slab_cells() as u32;
         let pos = &self.reference;
         let (rad, fixed) = (&spheres.radius, &spheres.fixed);
+        let im = domain.images();
+        let [a0, a1, a2] = grid.axes;
+        let (n0, n1, n2) = (grid.n[a0], grid.n[a1], grid.n[a2]);
+        // Interior cells (one cell or more from every face) search five runs of consecutive
+        // cells: the rest of their own row from the next slot on, the row above, and the three
+        // rows of the next slab. Those runs are ranges of consecutive slots, already ascending.
+        let interior = |c: usize| {
+            let (c0, c1, c2) = (c % n0, (c / n0) % n1, c / (n0 * n1));
+            (1..n0 - 1).contains(&c0) && (1..n1 - 1).contains(&c1) && (1..n2 - 1).contains(&c2)
+        };
+        let start = |c: usize| grid.start[c];
         self.chunks.par_iter_mut().enumerate().for_each(|(c, out)| {
             out.partner.clear();
             out.count.clear();
@@ -388,25 +399,37 @@ impl NeighborList {
             // (first slot, end slot, only slots above the owner's) of the cells to search.
             let mut ranges: Vec<(u32, u32, bool)> = Vec::with_capacity(27);
             let mut last_cell = NONE;
+            let mut fast = false;
             for i in c * CHUNK..((c + 1) * CHUNK).min(n) {
                 let cell = grid.cell_of[i];
                 if cell != last_cell {
                     last_cell = cell;
-                    grid.around(cell as usize, &mut around);
                     ranges.clear();
-                    let slab = cell / slab_cells;
-                    for &q in &around {
-                        let q_slab = q / slab_cells;
-                        let (s, e) = (grid.start[q as usize], grid.start[q as usize + 1]);
-                        if s == e {
-                            continue;
+                    let cu = cell as usize;
+                    fast = interior(cu);
+                    if fast {
+                        let (row, slab) = (n0, n0 * n1);
+                        ranges.push((0, start(cu + 2), true));
+                        ranges.push((start(cu + row - 1), start(cu + row + 2), false));
+                        for d1 in [cu + slab - row, cu + slab, cu + slab + row] {
+                            ranges.push((start(d1 - 1), start(d1 + 2), false));
                         }
-                        if wrap && slab == slabs - 1 && q_slab == 0 {
-                            ranges.push((s, e, false));
-                        } else if wrap && slab == 0 && q_slab == slabs - 1 {
-                            continue;
-                        } else if q >= cell {
-                            ranges.push((s, e, q == cell));
+                    } else {
+                        grid.around(cu, &mut around);
+                        let slab = cell / slab_cells;
+                        for &q in &around {
+                            let q_slab = q / slab_cells;
+                            let (s, e) = (grid.start[q as usize], grid.start[q as usize + 1]);
+                            if s == e {
+                                continue;
+                            }
+                            if wrap && slab == slabs - 1 && q_slab == 0 {
+                                ranges.push((s, e, false));
+                            } else if wrap && slab == 0 && q_slab == slabs - 1 {
+                                continue;
+                            } else if q >= cell {
+                                ranges.push((s, e, q == cell));
+                            }
                         }
                     }
                 }
@@ -416,16 +439,16 @@ impl NeighborList {
                     let s = if above { s.max(i as u32 + 1) } else { s };
                     for j in s..e {
                         let j = j as usize;
-                        if fi && fixed[j] {
-                            continue;
-                        }
                         let cut = ri + rad[j] + skin;
-                        if domain.minimum_image(pos[j] - xi).length_squared() < cut * cut {
+                        if im.nearest(pos[j] - xi).length_squared() < cut * cut && !(fi && fixed[j])
+                        {
                             out.partner.push(j as u32);
                         }
                     }
                 }
-                out.partner[before..].sort_unstable();
+                if !fast {
+                    out.partner[before..].sort_unstable();
+                }
                 out.count.push((out.partner.len() - before) as u32);
             }
         });

@@ -107,17 +107,14 @@ pub fn discrete_impact(law: &PairLaw, r_star: f64, m_star: f64, v: f64, dt: f64)
         delta += u_half * dt;
         f = if delta > 0.0 {
             steps += 1;
-            let p = Pair {
-                n: Vec3::X,
+            let p = Pair::new(
+                Vec3::X,
                 delta,
-                dv: Vec3::new(u_half, 0.0, 0.0),
-                w_i: Vec3::ZERO,
-                w_j: Vec3::ZERO,
-                r_i: r_star,
-                r_j: f64::INFINITY,
-                m_i: m_star,
-                m_j: f64::INFINITY,
-            };
+                Vec3::new(u_half, 0.0, 0.0),
+                (Vec3::ZERO, Vec3::ZERO),
+                (r_star, f64::INFINITY),
+                (m_star, f64::INFINITY),
+            );
             contact_force(law, &p, &mut hist, dt).force.x
         } else {
             0.0

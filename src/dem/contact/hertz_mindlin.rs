@@ -16,21 +16,27 @@ use crate::math::Vec3;
 /// v_t uses contact radii c = r - δ/2; ξ ← ξ + v_t Δt, then projected onto the tangent plane
 /// (no rescaling); F_t = -k_t ξ; if |F_t| > μ|F_n| it is scaled down and ξ = -F_t/k_t,
 /// otherwise F_t -= γ_t v_t. Torques T = c (n × F_t).
-#[inline]
+///
+/// The factors that do not depend on the contact are derived once (`PairLaw::hertz_mindlin`):
+/// k_n = (4/3) E* a, k_t = 8 G* a, and γ = -2 √(5/6) β √(S m*) = c √(m* a) with
+/// c = -2 √(5/6) β √(2 E*) (S = S_n) or √(8 G*) (S = S_t), so a contact takes three square
+/// roots (distance, a, √(m* a)) and a fourth only when it slides.
+#[inline(always)]
 pub fn force(law: &PairLaw, p: &Pair, xi: &mut Vec3, dt: f64) -> Reaction {
-    const SQRT_5_6: f64 = 0.912_870_929_175_276_8;
     let n = p.n;
     let (r_star, m_star) = (p.r_star(), p.m_star());
+    let (kn_a, kt_a, cn, ct) = law.hertz_mindlin;
     let a = (r_star * p.delta).sqrt();
-    let k_n = 4.0 / 3.0 * law.e_star * a;
-    let s_n = 2.0 * law.e_star * a;
-    let k_t = 8.0 * law.g_star * a;
-    let gamma_n = -2.0 * SQRT_5_6 * law.beta * (s_n * m_star).sqrt();
-    let gamma_t = -2.0 * SQRT_5_6 * law.beta * (k_t * m_star).sqrt();
+    let root = (m_star * a).sqrt();
+    let k_n = kn_a * a;
+    let k_t = kt_a * a;
+    let gamma_n = cn * root;
+    let gamma_t = ct * root;
 
-    let c_i = p.r_i - 0.5 * p.delta;
-    let c_j = p.r_j - 0.5 * p.delta;
-    let v_r = p.contact_velocity(c_i, c_j);
+    let half = 0.5 * p.delta;
+    let c_i = p.r_i - half;
+    let c_j = if p.r_j.is_finite() { p.r_j - half } else { 0.0 };
+    let v_r = p.dv + (c_i * p.w_i + c_j * p.w_j).cross(n);
     let delta_dot = v_r.dot(n);
     let f_n = k_n * p.delta + gamma_n * delta_dot;
     let v_t = v_r - delta_dot * n;
@@ -39,17 +45,17 @@ pub fn force(law: &PairLaw, p: &Pair, xi: &mut Vec3, dt: f64) -> Reaction {
     *xi -= xi.dot(n) * n;
     let mut f_t = -k_t * *xi;
     let limit = law.friction * f_n.abs();
-    let ft_len = f_t.length();
-    if ft_len > limit {
-        f_t *= limit / ft_len;
-        *xi = -f_t / k_t;
+    let ft2 = f_t.length_squared();
+    if ft2 > limit * limit {
+        f_t *= limit / ft2.sqrt();
+        *xi = f_t * (-1.0 / k_t);
     } else {
         f_t -= gamma_t * v_t;
     }
-    let c_j = if p.r_j.is_finite() { c_j } else { 0.0 };
+    let t = n.cross(f_t);
     Reaction {
         force: -f_n * n + f_t,
-        torque_i: c_i * n.cross(f_t),
-        torque_j: c_j * n.cross(f_t),
+        torque_i: c_i * t,
+        torque_j: c_j * t,
     }
 }

@@ -17,7 +17,7 @@ use crate::math::Vec3;
 /// F_t = -(k_t ξ + m* γ_t v_t); if |F_t| > μ |F_n|, with s = μ|F_n|/|F_t| and
 /// d = m* γ_t v_t / k_t: ξ ← s (ξ + d) - d and F_t ← s F_t (F_t = 0 if ξ was zero before the
 /// projection). Torques T_i = r_i n × F_t, T_j = r_j n × F_t.
-#[inline]
+#[inline(always)]
 pub fn force(law: &PairLaw, p: &Pair, xi: &mut Vec3, dt: f64) -> Reaction {
     let n = p.n;
     let m = p.m_star();
@@ -84,17 +84,14 @@ mod tests {
     #[test]
     fn spring_slider_and_symmetry() {
         let law = law();
-        let base = Pair {
-            n: Vec3::X,
-            delta: 0.01,
-            dv: Vec3::ZERO,
-            w_i: Vec3::ZERO,
-            w_j: Vec3::ZERO,
-            r_i: 0.5,
-            r_j: 0.5,
-            m_i: 0.5,
-            m_j: 0.5,
-        };
+        let base = Pair::new(
+            Vec3::X,
+            0.01,
+            Vec3::ZERO,
+            (Vec3::ZERO, Vec3::ZERO),
+            (0.5, 0.5),
+            (0.5, 0.5),
+        );
         let mut xi = Vec3::ZERO;
         let r = force(&law, &base, &mut xi, 1e-4);
         assert_eq!(r.force, Vec3::new(-2.0e3, 0.0, 0.0));

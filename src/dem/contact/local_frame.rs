@@ -343,6 +343,7 @@ mod tests {
                 restitution: 1.0,
                 damping_ratio: zeta,
                 beta: 0.0,
+                hertz_mindlin: (0.0, 0.0, 0.0, 0.0),
             };
             let oracle = Law::new(k_n, ratio, zeta, m_i, m_j, mu);
             let m = m_i * m_j / (m_i + m_j);
@@ -368,17 +369,14 @@ mod tests {
 
             // The kernel: the world-frame spring on i is minus the source's (force on j).
             let sep = x_j - x_i;
-            let pair = Pair {
-                n: sep / sep.length(),
-                delta: d - sep.length(),
-                dv: v3(bi.v) - v3(bj.v),
-                w_i: v3(bi.w),
-                w_j: v3(bj.w),
-                r_i: 0.5 * d,
-                r_j: 0.5 * d,
-                m_i,
-                m_j,
-            };
+            let pair = Pair::new(
+                sep / sep.length(),
+                d - sep.length(),
+                v3(bi.v) - v3(bj.v),
+                (v3(bi.w), v3(bj.w)),
+                (0.5 * d, 0.5 * d),
+                (m_i, m_j),
+            );
             let mut hist = -(s_pre[0] * e_eta + s_pre[1] * e_zeta);
             let got = voigt::force(&law, &pair, &mut hist, dt);
             let (force, torque, spring) = contact(&oracle, d, &bi, &bj, s_pre, dt);

@@ -35,23 +35,49 @@ pub struct Pair {
     pub r_i: f64,
     /// Radius of j [m]; `f64::INFINITY` for a wall.
     pub r_j: f64,
-    /// Mass of i [kg]; `f64::INFINITY` for a fixed sphere.
-    pub m_i: f64,
-    /// Mass of j [kg]; `f64::INFINITY` for a wall or a fixed sphere.
-    pub m_j: f64,
+    /// Effective radius R* = r_i r_j / (r_i + r_j) [m] (= r_i against a wall).
+    pub r_star: f64,
+    /// Effective mass m* = m_i m_j / (m_i + m_j) [kg] (= m_i against a wall or a fixed
+    /// sphere, which count as infinitely heavy).
+    pub m_star: f64,
 }
 
 impl Pair {
-    /// Effective radius R* = r_i r_j / (r_i + r_j) [m] (= r_i against a wall).
+    /// The pair state from the normal, overlap, relative velocity v_i - v_j, angular velocities
+    /// (ω_i, ω_j), radii (r_i, r_j) and masses (m_i, m_j), with `f64::INFINITY` for the radius
+    /// of a wall and the mass of a wall or a fixed sphere.
     #[inline]
-    pub fn r_star(&self) -> f64 {
-        harmonic(self.r_i, self.r_j)
+    pub fn new(
+        n: Vec3,
+        delta: f64,
+        dv: Vec3,
+        w: (Vec3, Vec3),
+        r: (f64, f64),
+        m: (f64, f64),
+    ) -> Pair {
+        Pair {
+            n,
+            delta,
+            dv,
+            w_i: w.0,
+            w_j: w.1,
+            r_i: r.0,
+            r_j: r.1,
+            r_star: harmonic(r.0, r.1),
+            m_star: harmonic(m.0, m.1),
+        }
     }
 
-    /// Effective mass m* = m_i m_j / (m_i + m_j) [kg] (= m_i against a wall).
+    /// Effective radius R* [m].
+    #[inline]
+    pub fn r_star(&self) -> f64 {
+        self.r_star
+    }
+
+    /// Effective mass m* [kg].
     #[inline]
     pub fn m_star(&self) -> f64 {
-        harmonic(self.m_i, self.m_j)
+        self.m_star
     }
 
     /// Relative velocity of i's contact point with respect to j's, with lever arms l_i, l_j:
@@ -90,7 +116,7 @@ pub struct Reaction {
 }
 
 /// The force of one contact, dispatching on the pair's law. `hist` is updated in place.
-#[inline]
+#[inline(always)]
 pub fn contact_force(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
     match law.kind {
         LawKind::HertzMindlin => hertz_mindlin::force(law, p, hist, dt),
