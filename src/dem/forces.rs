@@ -365,7 +365,11 @@ impl PairContext<'_> {
                 t_i += r.torque_i;
                 out.add(j, -r.force, r.torque_j);
                 tally.contacts += 1;
-                tally.worst = larger(tally.worst, (delta / ri.min(rj), i));
+                // Overlap ratio δ / min(r_i, r_j), divided out only when it may be the largest.
+                let r_min = ri.min(rj);
+                if delta >= tally.worst.0 * r_min {
+                    tally.worst = larger(tally.worst, (delta / r_min, i));
+                }
             }
             out.add(i, f_i, t_i);
         }
