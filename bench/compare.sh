@@ -34,7 +34,6 @@ B2_STEPS=${B2_STEPS:-1000}
 M1_STEPS=${M1_STEPS:-2000}
 NP_LIST=${NP_LIST:-"1 2"}
 MPIRUN=(mpirun --allow-run-as-root --oversubscribe)
-RIPRAP=$ROOT/target/release/riprap
 
 for f in gen_b1.py in.b1.liggghts in.b1.lammps in.chute data.chute.gz; do
   [ -s "$INPUTS/$f" ] || { echo "missing $INPUTS/$f (set BENCH_INPUTS)"; exit 1; }
@@ -57,6 +56,9 @@ need_peers
 echo "== building riprap"
 ( cd "$ROOT" && cargo build --release -q )
 mkdir -p "$RUN"
+# A copy, so that rebuilding the tree during the (long) comparison does not change what runs.
+cp "$ROOT/target/release/riprap" "$RUN/riprap"
+RIPRAP=$RUN/riprap
 { echo "date: $(date -u +%Y-%m-%dT%H:%MZ)"; echo "commit: $(git -C "$ROOT" rev-parse --short HEAD)";
   lscpu | grep -E "Model name|^CPU\(s\)|L2|L3"; free -g | head -2; } > "$RUN/machine.txt"
 
