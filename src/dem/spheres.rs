@@ -228,3 +228,62 @@ impl Spheres {
             .fold(Vec3::ZERO, |a, b| a + b)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sample(n: usize) -> Spheres {
+        let mut s = Spheres::default();
+        for k in 0..n {
+            s.push(NewSphere {
+                position: Vec3::new(k as f64, 0.0, 0.0),
+                velocity: Vec3::new(0.0, k as f64, 0.0),
+                angular_velocity: Vec3::new(0.0, 0.0, k as f64),
+                radius: 1.0 + k as f64,
+                material: k as u16,
+                density: 1000.0,
+                fixed: k % 2 == 0,
+            });
+        }
+        s
+    }
+
+    /// After permutations and removals every column still describes the same sphere, and
+    /// `slot_of` finds each id (and none of the removed ones).
+    #[test]
+    fn permute_and_retain_keep_columns_together() {
+        let mut s = sample(7);
+        let mut scratch = PermuteScratch::default();
+        s.permute(&[3, 0, 6, 1, 5, 2, 4], &mut scratch);
+        s.permute(&[6, 5, 4, 3, 2, 1, 0], &mut scratch);
+        s.retain(&[true, false, true, true, false, true, true]);
+        let id = s.push(NewSphere {
+            position: Vec3::new(7.0, 0.0, 0.0),
+            velocity: Vec3::new(0.0, 7.0, 0.0),
+            angular_velocity: Vec3::new(0.0, 0.0, 7.0),
+            radius: 8.0,
+            material: 7,
+            density: 1000.0,
+            fixed: false,
+        });
+        assert_eq!(id, 7);
+        assert_eq!(s.len(), 6);
+        for (k, &id) in s.id.iter().enumerate() {
+            let f = id as f64;
+            assert_eq!(s.slot_of(id), Some(k));
+            assert_eq!(s.position[k].x, f);
+            assert_eq!(s.velocity[k].y, f);
+            assert_eq!(s.angular_velocity[k].z, f);
+            assert_eq!(s.radius[k], 1.0 + f);
+            assert_eq!(s.material[k], id as u16);
+            assert_eq!(s.fixed[k], id % 2 == 0 && id < 7);
+        }
+        let removed: Vec<u32> = (0..8).filter(|id| !s.id.contains(id)).collect();
+        assert_eq!(removed.len(), 2);
+        for id in removed {
+            assert_eq!(s.slot_of(id), None);
+        }
+        assert_eq!(s.slot_of(100), None);
+    }
+}

@@ -489,8 +489,9 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         steps: (sc.run.end_time / dt).round() as u64,
         spheres: (dem.spheres.len(), n_fed),
         pairings,
-        // Per sphere: state ~200 B, neighbour pairs ~8 × 60 B, wall slots 336 B.
-        memory: n_total as f64 * 1100.0,
+        // Per sphere (ARCHITECTURE.md, "Performance and memory"): state 179 B, neighbour list
+        // and sorting ~150 B, ~4 listed pairs at 62 B, wall lists ~40 B.
+        memory: n_total as f64 * 620.0,
         at_step,
     };
     let simulation = Simulation::new(dem, feeders, min_period);
