@@ -477,10 +477,11 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
         let mut tally = Tally::ZERO;
         // Walls, for the spheres that have some within reach.
         let mut buf = ContactBuf::new();
+        let mut hits = Hits::default();
         for entry in ents.iter_mut() {
             let i = entry.sphere as usize;
             let k = i - i0;
-            let mut hits = Hits::default();
+            hits.clear();
             for nw in &near[entry.near.0 as usize..entry.near.1 as usize] {
                 walls[nw.wall as usize].contacts(
                     nw.wall,

@@ -182,6 +182,13 @@ impl Default for Hits {
 }
 
 impl Hits {
+    /// Empties the list for reuse (the entries are overwritten, not cleared).
+    #[inline]
+    pub fn clear(&mut self) {
+        self.len = 0;
+        self.dropped = 0;
+    }
+
     fn push(&mut self, h: WallHit) {
         if self.len < WALL_SLOTS {
             self.items[self.len] = Some(h);
