@@ -229,6 +229,7 @@ pub fn checkpoint_of(sim: &Simulation) -> Checkpoint {
         wall_slots: sim.dem.wall_slots.clone(),
         feeders: sim.feeders.clone(),
         stats: sim.dem.stats,
+        rigid: sim.rigid.clone(),
     }
 }
 
@@ -245,7 +246,9 @@ pub fn restore(sim: Simulation, ck: Checkpoint) -> Simulation {
     dem.contacts.load(&ck.contacts);
     dem.wall_slots = ck.wall_slots;
     dem.stats = ck.stats;
-    Simulation::resumed(dem, ck.feeders, sim.min_period, ck.time, ck.step)
+    let mut rigid = ck.rigid;
+    rigid.templates = sim.rigid.templates;
+    Simulation::resumed(dem, ck.feeders, rigid, sim.min_period, ck.time, ck.step)
 }
 
 /// One row of `series.csv`.

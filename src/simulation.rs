@@ -8,8 +8,11 @@
 //! 4. insertion: feeders add the spheres due
 //! 5. neighbour list: rebuild when a sphere moved more than skin/2 (history carried over)
 //! 6. forces at t + Δt: contacts [6]-[14] with walls as infinite spheres, gravity
+//!    and the links between bodies (wires, bonds)
 //! 7. half kick with the new forces
-//! 8. stability checks: NaN, absurd speed, overlap beyond bound
+//! 8. rigid blocks: the PMS recovery of each block from its members, which are put back in the
+//!    rigid shape [34]-[36], [41]-[49]
+//! 9. stability checks: NaN, absurd speed, overlap beyond bound
 //!
 //! ARCHITECTURE.md repeats this order; keep the two in step.
 
@@ -18,6 +21,7 @@ use crate::dem::insertion::Feeder;
 use crate::dem::integrate::{drift, half_kick};
 use crate::dem::{Dem, WALL_SLOTS_EMPTY};
 use crate::math::{is_finite, Vec3};
+use crate::rigid::bodies::RigidBodies;
 
 /// Why a run stopped before its end.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -40,6 +44,8 @@ pub struct Simulation {
     pub dem: Dem,
     /// Continuous feeders.
     pub feeders: Vec<Feeder>,
+    /// Rigid blocks made of DEM spheres, and the wires and bonds between bodies.
+    pub rigid: RigidBodies,
     /// Simulated time [s].
     pub time: f64,
     /// Steps taken.
@@ -50,7 +56,17 @@ pub struct Simulation {
 
 impl Simulation {
     /// Prepares a simulation: builds the neighbour list and evaluates the initial forces.
-    pub fn new(mut dem: Dem, feeders: Vec<Feeder>, min_period: f64) -> Self {
+    pub fn new(dem: Dem, feeders: Vec<Feeder>, min_period: f64) -> Self {
+        Self::with_bodies(dem, feeders, RigidBodies::default(), min_period)
+    }
+
+    /// As `new`, with rigid blocks and links (`rigid`), whose members are already in `dem`.
+    pub fn with_bodies(
+        mut dem: Dem,
+        feeders: Vec<Feeder>,
+        rigid: RigidBodies,
+        min_period: f64,
+    ) -> Self {
         if dem.neighbors.skin <= 0.0 {
             let d_max = dem
                 .spheres
@@ -62,21 +78,30 @@ impl Simulation {
         let mut sim = Simulation {
             dem,
             feeders,
+            rigid,
             time: 0.0,
             step: 0,
             min_period,
         };
         sim.refresh_lists();
-        compute_forces(&mut sim.dem, sim.time);
+        sim.evaluate_forces();
         sim
     }
 
     /// Prepares a simulation restored from a checkpoint: its forces and history are already
     /// those of the saved step, so they are not evaluated again (that would advance the history).
-    pub fn resumed(dem: Dem, feeders: Vec<Feeder>, min_period: f64, time: f64, step: u64) -> Self {
+    pub fn resumed(
+        dem: Dem,
+        feeders: Vec<Feeder>,
+        rigid: RigidBodies,
+        min_period: f64,
+        time: f64,
+        step: u64,
+    ) -> Self {
         let mut sim = Simulation {
             dem,
             feeders,
+            rigid,
             time,
             step,
             min_period,
@@ -90,6 +115,13 @@ impl Simulation {
         let d = &mut self.dem;
         d.wall_slots.resize(d.spheres.len(), WALL_SLOTS_EMPTY);
         d.neighbors.build(&d.spheres, &d.domain);
+        if !self.rigid.blocks.is_empty() {
+            // Members of one block never touch: their contact is internal to the block.
+            let s = &d.spheres;
+            d.neighbors
+                .pairs
+                .retain(|&(i, j)| !s.same_body(i as usize, j as usize));
+        }
         d.contacts.rebuild(&d.neighbors.pairs, &d.spheres);
         d.mesh_candidates = MeshCandidates::build(d, self.time);
     }
@@ -116,9 +148,23 @@ impl Simulation {
         {
             self.refresh_lists();
         }
-        compute_forces(&mut self.dem, self.time);
+        self.evaluate_forces();
         half_kick(&mut self.dem.spheres, dt);
+        if !self.rigid.blocks.is_empty() {
+            let d = &mut self.dem;
+            self.rigid.recover(&mut d.spheres, &d.domain, dt);
+        }
         self.check()
+    }
+
+    /// Contact, wall and body forces [6]-[14], then the wires and bonds.
+    fn evaluate_forces(&mut self) {
+        compute_forces(&mut self.dem, self.time);
+        if !self.rigid.is_empty() {
+            let d = &mut self.dem;
+            self.rigid
+                .apply_link_forces(&mut d.spheres, &d.domain, self.time, d.dt);
+        }
     }
 
     /// Wraps periodic axes and removes spheres outside the domain; true if any was removed.
@@ -141,9 +187,12 @@ impl Simulation {
         if lost == 0 {
             return false; // The common case allocates nothing.
         }
-        let keep: Vec<bool> = (0..s.len())
+        let mut keep: Vec<bool> = (0..s.len())
             .map(|i| stays(s.position[i], s.velocity[i]))
             .collect();
+        // A block leaves as a whole when one of its members does.
+        d.stats.blocks_lost += self.rigid.drop_partial_blocks(s, &mut keep);
+        let lost = keep.iter().filter(|&&k| !k).count();
         s.retain(&keep);
         let mut k = 0;
         d.wall_slots.retain(|_| {

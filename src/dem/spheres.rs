@@ -14,6 +14,9 @@ pub type MaterialIndex = u16;
 /// Stable identity of a sphere (assigned at insertion, never reused).
 pub type SphereId = u32;
 
+/// `Spheres::body` of a sphere that belongs to no rigid body.
+pub const NO_BODY: u32 = u32::MAX;
+
 /// All spheres of a simulation (structure-of-arrays).
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct Spheres {
@@ -39,6 +42,9 @@ pub struct Spheres {
     pub material: Vec<MaterialIndex>,
     /// Fixed spheres do not move (a rough base, say); they still push on others.
     pub fixed: Vec<bool>,
+    /// Id of the rigid body (block) the sphere is a member of, or `NO_BODY`. Members of one
+    /// body never touch each other: their contact is internal to the body.
+    pub body: Vec<u32>,
     /// The id the next inserted sphere gets.
     pub next_id: SphereId,
 }
@@ -86,6 +92,7 @@ impl Spheres {
         self.inertia.reserve(n);
         self.material.reserve(n);
         self.fixed.reserve(n);
+        self.body.reserve(n);
     }
 
     /// Adds a sphere and returns its id. Mass m = ρ (4/3) π r³, inertia I = (2/5) m r².
@@ -104,6 +111,7 @@ impl Spheres {
         self.inertia.push(0.4 * m * s.radius * s.radius);
         self.material.push(s.material);
         self.fixed.push(s.fixed);
+        self.body.push(NO_BODY);
         id
     }
 
@@ -130,6 +138,13 @@ impl Spheres {
         compact(&mut self.inertia, keep);
         compact(&mut self.material, keep);
         compact(&mut self.fixed, keep);
+        compact(&mut self.body, keep);
+    }
+
+    /// True when slots i and j are members of the same rigid body (no contact between them).
+    #[inline]
+    pub fn same_body(&self, i: usize, j: usize) -> bool {
+        self.body[i] != NO_BODY && self.body[i] == self.body[j]
     }
 
     /// The slot of the sphere with this id, if present (slots are sorted by id).

@@ -13,9 +13,10 @@ use crate::dem::insertion::Feeder;
 use crate::dem::spheres::Spheres;
 use crate::dem::walls::WallSlots;
 use crate::dem::Stats;
+use crate::rigid::bodies::RigidBodies;
 
 const MAGIC: &[u8; 8] = b"RIPRAPCK";
-const VERSION: u32 = 1;
+const VERSION: u32 = 2;
 
 /// The saved state.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -36,6 +37,8 @@ pub struct Checkpoint {
     pub feeders: Vec<Feeder>,
     /// Counters.
     pub stats: Stats,
+    /// Blocks, wires and bonds (templates come from the scenario).
+    pub rigid: RigidBodies,
 }
 
 /// What can go wrong reading a checkpoint.
