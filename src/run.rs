@@ -10,6 +10,8 @@ use std::time::Instant;
 
 use anyhow::{bail, Context};
 
+use crate::dem::spheres::NO_BODY;
+use crate::io::blocks::{block_rows, write_block_points, write_breakages, BLOCK_COLUMNS};
 use crate::io::checkpoint::Checkpoint;
 use crate::io::csv::{read_csv, CsvSeries};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
@@ -114,6 +116,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     } else {
         CsvSeries::create(&out.join("series.csv"), &SERIES_COLUMNS)?
     };
+    let mut block_out = BlockOutput::open(&sim, &out, resuming, t0)?;
     let mut probes = Vec::new();
     for &id in &sc.output.probes {
         let p = out.join(format!("probe_{id}.csv"));
@@ -128,6 +131,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     }
     if !resuming {
         snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+        block_out.write(&sim, &out)?;
         series.row(&series_row(&sim))?;
         record_probes(&sim, &mut probes)?;
     }
@@ -140,6 +144,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     for k in 0..total_steps {
         if let Err(e) = sim.step() {
             let _ = write_spheres(&sim, &out.join("spheres_failed.vtu"));
+            let _ = block_out.write(&sim, &out);
             if let Some(b) = &bar {
                 b.abandon();
             }
@@ -156,6 +161,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         }
         if n % vtk_every == 0 {
             snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+            block_out.write(&sim, &out)?;
         }
         if n % ck_every == 0 {
             save(&sim, &out.join("checkpoint.ck"))?;
@@ -182,6 +188,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     save(&sim, &out.join("checkpoint.ck"))?;
     if sim.step % vtk_every != 0 {
         snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+        block_out.write(&sim, &out)?;
     }
     if sim.step % csv_every != 0 {
         series.row(&series_row(&sim))?;
@@ -317,8 +324,45 @@ fn record_probes(sim: &Simulation, probes: &mut [(u32, CsvSeries)]) -> std::io::
     Ok(())
 }
 
+/// The block files of a run (`io::blocks`); nothing when the scenario has no blocks.
+struct BlockOutput(Option<(PvdSeries, CsvSeries)>);
+
+impl BlockOutput {
+    fn open(sim: &Simulation, out: &Path, resuming: bool, t0: f64) -> std::io::Result<Self> {
+        if sim.rigid.is_empty() {
+            return Ok(BlockOutput(None));
+        }
+        let csv = out.join("blocks.csv");
+        let csv = if resuming {
+            CsvSeries::resume(&csv, &BLOCK_COLUMNS, t0)?
+        } else {
+            CsvSeries::create(&csv, &BLOCK_COLUMNS)?
+        };
+        Ok(BlockOutput(Some((
+            open_pvd(&out.join("blocks.pvd"), resuming, t0)?,
+            csv,
+        ))))
+    }
+
+    fn write(&mut self, sim: &Simulation, out: &Path) -> std::io::Result<()> {
+        let Some((pvd, csv)) = &mut self.0 else {
+            return Ok(());
+        };
+        let name = format!("blocks_{:06}.vtu", pvd.entries().len());
+        write_block_points(&sim.rigid, &out.join(&name))?;
+        pvd.add(sim.time, &name, 0)?;
+        block_rows(&sim.rigid, sim.time, csv)?;
+        write_breakages(&sim.rigid, &out.join("breakages.csv"))
+    }
+}
+
 fn write_spheres(sim: &Simulation, path: &Path) -> std::io::Result<()> {
     let s = &sim.dem.spheres;
+    let body: Vec<i64> = s
+        .body
+        .iter()
+        .map(|&b| if b == NO_BODY { -1 } else { b as i64 })
+        .collect();
     let id: Vec<i64> = s.id.iter().map(|&i| i as i64).collect();
     let material: Vec<i64> = s.material.iter().map(|&m| m as i64).collect();
     let diameter: Vec<f64> = s.radius.iter().map(|r| 2.0 * r).collect();
@@ -349,6 +393,10 @@ fn write_spheres(sim: &Simulation, path: &Path) -> std::io::Result<()> {
             Array {
                 name: "material",
                 values: Values::Ints(&material),
+            },
+            Array {
+                name: "body",
+                values: Values::Ints(&body),
             },
         ],
     )

@@ -2,7 +2,9 @@
 //!
 //! A DEM step (velocity Verlet, see `dem::integrate`):
 //!
-//! 1. half kick of v and ω with the forces of the last evaluation [1][2]
+//! 1. half kick of v and ω with the forces of the last evaluation [1][2]; the members of each
+//!    rigid block are then given the block's rigid velocity again ([34][35], see
+//!    `RigidBodies::project_velocities`)
 //! 2. drift of the positions
 //! 3. boundaries: wrap periodic axes; remove spheres that left the domain
 //! 4. insertion: feeders add the spheres due
@@ -130,6 +132,10 @@ impl Simulation {
     pub fn step(&mut self) -> Result<(), Instability> {
         let dt = self.dem.dt;
         half_kick(&mut self.dem.spheres, dt);
+        if !self.rigid.blocks.is_empty() {
+            let d = &mut self.dem;
+            self.rigid.project_velocities(&mut d.spheres, &d.domain);
+        }
         drift(&mut self.dem.spheres, dt);
         let t_new = self.time + dt;
         let mut changed = self.apply_boundaries();

@@ -24,7 +24,7 @@ use super::blocks::{BlockId, Blocks, RigidState};
 use super::links::{bond_force, wire_force, Anchor, Bond, BondPair, BondState, Wire};
 use super::members::Members;
 use super::pms::recover_block_motion;
-use super::rotation::advance_orientation;
+use super::rotation::{advance_orientation, angular_velocity};
 use super::templates::BlockTemplate;
 
 /// One end of a wire.
@@ -117,6 +117,14 @@ pub struct RigidBodies {
 }
 
 impl RigidBodies {
+    /// No blocks yet, with these templates (indexed by `add_block`'s `template`).
+    pub fn with_templates(templates: Vec<BlockTemplate>) -> RigidBodies {
+        RigidBodies {
+            templates,
+            ..RigidBodies::default()
+        }
+    }
+
     /// True when there are no blocks and no links: the step skips both phases.
     pub fn is_empty(&self) -> bool {
         self.blocks.is_empty() && self.wires.is_empty() && self.bonds.is_empty()
@@ -235,8 +243,8 @@ impl RigidBodies {
                 continue; // a block of this wire has left the domain
             }
             // Both ends as nearest images of each other across periodic faces.
-            anchors[1].position =
-                anchors[0].position + domain.minimum_image(anchors[1].position - anchors[0].position);
+            anchors[1].position = anchors[0].position
+                + domain.minimum_image(anchors[1].position - anchors[0].position);
             let link = &mut self.wires[w];
             let f = wire_force(&link.wire, &anchors[0], &anchors[1], &mut link.broken);
             if link.broken {
@@ -341,6 +349,46 @@ impl RigidBodies {
             self.blocks.set_state(b, state);
         }
         self.max_correction = worst;
+    }
+
+    /// Makes the members of every block move rigidly again after the first half kick: v_g and
+    /// L from the members as in [34][35], ω_g = I_g⁻¹ L [49], then v_i = v_g + ω_g × q_i and
+    /// ω_i = ω_g. Momentum and angular momentum are kept exactly.
+    ///
+    /// Why: velocity Verlet evaluates the forces with the half-kicked velocities. A member of a
+    /// block at rest carries a net force F_i ≠ 0 (only the block's sum vanishes), so its free
+    /// half kick gives it a spurious velocity Δt F_i / (2 m_i); the tangential springs [9]
+    /// integrate it at every contact, and a block that should stick on an incline creeps
+    /// (measured: 8e-5 m/s for a slab at 20° with μ = 0.5 when this projection is left out).
+    /// With it, the contact velocities are those of the rigid body and the block sticks.
+    pub fn project_velocities(&mut self, s: &mut Spheres, domain: &Domain) {
+        for b in 0..self.blocks.len() {
+            if !self.gather(b, s) {
+                continue;
+            }
+            let c = &self.scratch;
+            let x_g = self.blocks.centre[b];
+            let (mut mass, mut p) = (0.0, Vec3::ZERO);
+            for i in 0..c.slots.len() {
+                mass += c.mass[i];
+                p += c.mass[i] * c.velocity[i];
+            }
+            let v_g = p / mass;
+            let mut l = Vec3::ZERO;
+            for i in 0..c.slots.len() {
+                let q = domain.minimum_image(c.position[i] - x_g);
+                l +=
+                    c.mass[i] * q.cross(c.velocity[i] - v_g) + c.inertia[i] * c.angular_velocity[i];
+            }
+            let omega = angular_velocity(self.blocks.orientation[b], self.blocks.inertia[b], l);
+            for (i, &k) in c.slots.iter().enumerate() {
+                let q = domain.minimum_image(c.position[i] - x_g);
+                s.velocity[k] = v_g + omega.cross(q);
+                s.angular_velocity[k] = omega;
+            }
+            self.blocks.velocity[b] = v_g;
+            self.blocks.angular_velocity[b] = omega;
+        }
     }
 
     /// Extends `keep` (per sphere slot) to whole blocks: when a member of a block is dropped,

@@ -2,6 +2,7 @@
 //!
 //! Every error names the file, the line, the key and the reason. Unknown keys are errors.
 
+mod blocks;
 mod build;
 pub mod default;
 pub mod schema;
@@ -251,6 +252,7 @@ fn tagged_at(path: &[Seg]) -> Option<&'static str> {
     match path {
         [Seg::Key(k), Seg::Index(_)] if k == "wall" => Some("wall"),
         [Seg::Key(k), Seg::Index(_)] if k == "spheres" => Some("spheres"),
+        [Seg::Key(k), Seg::Index(_)] if k == "blocks" => Some("blocks"),
         [.., Seg::Key(k)] if k == "motion" => Some("motion"),
         _ => None,
     }
@@ -283,6 +285,9 @@ fn payload_error(what: &str, node: &Spanned<DeValue<'_>>) -> Option<toml::de::Er
         ("spheres", "lattice") => check::<schema::LatticeSet>(de()),
         ("spheres", "random") => check::<schema::RandomSet>(de()),
         ("spheres", "feed") => check::<schema::FeedSet>(de()),
+        ("blocks", "list") => check::<schema::ListBlocks>(de()),
+        ("blocks", "lattice") => check::<schema::LatticeBlocks>(de()),
+        ("blocks", "random") => check::<schema::RandomBlocks>(de()),
         ("motion", "fixed") => check::<schema::FixedMotion>(de()),
         ("motion", "linear") => check::<schema::LinearMotion>(de()),
         ("motion", "oscillation") => check::<schema::OscillationMotion>(de()),
