@@ -270,7 +270,8 @@ impl Blocks {
     /// Angle of the rotation from the initial orientation to the present one [rad], in [0, π].
     pub fn rotation_angle(&self, b: usize) -> f64 {
         let d = self.orientation[b] * self.initial_orientation[b].inverse();
-        2.0 * d.w.abs().min(1.0).acos()
+        // atan2 rather than acos(w): exact near zero, where acos loses half the digits.
+        2.0 * d.xyz().length().atan2(d.w.abs())
     }
 
     /// Kinetic energy Σ ½ M v² + ½ ω·I ω of all blocks [J].
