@@ -122,6 +122,7 @@ mod tests {
             wall_slots: vec![],
             feeders: vec![],
             stats: Stats::default(),
+            rigid: Default::default(),
         }
     }
 
