@@ -59,7 +59,7 @@ pub struct BondLink {
     pub bond: Bond,
     /// The two sphere ids.
     pub spheres: [SphereId; 2],
-    /// Rest length, shear spring, broken flag.
+    /// Rest length, shear force, bending and twisting moments, broken flag.
     pub state: BondState,
 }
 
@@ -235,8 +235,8 @@ impl RigidBodies {
                 continue; // a block of this wire has left the domain
             }
             // Both ends as nearest images of each other across periodic faces.
-            anchors[1].position =
-                anchors[0].position + domain.minimum_image(anchors[1].position - anchors[0].position);
+            anchors[1].position = anchors[0].position
+                + domain.minimum_image(anchors[1].position - anchors[0].position);
             let link = &mut self.wires[w];
             let f = wire_force(&link.wire, &anchors[0], &anchors[1], &mut link.broken);
             if link.broken {
