@@ -9,7 +9,9 @@ use riprap::math::{Quat, Vec3};
 use riprap::rigid::blocks::{Body, RigidState};
 use riprap::rigid::bodies::{BondLink, LinkKind, RigidBodies};
 use riprap::rigid::library;
-use riprap::rigid::links::{bond_force, wire_force, Anchor, Bond, BondPair, BondState, Wire};
+use riprap::rigid::links::{
+    bond_force, wire_force, Anchor, Bond, BondPair, BondState, Wire, SHEAR_COEFFICIENT,
+};
 use riprap::rigid::newton_euler;
 use riprap::simulation::Simulation;
 
@@ -226,7 +228,13 @@ fn a_bond_turning_rigidly_keeps_its_shear_and_turns_it_along() {
 
 /// A bond with no springs, unbreakable; tests switch on what they look at.
 fn bare() -> Bond {
-    Bond::beam(0.0, 0.0, 0.005, 0.02)
+    Bond {
+        normal_stiffness: 0.0,
+        shear_stiffness: 0.0,
+        tensile_strength: f64::INFINITY,
+        shear_strength: f64::INFINITY,
+        ..law()
+    }
 }
 
 #[test]
@@ -415,14 +423,16 @@ fn a_bond_turning_rigidly_keeps_its_moments_and_turns_them_along() {
 }
 
 #[test]
-fn beam_springs_follow_the_bond_cylinder() {
+fn beam_springs_are_those_of_the_timoshenko_element() {
     let (e, g, r, l) = (7.0e9, 2.8e9, 0.004, 0.012);
     let b = Bond::beam(e, g, r, l);
     let a = std::f64::consts::PI * r * r;
     let i = a * r * r / 4.0;
     let close = |x: f64, y: f64| (x - y).abs() <= 1e-12 * y.abs();
     assert!(close(b.normal_stiffness, e * a / l));
-    assert!(close(b.shear_stiffness, g * a / l));
+    // The series of the element's bending with its ends held and of its shear.
+    let k_s = 1.0 / (l.powi(3) / (12.0 * e * i) + l / (SHEAR_COEFFICIENT * g * a));
+    assert!(close(b.shear_stiffness, k_s));
     assert!(close(b.bending_stiffness, e * i / l));
     assert!(close(b.twisting_stiffness, g * 2.0 * i / l));
     assert_eq!(b.bending_strength, f64::INFINITY);

@@ -18,13 +18,13 @@
 //! damping coefficient [N s m⁻¹] and F_break the breaking force [N].
 //!
 //! **Bond** between spheres i and j: a parallel bond (Potyondy & Cundall 2004, "A bonded-particle
-//! model for rock", Int. J. Rock Mech. Min. Sci. 41, 1329-1364, §2.2), a short elastic cylinder
+//! model for rock", Int. J. Rock Mech. Min. Sci. 41, 1329-1364), a short elastic cylinder
 //! glued at the bond point c between the spheres, in the incremental vector form of the contact
 //! law (METHOD.md §2). With x, v, ω, r the spheres' centres, velocities, angular velocities and
 //! radii:
 //!
 //! ```text
-//! L = |x_j − x_i|,  n = (x_j − x_i)/L,  g = L − r_i − r_j          (gap > 0, overlap < 0)
+//! l = |x_j − x_i|,  n = (x_j − x_i)/l,  g = l − r_i − r_j          (gap > 0, overlap < 0)
 //! a_i = r_i + g/2,  a_j = r_j + g/2,  c = x_i + a_i n             (c midway across the gap)
 //! u = (v_j + ω_j × (−a_j n)) − (v_i + ω_i × (a_i n)),  u_n = u·n,  u_t = u − u_n n
 //! w = ω_j − ω_i,  w_n = (w·n) n,  w_t = w − w_n                   (relative rotation rate)
@@ -36,10 +36,10 @@
 //!   s   += k_s u_t Δt                                             shear force [N]
 //!   M_b += k_b w_t Δt                                             bending moment [N m]
 //!   M_τ += k_τ (w·n) Δt                                           twisting moment [N m]
-//! broken, for good, once k_n (L − L₀) > tensile strength, |s| > shear strength or
+//! broken, for good, once k_n (l − L₀) > tensile strength, |s| > shear strength or
 //! |M_b| > bending strength (spring parts only)
 //!
-//! F_n = k_n (L − L₀) + c_n u_n                                    (tension > 0)
+//! F_n = k_n (l − L₀) + c_n u_n                                    (tension > 0)
 //! F_t = s + c_s u_t,   M = M_b + M_τ n + c_b w_t + c_τ w_n
 //! F_i = F_n n + F_t,   F_j = −F_i
 //! T_i = a_i n × F_t + M,   T_j = a_j n × F_t − M
@@ -48,19 +48,27 @@
 //! with L₀ the length when bonded [m]; k_n, k_s normal and shear stiffness [N m⁻¹]; k_b, k_τ
 //! bending and twisting stiffness [N m rad⁻¹]; c_n, c_s dashpots [N s m⁻¹]; c_b, c_τ rotational
 //! dashpots [N m s rad⁻¹]; s, M_b, M_τ the bond's history, all acting on sphere i (j gets the
-//! opposite); strengths in [N] and [N m]. Signs: a relative rotation of j drags i along (+M)
-//! and holds j back (−M), so the moment restores. Because both spheres' forces act at the one
-//! point c (a_i + a_j = L), the bond's forces and torques sum to zero force and zero moment
-//! about any point: it conserves the pair's momentum and angular momentum. The spin turn is
-//! the part of a rigid rotation of the pair that the tilt projection misses (rotation about
-//! n); together they turn the history with the pair to first order in the angle per step.
+//! opposite); strengths in [N] and [N m], one per mode (simpler than Potyondy and Cundall's
+//! largest tensile and shear stresses on the cylinder's section).
 //!
-//! **A bonded chain as a beam.** `Bond::beam` sets the springs from the bond cylinder (radius
-//! R̄, length L, A = π R̄², I = π R̄⁴/4, J = 2 I): k_n = E A/L, k_s = G A/L, k_b = E I/L,
-//! k_τ = G J/L. A straight file of spheres spaced L then bends as an Euler-Bernoulli beam of
-//! rigidity E I (under an end load the joint rotations are exact, the moment being linear; the
-//! deflections are their trapezoidal sum, short by P L³/(12 E I) per bond) plus the shear
-//! deflection of a Timoshenko beam of shear rigidity G A (`tests/rigid_beam.rs`).
+//! Signs: a relative rotation of j drags i along (+M) and holds j back (−M), so the moment
+//! restores. Both spheres' forces act at the one point c (a_i + a_j = l), so the bond's forces
+//! and torques sum to zero force and zero moment about any point: it conserves the pair's
+//! momentum and angular momentum. The spin turn is the part of a rigid rotation of the pair
+//! that the tilt projection misses (rotation about n); together they turn the history with the
+//! pair to first order in the angle turned per step.
+//!
+//! **A bonded chain as a beam.** `Bond::beam` makes each bond the exact Timoshenko beam element
+//! of a cylinder of radius R̄ and length L = L₀ between the two centres (A = π R̄², I = π R̄⁴/4,
+//! J = 2 I, shear coefficient κ): k_n = E A/L, k_b = E I/L, k_τ = G J/L and
+//! 1/k_s = L³/(12 E I) + L/(κ G A). For equal spheres (a_i = a_j = L/2) the bond's response to
+//! the end displacements and rotations of the element is then that of the element: the relative
+//! rotation Δθ meets E I/L, and the turn of the chord against the mean end rotation,
+//! γ = Δw − (L/2)(θ_i + θ_j), meets the series compliance of the element's bending with its end
+//! rotations held (L³/(12 E I), which k_b does not see) and of its shear. A straight file of
+//! spheres spaced L is therefore the standard beam finite-element model, exact at the spheres
+//! under loads applied to them: a Timoshenko beam of rigidities E I and κ G A, an
+//! Euler-Bernoulli one as G → ∞ (`tests/rigid_beam.rs`).
 
 use serde::{Deserialize, Serialize};
 
@@ -158,24 +166,30 @@ pub struct Bond {
     pub bending_strength: f64,
 }
 
+/// Shear coefficient κ of the bond cylinder's solid circular section [–] (`Bond::beam`).
+pub const SHEAR_COEFFICIENT: f64 = 0.9;
+
 impl Bond {
-    /// The springs of an elastic cylinder of radius R̄ = `bond_radius` [m] and length
-    /// L = `length` [m] (the spacing of the spheres it joins), of Young's modulus
-    /// E = `young_modulus` [Pa] and shear modulus G = `shear_modulus` [Pa]:
+    /// The springs that make the bond the Timoshenko beam element of an elastic cylinder of
+    /// radius R̄ = `bond_radius` [m] and length L = `length` [m] (the spacing of the spheres it
+    /// joins), of Young's modulus E = `young_modulus` [Pa] and shear modulus
+    /// G = `shear_modulus` [Pa] (module doc):
     ///
     /// ```text
-    /// A = π R̄²,  I = π R̄⁴/4,  J = 2 I
-    /// k_n = E A/L,  k_s = G A/L,  k_b = E I/L,  k_τ = G J/L
+    /// A = π R̄²,  I = π R̄⁴/4,  J = 2 I,  κ = 0.9
+    /// k_n = E A/L,  k_b = E I/L,  k_τ = G J/L,  1/k_s = L³/(12 E I) + L/(κ G A)
     /// ```
     ///
-    /// k_s is the shear stiffness of the cylinder (Timoshenko, shear coefficient 1), not the
-    /// 12 E I/L³ of a beam element clamped at both ends: that stiffness is bending, which k_b
-    /// already carries at the joint, so it would count the bending twice. With these springs a
-    /// straight chain bends as a beam of rigidity E I, and its shear adds the Timoshenko
-    /// deflection, a fraction of order (R̄/ℓ)² of the bending one on a span ℓ (module doc).
+    /// κ = `SHEAR_COEFFICIENT` is the shear coefficient of a solid circular section (Cowper
+    /// 1966: 6(1 + ν)/(7 + 6ν), 0.86 to 0.90 for ν = 0 to 0.5). Why k_s is not
+    /// simply the cylinder's shear stiffness G A/L: the joint's bending spring sees only the
+    /// relative rotation of the spheres, and a beam segment whose chord turns against its end
+    /// rotations also bends (stiffness 12 E I/L³); leaving that out makes a chain of N bonds
+    /// too stiff by 1/(4N²) under an end load (its deflection becomes the trapezoidal sum of
+    /// the joint rotations). With both compliances in series the chain is exact at the spheres.
     ///
     /// No damping, and unbreakable (infinite strengths); see `with_damping_ratio` and
-    /// `with_strengths`.
+    /// `with_strengths`. A zero modulus gives zero springs.
     ///
     /// ```
     /// use riprap::rigid::links::Bond;
@@ -183,16 +197,22 @@ impl Bond {
     /// let i = std::f64::consts::PI * 0.005f64.powi(4) / 4.0;
     /// assert!((b.bending_stiffness - 1.0e8 * i / 0.01).abs() < 1e-12);
     /// assert!((b.twisting_stiffness - 4.0e7 * 2.0 * i / 0.01).abs() < 1e-12);
+    /// // Without shear (G → ∞), the Euler-Bernoulli element: k_s = 12 E I/L³.
+    /// let eb = Bond::beam(1.0e8, f64::INFINITY, 0.005, 0.01);
+    /// assert!((eb.shear_stiffness * 0.01f64.powi(3) / (12.0 * 1.0e8 * i) - 1.0).abs() < 1e-12);
     /// ```
     pub fn beam(young_modulus: f64, shear_modulus: f64, bond_radius: f64, length: f64) -> Bond {
+        let (e, g, l) = (young_modulus, shear_modulus, length);
         let area = std::f64::consts::PI * bond_radius * bond_radius;
         let second_moment = 0.25 * area * bond_radius * bond_radius;
         let polar_moment = 2.0 * second_moment;
+        let compliance =
+            l.powi(3) / (12.0 * e * second_moment) + l / (SHEAR_COEFFICIENT * g * area);
         Bond {
-            normal_stiffness: young_modulus * area / length,
-            shear_stiffness: shear_modulus * area / length,
-            bending_stiffness: young_modulus * second_moment / length,
-            twisting_stiffness: shear_modulus * polar_moment / length,
+            normal_stiffness: e * area / l,
+            shear_stiffness: 1.0 / compliance,
+            bending_stiffness: e * second_moment / l,
+            twisting_stiffness: g * polar_moment / l,
             normal_damping: 0.0,
             shear_damping: 0.0,
             bending_damping: 0.0,
