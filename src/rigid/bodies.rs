@@ -59,7 +59,7 @@ pub struct BondLink {
     pub bond: Bond,
     /// The two sphere ids.
     pub spheres: [SphereId; 2],
-    /// Rest length, shear spring, broken flag.
+    /// Rest length, shear force, bending and twisting moments, broken flag.
     pub state: BondState,
 }
 
