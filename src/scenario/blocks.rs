@@ -6,6 +6,7 @@ use super::schema::{
     v3, BlockSet, BlockTemplateSection, BondBetween, LatticeBlocks, ListBlocks, RandomBlocks,
     ShapeName,
 };
+use super::spheres::check_region;
 use super::{ScenarioError, Source};
 use crate::dem::domain::Domain;
 use crate::dem::insertion::{lattice, Rng};
@@ -180,6 +181,8 @@ pub(super) fn build_blocks(
         template_material.push(m);
     }
     let first_member = spheres.len();
+    // What each new sphere is, for messages.
+    let mut names_of: Vec<String> = vec![String::new(); spheres.len()];
     for (i, set) in sc.blocks.iter().enumerate() {
         let key = format!("blocks[{i}]");
         let name = match set {
@@ -230,7 +233,7 @@ pub(super) fn build_blocks(
                 }
             }
             BlockSet::Lattice(l) => {
-                check_box(src, &key, l.min, l.max, domain)?;
+                check_region(src, &key, l.min, l.max, domain)?;
                 finite(src, &format!("{key}.velocity"), &l.velocity)?;
                 let s = match l.spacing {
                     Some(s) => positive(src, &format!("{key}.spacing"), s)?,
@@ -258,7 +261,7 @@ pub(super) fn build_blocks(
                 }
             }
             BlockSet::Random(r) => {
-                check_box(src, &key, r.min, r.max, domain)?;
+                check_region(src, &key, r.min, r.max, domain)?;
                 finite(src, &format!("{key}.velocity"), &r.velocity)?;
                 let n = match (r.count, r.layer_thickness) {
                     (Some(n), None) => n,
@@ -292,8 +295,13 @@ pub(super) fn build_blocks(
                 let mut rng = Rng(r.seed);
                 let mut sites = lattice(v3(r.min), v3(r.max), s);
                 if sites.len() < n {
+                    let by = if r.count.is_some() {
+                        "count"
+                    } else {
+                        "layer_thickness"
+                    };
                     return Err(src.invalid(
-                        &key,
+                        &format!("{key}.{by}"),
                         format!(
                             "{n} blocks do not fit in the release box: it holds {} sites {:.4} m apart \
                              (1.1 × the bounding diameter); make the box taller",
@@ -318,11 +326,18 @@ pub(super) fn build_blocks(
                 }
             }
         }
+        let is_list = matches!(set, BlockSet::List(_));
         for (k, s) in placed.into_iter().enumerate() {
+            // The key path of a listed block, else the set's.
+            let at = if is_list {
+                format!("{key}.blocks[{k}]")
+            } else {
+                key.clone()
+            };
             let members = rigid.templates[t].member_positions(s.centre, s.orientation);
             if let Some(x) = members.iter().find(|x| !domain.contains(**x)) {
                 return Err(src.invalid(
-                    &key,
+                    &at,
                     format!(
                         "block {k} of this set (centre ({:.4}, {:.4}, {:.4})) has a member sphere \
                          outside the domain, at ({:.4}, {:.4}, {:.4})",
@@ -331,33 +346,14 @@ pub(super) fn build_blocks(
                 ));
             }
             rigid.add_block(spheres, t, material, density, s);
-            origin.resize(spheres.len(), format!("{key} (block {k})"));
+            origin.resize(spheres.len(), at);
+            names_of.resize(spheres.len(), format!("block {k} of {key}"));
         }
     }
-    check_block_overlaps(src, spheres, first_member, domain, origin)?;
+    check_block_overlaps(src, spheres, first_member, domain, origin, &names_of)?;
     build_wires(src, &mut rigid, domain)?;
     build_bonds(src, &mut rigid, spheres, domain)?;
     Ok(rigid)
-}
-
-fn check_box(
-    src: &Source,
-    key: &str,
-    min: [f64; 3],
-    max: [f64; 3],
-    domain: &Domain,
-) -> Result<(), ScenarioError> {
-    finite(src, &format!("{key}.min"), &min)?;
-    finite(src, &format!("{key}.max"), &max)?;
-    for k in 0..3 {
-        if !(min[k] < max[k]) {
-            return Err(src.invalid(&format!("{key}.max"), "must exceed min along every axis"));
-        }
-        if min[k] < domain.min[k] || max[k] > domain.max[k] {
-            return Err(src.invalid(&format!("{key}.min"), "the box reaches outside the domain"));
-        }
-    }
-    Ok(())
 }
 
 /// Refuses block members that overlap a sphere or a member of another block.
@@ -367,7 +363,15 @@ fn check_block_overlaps(
     first: usize,
     domain: &Domain,
     origin: &[String],
+    names_of: &[String],
 ) -> Result<(), ScenarioError> {
+    let what = |k: usize| {
+        if names_of[k].is_empty() {
+            format!("sphere {} ({})", s.id[k], origin[k])
+        } else {
+            names_of[k].clone()
+        }
+    };
     let mut nl = NeighborList::new(0.0);
     nl.build(s, domain);
     for &(i, j) in &nl.pairs {
@@ -381,9 +385,11 @@ fn check_block_overlaps(
             return Err(src.invalid(
                 &origin[j],
                 format!(
-                    "blocks start overlapping: a sphere of {} overlaps a sphere of {} by {:.3e} m; \
+                    "blocks start overlapping: a sphere of {} overlaps {} by {:.3e} m; \
                      space them further apart",
-                    origin[j], origin[i], overlap
+                    what(j),
+                    what(i),
+                    overlap
                 ),
             ));
         }
@@ -466,10 +472,19 @@ fn build_bonds(
         let bond = Bond {
             normal_stiffness: positive(src, &key("normal_stiffness"), b.normal_stiffness)?,
             shear_stiffness: positive(src, &key("shear_stiffness"), b.shear_stiffness)?,
+            bending_stiffness: non_negative(src, &key("bending_stiffness"), b.bending_stiffness)?,
+            twisting_stiffness: non_negative(
+                src,
+                &key("twisting_stiffness"),
+                b.twisting_stiffness,
+            )?,
             normal_damping: non_negative(src, &key("normal_damping"), b.normal_damping)?,
             shear_damping: non_negative(src, &key("shear_damping"), b.shear_damping)?,
+            bending_damping: non_negative(src, &key("bending_damping"), b.bending_damping)?,
+            twisting_damping: non_negative(src, &key("twisting_damping"), b.twisting_damping)?,
             tensile_strength: strength("tensile_strength", b.tensile_strength)?,
             shear_strength: strength("shear_strength", b.shear_strength)?,
+            bending_strength: strength("bending_strength", b.bending_strength)?,
         };
         let mut pairs: Vec<(usize, usize)> = Vec::new();
         match (b.between, &b.spheres) {

@@ -411,10 +411,32 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             pairings.push((name, contact_scales(law, ra, mass_a, v_ref, mass_a * g)));
         }
     }
+    // Bonds are springs too: T = 2π √(m*/k) for the normal and shear springs, 2π √(I*/k) for
+    // bending and twisting, with m*, I* of the two bonded spheres.
+    let mut bond_period = f64::INFINITY;
+    for b in &rigid.bonds {
+        let (Some(i), Some(j)) = (spheres.slot_of(b.spheres[0]), spheres.slot_of(b.spheres[1]))
+        else {
+            continue;
+        };
+        let m = harmonic(spheres.mass[i], spheres.mass[j]);
+        let inertia = harmonic(spheres.inertia[i], spheres.inertia[j]);
+        let l = &b.bond;
+        for (inert, k) in [
+            (m, l.normal_stiffness),
+            (m, l.shear_stiffness),
+            (inertia, l.bending_stiffness),
+            (inertia, l.twisting_stiffness),
+        ] {
+            if k > 0.0 {
+                bond_period = bond_period.min(std::f64::consts::TAU * (inert / k).sqrt());
+            }
+        }
+    }
     let min_period = pairings
         .iter()
         .map(|p| p.1.period)
-        .fold(f64::INFINITY, f64::min);
+        .fold(bond_period, f64::min);
     let max_dt = min_period / MIN_STEPS_PER_PERIOD;
     let dt = match sc.run.time_step {
         Some(dt) => {
@@ -512,7 +534,6 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             sc.run.max_overlap_ratio.unwrap_or(0.5),
         )?,
     };
-    let mut spheres = spheres;
     spheres.reserve(n_fed);
     let dem = Dem {
         spheres,
@@ -551,6 +572,11 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         simulation,
         derived,
     })
+}
+
+/// a b / (a + b): the reduced mass or inertia of two bodies.
+fn harmonic(a: f64, b: f64) -> f64 {
+    a * b / (a + b)
 }
 
 /// The restitution of a head-on impact in continuous time: what the dashpots were chosen for.

@@ -715,14 +715,28 @@ pub struct BondSection {
     pub normal_stiffness: f64,
     /// Shear stiffness [N m⁻¹].
     pub shear_stiffness: f64,
+    /// Bending stiffness [N m rad⁻¹] (default 0: the bond hinges).
+    #[serde(default)]
+    pub bending_stiffness: f64,
+    /// Twisting stiffness [N m rad⁻¹] (default 0).
+    #[serde(default)]
+    pub twisting_stiffness: f64,
     /// Normal dashpot [N s m⁻¹] (default 0).
     #[serde(default)]
     pub normal_damping: f64,
     /// Shear dashpot [N s m⁻¹] (default 0).
     #[serde(default)]
     pub shear_damping: f64,
+    /// Bending dashpot [N m s rad⁻¹] (default 0).
+    #[serde(default)]
+    pub bending_damping: f64,
+    /// Twisting dashpot [N m s rad⁻¹] (default 0).
+    #[serde(default)]
+    pub twisting_damping: f64,
     /// Tensile strength [N] (default: unbreakable).
     pub tensile_strength: Option<f64>,
     /// Shear strength [N] (default: unbreakable).
     pub shear_strength: Option<f64>,
+    /// Bending strength [N m] (default: unbreakable).
+    pub bending_strength: Option<f64>,
 }

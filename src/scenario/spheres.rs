@@ -111,7 +111,7 @@ fn size_classes(
 }
 
 /// Refuses a region [min, max] of a sphere set that is empty or reaches outside the domain.
-fn check_region(
+pub(super) fn check_region(
     src: &Source,
     key: &str,
     min: [f64; 3],
