@@ -13,9 +13,11 @@ use crate::dem::insertion::Feeder;
 use crate::dem::spheres::Spheres;
 use crate::dem::walls::WallSlots;
 use crate::dem::Stats;
+use crate::fluid::FluidState;
 
 const MAGIC: &[u8; 8] = b"RIPRAPCK";
-const VERSION: u32 = 1;
+/// 2: the fluid state was added.
+const VERSION: u32 = 2;
 
 /// The saved state.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -36,6 +38,8 @@ pub struct Checkpoint {
     pub feeders: Vec<Feeder>,
     /// Counters.
     pub stats: Stats,
+    /// The flow, Adams-Bashforth history included (`Fluid::state`), if the run has one.
+    pub fluid: Option<FluidState>,
 }
 
 /// What can go wrong reading a checkpoint.
@@ -119,6 +123,7 @@ mod tests {
             wall_slots: vec![],
             feeders: vec![],
             stats: Stats::default(),
+            fluid: None,
         }
     }
 

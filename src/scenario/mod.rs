@@ -4,6 +4,7 @@
 
 mod build;
 pub mod default;
+pub mod fluid;
 pub mod schema;
 mod spheres;
 
@@ -14,6 +15,7 @@ use toml::de::{DeTable, DeValue, ValueDeserializer};
 use toml::Spanned;
 
 pub use build::{build, Built, Derived};
+pub use fluid::FluidDerived;
 pub use schema::Scenario;
 
 /// What is wrong with a scenario.
