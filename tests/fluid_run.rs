@@ -173,28 +173,39 @@ fn rows_after(path: &Path, t: f64) -> Vec<Vec<u64>> {
         .collect()
 }
 
+/// Runs `src` for 2 × `half` steps straight into one folder, and for `half` steps, then a
+/// restart from the checkpoint and `half` more, into another: (interrupted, straight) final
+/// checkpoints, the restart time, and the two folders.
+fn interrupted_and_straight(
+    src: &Source,
+    half: u64,
+    name: &str,
+) -> (Checkpoint, Checkpoint, f64, PathBuf, PathBuf) {
+    let (a, b) = (
+        temp_dir(&format!("{name}_a")),
+        temp_dir(&format!("{name}_b")),
+    );
+    run(src, &a, None, half);
+    let t_restart = Checkpoint::read(&a.join("checkpoint.ck")).unwrap().time;
+    run(src, &a, Some(a.join("checkpoint.ck")), half);
+    run(src, &b, None, 2 * half);
+    let ca = Checkpoint::read(&a.join("checkpoint.ck")).unwrap();
+    let cb = Checkpoint::read(&b.join("checkpoint.ck")).unwrap();
+    (ca, cb, t_restart, a, b)
+}
+
 #[test]
 fn a_restarted_flow_continues_bit_for_bit() {
     // The flow example: Smagorinsky with van Driest damping, a seeded perturbation and the
-    // oscillatory drive; 2 × HALF steps straight, or HALF, a checkpoint, a restart and HALF.
-    const HALF: u64 = 15;
+    // oscillatory drive; 2 × 15 steps straight, or 15, a checkpoint, a restart and 15.
     let src = Source::from_file(&examples().join("oscillatory_flow.toml")).unwrap();
-    let (a, b) = (temp_dir("restart_a"), temp_dir("restart_b"));
-    run(&src, &a, None, HALF);
-    let t_restart = Checkpoint::read(&a.join("checkpoint.ck")).unwrap().time;
-    run(&src, &a, Some(a.join("checkpoint.ck")), HALF);
-    run(&src, &b, None, 2 * HALF);
-
-    let (ca, cb) = (
-        Checkpoint::read(&a.join("checkpoint.ck")).unwrap(),
-        Checkpoint::read(&b.join("checkpoint.ck")).unwrap(),
-    );
+    let (ca, cb, t_restart, a, b) = interrupted_and_straight(&src, 15, "flow");
     let (fa, fb) = (ca.fluid.unwrap(), cb.fluid.unwrap());
     println!(
         "restart at t = {t_restart:.5} s; after {} fluid steps t = {:.5} s",
         fa.steps, fa.time
     );
-    assert_eq!((ca.step, fa.steps), (2 * HALF, 2 * HALF));
+    assert_eq!((ca.step, fa.steps), (30, 30));
     assert_eq!(ca.time.to_bits(), fa.time.to_bits());
     assert!(
         fa.eddy_viscosity.iter().any(|&m| m > 0.0),
@@ -210,6 +221,47 @@ fn a_restarted_flow_continues_bit_for_bit() {
     assert_eq!(ra, rb, "series.csv after the restart differs");
     let _ = std::fs::remove_dir_all(&a);
     let _ = std::fs::remove_dir_all(&b);
+}
+
+#[test]
+fn a_restarted_flow_with_spheres_continues_bit_for_bit() {
+    // ~140 DEM steps inside each fluid step: the restart falls between fluid steps.
+    let text = format!("{CHANNEL}{FALLING_ROCK}");
+    let src = Source::from_str(&text, "case.toml", PathBuf::from(".")).unwrap();
+    let (ca, cb, _, a, b) = interrupted_and_straight(&src, 4, "spheres");
+    assert!(same_bits(
+        ca.fluid.as_ref().unwrap(),
+        cb.fluid.as_ref().unwrap()
+    ));
+    let (sa, sb) = (&ca.spheres, &cb.spheres);
+    assert_eq!(ca.time.to_bits(), cb.time.to_bits());
+    assert_eq!(sa.position[0].z.to_bits(), sb.position[0].z.to_bits());
+    assert_eq!(sa.velocity[0].z.to_bits(), sb.velocity[0].z.to_bits());
+    assert!(
+        sa.velocity[0].z < -0.05,
+        "the rock fell: {}",
+        sa.velocity[0].z
+    );
+    let _ = std::fs::remove_dir_all(&a);
+    let _ = std::fs::remove_dir_all(&b);
+}
+
+#[test]
+fn a_checkpoint_of_another_grid_is_refused() {
+    let dir = temp_dir("mismatch");
+    let src = Source::from_str(CHANNEL, "case.toml", PathBuf::from(".")).unwrap();
+    run(&src, &dir, None, 2);
+    let finer = CHANNEL.replace("cell_size = 0.0125", "cell_size = 0.00625");
+    let src = Source::from_str(&finer, "case.toml", PathBuf::from(".")).unwrap();
+    let opts = RunOptions {
+        output_dir: Some(dir.clone()),
+        restart: Some(dir.join("checkpoint.ck")),
+        progress: false,
+        max_steps: Some(1),
+    };
+    let e = format!("{:#}", execute(&src, &opts).unwrap_err());
+    assert!(e.contains("does not fit the scenario's grid"), "{e}");
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
