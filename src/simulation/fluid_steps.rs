@@ -50,11 +50,11 @@ impl Simulation {
     /// falls below the DEM step (the fluid step cannot be shorter than one DEM step).
     pub fn step_towards(&mut self, t_end: f64) -> Result<(), Instability> {
         self.step += 1;
-        let dem_active = self.dem_active();
-        let dt = self.dem.dt;
         if self.fluid.is_none() {
             return self.dem_step();
         }
+        let dem_active = self.dem_active();
+        let dt = self.dem.dt;
         let fluid = self.fluid.as_mut().expect("checked above");
         let stable = fluid.stable_time_step();
         if !(stable > 0.0 && stable.is_finite()) {
