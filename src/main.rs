@@ -146,12 +146,17 @@ fn main() -> ExitCode {
                 max_steps: steps,
             };
             let s = execute(&src, &opts)?;
+            let (items, what) = if s.fluid_cells > 0 && s.spheres == 0 {
+                (s.fluid_cells, "cell")
+            } else {
+                (s.spheres, "sphere")
+            };
             eprintln!(
-                "done: t = {:.4} s, {} steps in {:.1} s ({:.3e} sphere-steps/s), {} spheres; results in {}",
+                "done: t = {:.4} s, {} steps in {:.1} s ({:.3e} {what}-steps/s), {} spheres; results in {}",
                 s.time,
                 s.steps,
                 s.wall_seconds,
-                s.steps as f64 * s.spheres as f64 / s.wall_seconds.max(1e-9),
+                s.steps as f64 * items as f64 / s.wall_seconds.max(1e-9),
                 s.spheres,
                 s.output_dir.display()
             );
@@ -162,7 +167,11 @@ fn main() -> ExitCode {
                     s.spheres_lost
                 );
             }
-            eprintln!("view: paraview {}/spheres.pvd", s.output_dir.display());
+            for file in ["spheres.pvd", "flow.pvd"] {
+                if s.output_dir.join(file).exists() {
+                    eprintln!("view: paraview {}/{file}", s.output_dir.display());
+                }
+            }
             Ok::<(), anyhow::Error>(())
         })(),
         Command::Bench {

@@ -16,12 +16,23 @@
 //!    rigid shape [34]-[36], [41]-[49]
 //! 9. stability checks: NaN, absurd speed, overlap beyond bound
 //!
+//! With a fluid ([`Simulation::with_fluid`]) one step of the simulation is one fluid step
+//! Δt_f with the DEM steps inside it (uncoupled for now; the coupling of [59]-[63] comes
+//! next): Δt_f is the adaptive step of `fluid::timestep` (CFL and viscous limits, capped by
+//! the user bound), rounded *down* to a whole number k ≥ 1 of DEM steps, Δt_f = k Δt; the fluid
+//! advances by Δt_f, then the DEM takes its k steps. Without spheres (none present, no feeder
+//! still to insert) the fluid step is the adaptive step itself, shortened to land on the end
+//! time. See [`Simulation::step_towards`] (in `simulation/fluid_steps.rs`).
+//!
 //! ARCHITECTURE.md repeats this order; keep the two in step.
+
+mod fluid_steps;
 
 use crate::dem::forces::{compute_forces, MeshCandidates};
 use crate::dem::insertion::Feeder;
 use crate::dem::integrate::{drift, half_kick};
 use crate::dem::{Dem, WALL_SLOTS_EMPTY};
+use crate::fluid::Fluid;
 use crate::math::{is_finite, Vec3};
 use crate::rigid::bodies::RigidBodies;
 
@@ -50,10 +61,12 @@ pub struct Simulation {
     pub rigid: RigidBodies,
     /// Simulated time [s].
     pub time: f64,
-    /// Steps taken.
+    /// Steps taken: DEM steps without a fluid, fluid steps with one.
     pub step: u64,
     /// Shortest contact-spring period T of [22] over the pairings present [s] (for diagnoses).
     pub min_period: f64,
+    /// The water, if the scenario has one (METHOD.md §4).
+    pub fluid: Option<Fluid>,
 }
 
 impl Simulation {
@@ -84,6 +97,7 @@ impl Simulation {
             time: 0.0,
             step: 0,
             min_period,
+            fluid: None,
         };
         sim.refresh_lists();
         sim.evaluate_forces();
@@ -107,6 +121,7 @@ impl Simulation {
             time,
             step,
             min_period,
+            fluid: None,
         };
         sim.refresh_lists();
         sim
@@ -128,8 +143,14 @@ impl Simulation {
         d.mesh_candidates = MeshCandidates::build(d, self.time);
     }
 
-    /// Advances one time step Δt.
+    /// Advances one time step: a DEM step Δt without a fluid; with a fluid, one fluid step with
+    /// the DEM steps inside it (see the module docs).
     pub fn step(&mut self) -> Result<(), Instability> {
+        self.step_towards(f64::INFINITY)
+    }
+
+    /// One DEM step Δt, phases 1-8 above (the caller counts `self.step`).
+    fn dem_step(&mut self) -> Result<(), Instability> {
         let dt = self.dem.dt;
         half_kick(&mut self.dem.spheres, dt);
         if !self.rigid.blocks.is_empty() {
@@ -144,7 +165,6 @@ impl Simulation {
             changed |= added > 0;
         }
         self.time = t_new;
-        self.step += 1;
         if changed
             || self
                 .dem

@@ -70,7 +70,7 @@ impl Fluid {
                 &state.velocity[1][..],
                 &state.velocity[2][..],
             ];
-            eddy_viscosity(&grid, &bcs, model, mu, u, rho, &mut self.eddy_viscosity);
+            eddy_viscosity(&grid, &bcs, model, mu, u, rho, &mut state.eddy_viscosity);
         }
 
         // Hⁿ: advection and viscous stress divergence.
@@ -80,7 +80,7 @@ impl Fluid {
                 &state.velocity[1][..],
                 &state.velocity[2][..],
             ];
-            let mu_t = &self.eddy_viscosity[..];
+            let mu_t = &state.eddy_viscosity[..];
             let sgs = par.smagorinsky.is_some();
             for (a, h) in self.tendency.iter_mut().enumerate() {
                 update_region(&grid, &self.regions[a], h, |c, _| {

@@ -13,10 +13,12 @@ use crate::dem::insertion::Feeder;
 use crate::dem::spheres::Spheres;
 use crate::dem::walls::WallSlots;
 use crate::dem::Stats;
+use crate::fluid::FluidState;
 use crate::rigid::bodies::RigidBodies;
 
 const MAGIC: &[u8; 8] = b"RIPRAPCK";
-const VERSION: u32 = 2;
+/// 2: blocks and links were added; 3: the fluid state.
+const VERSION: u32 = 3;
 
 /// The saved state.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -39,6 +41,8 @@ pub struct Checkpoint {
     pub stats: Stats,
     /// Blocks, wires and bonds (templates come from the scenario).
     pub rigid: RigidBodies,
+    /// The flow, Adams-Bashforth history included (`Fluid::state`), if the run has one.
+    pub fluid: Option<FluidState>,
 }
 
 /// What can go wrong reading a checkpoint.
@@ -123,6 +127,7 @@ mod tests {
             feeders: vec![],
             stats: Stats::default(),
             rigid: Default::default(),
+            fluid: None,
         }
     }
 

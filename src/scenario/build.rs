@@ -4,9 +4,10 @@
 use std::fmt::Write as _;
 
 use super::blocks::build_blocks;
+use super::fluid::build_fluid;
 use super::schema::{v3, ContactSection, DampingName, ModelName, WallSection};
 use super::spheres::{build_spheres, check_walls};
-use super::{ScenarioError, Source};
+use super::{FluidDerived, ScenarioError, Source};
 use crate::dem::contacts::PairContacts;
 use crate::dem::domain::Domain;
 use crate::dem::forces::MeshCandidates;
@@ -45,11 +46,26 @@ pub struct Derived {
     pub at_step: Vec<(f64, u64)>,
     /// One line per block template (count, size, mass), and the links.
     pub block_lines: Vec<String>,
+    /// The flow, if the scenario has one.
+    pub fluid: Option<FluidDerived>,
 }
 
 impl Derived {
-    /// The report printed by `riprap check`.
+    /// The report printed by `riprap check`: the spheres' part (unless there are none and a
+    /// fluid), then the fluid's.
     pub fn report(&self) -> String {
+        let mut s = match &self.fluid {
+            Some(_) if self.spheres == (0, 0) => "spheres: none (a flow-only scenario)\n".into(),
+            _ => self.sphere_report(),
+        };
+        if let Some(f) = &self.fluid {
+            s.push_str(&f.report());
+        }
+        s
+    }
+
+    /// The spheres' part of the report.
+    fn sphere_report(&self) -> String {
         let mut s = String::new();
         let _ = writeln!(
             s,
@@ -232,7 +248,7 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     let gravity = v3(gravity);
 
     // Materials.
-    if sc.materials.is_empty() {
+    if sc.materials.is_empty() && sc.fluid.is_none() {
         return Err(src.invalid("material", "at least one [[material]] is needed"));
     }
     let mut materials = Vec::new();
@@ -534,6 +550,8 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             sc.run.max_overlap_ratio.unwrap_or(0.5),
         )?,
     };
+    let radii: Vec<f64> = kinds.iter().map(|k| k.1).collect();
+    let fluid = build_fluid(src, &domain, gravity, dt, &radii)?;
     spheres.reserve(n_fed);
     let dem = Dem {
         spheres,
@@ -566,8 +584,12 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         memory: n_total as f64 * 1100.0,
         at_step,
         block_lines,
+        fluid: fluid.as_ref().map(|f| f.1.clone()),
     };
-    let simulation = Simulation::with_bodies(dem, feeders, rigid, min_period);
+    let mut simulation = Simulation::with_bodies(dem, feeders, rigid, min_period);
+    if let Some((f, _)) = fluid {
+        simulation = simulation.with_fluid(f);
+    }
     Ok(Built {
         simulation,
         derived,

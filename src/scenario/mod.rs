@@ -5,6 +5,7 @@
 mod blocks;
 mod build;
 pub mod default;
+pub mod fluid;
 pub mod schema;
 mod spheres;
 
@@ -15,6 +16,7 @@ use toml::de::{DeTable, DeValue, ValueDeserializer};
 use toml::Spanned;
 
 pub use build::{build, Built, Derived};
+pub use fluid::FluidDerived;
 pub use schema::Scenario;
 
 /// What is wrong with a scenario.

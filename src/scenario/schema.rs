@@ -41,6 +41,8 @@ pub struct Scenario {
     /// Output.
     #[serde(default)]
     pub output: OutputSection,
+    /// The water (`scenario::fluid`).
+    pub fluid: Option<super::fluid::FluidSection>,
 }
 
 /// `[run]`
