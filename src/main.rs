@@ -71,6 +71,9 @@ enum BenchCase {
         #[arg(long, default_value_t = 10_000)]
         steps: u64,
     },
+    /// The flow solver: time step and pressure solve per grid size and thread count, or
+    /// (with --cavity) the lid-driven cube that bench/openfoam/compare_cavity.sh compares.
+    Fluid(riprap::bench::fluid::FluidBenchArgs),
 }
 
 fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
@@ -177,6 +180,9 @@ fn main() -> ExitCode {
         Command::Bench {
             case: BenchCase::B1 { n, steps },
         } => bench_b1(n, steps),
+        Command::Bench {
+            case: BenchCase::Fluid(args),
+        } => riprap::bench::fluid::run_cli(&args),
         Command::Validate { quick, output } => (|| {
             let (_, ok) = riprap::validate::run_validation(&output, quick)?;
             eprintln!("report: {}", output.join("report.md").display());

@@ -48,6 +48,7 @@ pub mod operators;
 pub mod pressure;
 pub mod sgs;
 pub mod step;
+pub mod tendency;
 pub mod timestep;
 pub mod validation;
 
