@@ -19,6 +19,11 @@
 //! column: τ_w = μ |u_t − U_w| / (Δ_n / 2), with u_t the tangential velocity at that cell's
 //! centre, U_w the wall velocity, Δ_n the spacing normal to the wall; u_* = sqrt(τ_w / ρ̄) with
 //! ρ̄ of that wall cell. Without no-slip walls, or with damping off, F_w = 1.
+//!
+//! [`strain_rate_magnitude`] is the formula for one cell; [`eddy_viscosity`] evaluates whole
+//! x-rows ([`strain_rate_row`]; the damping in blocks along rows whose nearest wall is the same
+//! for every cell), with the same expressions in the same order: the unit tests check that both
+//! give the same bits.
 
 use super::boundary::{fill_scalar_ghosts, Boundaries, Boundary, HIGH, LOW};
 use super::grid::{for_each_chunk, shifted, StaggeredGrid, Stencil};
