@@ -10,6 +10,7 @@
 //! * [`math`], [`units`]: vector types and named SI constants
 //! * [`geometry`]: where a sphere touches a plane, box, cylinder or triangle mesh
 //! * [`dem`]: spheres, materials, contact laws, neighbour search, walls, integration
+//! * [`fluid`]: the LES of the water on a staggered grid (METHOD.md §4)
 //! * [`simulation`]: the order of the phases of a time step
 //! * [`scenario`]: TOML scenario files and the checks and derived quantities of `riprap check`
 //! * [`io`]: VTK and `.pvd` output, CSV time series, plots, checkpoints

@@ -83,6 +83,9 @@ enum BenchCase {
         #[arg(long, default_value_t = 100)]
         every: u64,
     },
+    /// The flow solver: time step and pressure solve per grid size and thread count, or
+    /// (with --cavity) the lid-driven cube that bench/openfoam/compare_cavity.sh compares.
+    Fluid(riprap::bench::fluid::FluidBenchArgs),
 }
 
 fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
@@ -198,12 +201,17 @@ fn main() -> ExitCode {
                 max_steps: steps,
             };
             let s = execute(&src, &opts)?;
+            let (items, what) = if s.fluid_cells > 0 && s.spheres == 0 {
+                (s.fluid_cells, "cell")
+            } else {
+                (s.spheres, "sphere")
+            };
             eprintln!(
-                "done: t = {:.4} s, {} steps in {:.1} s ({:.3e} sphere-steps/s), {} spheres; results in {}",
+                "done: t = {:.4} s, {} steps in {:.1} s ({:.3e} {what}-steps/s), {} spheres; results in {}",
                 s.time,
                 s.steps,
                 s.wall_seconds,
-                s.steps as f64 * s.spheres as f64 / s.wall_seconds.max(1e-9),
+                s.steps as f64 * items as f64 / s.wall_seconds.max(1e-9),
                 s.spheres,
                 s.output_dir.display()
             );
@@ -214,7 +222,11 @@ fn main() -> ExitCode {
                     s.spheres_lost
                 );
             }
-            eprintln!("view: paraview {}/spheres.pvd", s.output_dir.display());
+            for file in ["spheres.pvd", "flow.pvd"] {
+                if s.output_dir.join(file).exists() {
+                    eprintln!("view: paraview {}/{file}", s.output_dir.display());
+                }
+            }
             Ok::<(), anyhow::Error>(())
         })(),
         Command::Bench {
@@ -223,6 +235,9 @@ fn main() -> ExitCode {
         Command::Bench {
             case: BenchCase::B2 { data, steps, every },
         } => bench_b2(&data, steps, every),
+        Command::Bench {
+            case: BenchCase::Fluid(args),
+        } => riprap::bench::fluid::run_cli(&args),
         Command::Validate { quick, output } => (|| {
             let (_, ok) = riprap::validate::run_validation(&output, quick)?;
             eprintln!("report: {}", output.join("report.md").display());

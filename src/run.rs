@@ -4,12 +4,21 @@
 //! `series.csv` (energies, contacts), `probe_<id>.csv` (full state of selected spheres at every
 //! step), `energy.png`, and `checkpoint.ck`. A run that fails keeps all of these as they were
 //! at the last write, and adds `spheres_failed.vtu` with the state that failed.
+//!
+//! With a fluid (`[fluid]`): `flow.pvd` + `flow_NNNNNN.vti`, `sample_<name>.csv` and fluid
+//! columns in `series.csv` ([`flow`]); every output then follows simulated time (the steps
+//! vary), see [`schedule`]. A flow-only scenario writes no sphere or wall files.
+
+pub mod flow;
+pub mod schedule;
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{bail, Context};
 
+use crate::dem::spheres::NO_BODY;
+use crate::io::blocks::{block_rows, write_block_points, write_breakages, BLOCK_COLUMNS};
 use crate::io::checkpoint::Checkpoint;
 use crate::io::csv::{read_csv, CsvSeries};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
@@ -17,6 +26,8 @@ use crate::io::pvd::PvdSeries;
 use crate::io::vtk::{write_points, write_surface, Array, Values};
 use crate::scenario::{build, Source};
 use crate::simulation::Simulation;
+use flow::FlowOutput;
+use schedule::Schedule;
 
 /// Options of a run.
 #[derive(Clone, Debug, Default)]
@@ -47,6 +58,8 @@ pub struct RunSummary {
     pub spheres: usize,
     /// Spheres removed because they left the domain (during the whole run).
     pub spheres_lost: usize,
+    /// Cells of the fluid grid (0 without a fluid).
+    pub fluid_cells: usize,
 }
 
 /// Columns of `series.csv`.
@@ -69,10 +82,6 @@ const PROBE_COLUMNS: [&str; 17] = [
     "ty", "tz",
 ];
 
-fn every(interval: f64, dt: f64) -> u64 {
-    ((interval / dt).round() as u64).max(1)
-}
-
 /// Runs a scenario to its end time (or from a checkpoint), writing the outputs.
 pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     let sc = &src.scenario;
@@ -89,9 +98,19 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     let mut sim = built.simulation;
     let end = sc.run.end_time;
     let dt = sim.dem.dt;
-    let vtk_every = every(sc.output.vtk_interval.unwrap_or(end / 50.0), dt);
-    let csv_every = every(sc.output.series_interval.unwrap_or(end / 500.0), dt);
-    let ck_every = every(sc.output.checkpoint_interval.unwrap_or(end / 4.0), dt);
+    let by_time = sim.fluid.is_some();
+    let particles = !by_time || built.derived.spheres != (0, 0);
+    let mut vtk_every = Schedule::new(sc.output.vtk_interval.unwrap_or(end / 50.0), dt, by_time);
+    let mut csv_every = Schedule::new(
+        sc.output.series_interval.unwrap_or(end / 500.0),
+        dt,
+        by_time,
+    );
+    let mut ck_every = Schedule::new(
+        sc.output.checkpoint_interval.unwrap_or(end / 4.0),
+        dt,
+        by_time,
+    );
 
     let resuming = opts.restart.is_some();
     if let Some(path) = &opts.restart {
@@ -104,16 +123,24 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
                 dt
             );
         }
+        flow::check_restart(&sim, &ck, path)?;
         sim = restore(sim, ck);
     }
     let t0 = sim.time;
+    for s in [&mut vtk_every, &mut csv_every, &mut ck_every] {
+        s.start(t0, sim.step);
+    }
     let mut spheres_pvd = open_pvd(&out.join("spheres.pvd"), resuming, t0)?;
     let mut walls_pvd = open_pvd(&out.join("walls.pvd"), resuming, t0)?;
+    let columns = flow::series_columns(&sim);
     let mut series = if resuming {
-        CsvSeries::resume(&out.join("series.csv"), &SERIES_COLUMNS, t0)?
+        CsvSeries::resume(&out.join("series.csv"), &columns, t0)?
     } else {
-        CsvSeries::create(&out.join("series.csv"), &SERIES_COLUMNS)?
+        CsvSeries::create(&out.join("series.csv"), &columns)?
     };
+    let mut block_out = BlockOutput::open(&sim, &out, resuming, t0)?;
+    let samples = sc.fluid.as_ref().map_or(&[][..], |f| &f.samples[..]);
+    let mut flow_out = FlowOutput::open(&sim, samples, &out, resuming)?;
     let mut probes = Vec::new();
     for &id in &sc.output.probes {
         let p = out.join(format!("probe_{id}.csv"));
@@ -127,48 +154,76 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         ));
     }
     if !resuming {
-        snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+        if particles {
+            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+            block_out.write(&sim, &out)?;
+        }
         series.row(&series_row(&sim))?;
         record_probes(&sim, &mut probes)?;
     }
 
-    let total_steps = ((end - t0) / dt).round().max(0.0) as u64;
+    // With a fluid the steps vary: run to the end time, the bar counts per mille of it.
+    let total_steps = if by_time {
+        u64::MAX
+    } else {
+        ((end - t0) / dt).round().max(0.0) as u64
+    };
     let total_steps = opts.max_steps.map_or(total_steps, |m| m.min(total_steps));
-    let bar = opts.progress.then(|| progress_bar(total_steps));
+    let bar = opts
+        .progress
+        .then(|| progress_bar(if by_time { 1000 } else { total_steps }, by_time));
     let started = Instant::now();
     let mut last_line = Instant::now();
-    for k in 0..total_steps {
-        if let Err(e) = sim.step() {
+    let mut k = 0;
+    while k < total_steps && !(by_time && sim.reached(end)) {
+        if let Err(e) = sim.step_towards(end) {
             let _ = write_spheres(&sim, &out.join("spheres_failed.vtu"));
+            let _ = block_out.write(&sim, &out);
+            flow::write_failed(&sim, &out);
             if let Some(b) = &bar {
                 b.abandon();
             }
             bail!(
-                "{e}\nThe output written so far is in {} (last checkpoint: {}); the failing state is in spheres_failed.vtu.",
+                "{e}\nThe output written so far is in {} (last checkpoint: {}); the failing state is in spheres_failed.vtu{}.",
                 out.display(),
-                if out.join("checkpoint.ck").exists() { "checkpoint.ck" } else { "none yet" }
+                if out.join("checkpoint.ck").exists() { "checkpoint.ck" } else { "none yet" },
+                if by_time { " and flow_failed.vti" } else { "" }
             );
         }
+        k += 1;
         record_probes(&sim, &mut probes)?;
-        let n = sim.step;
-        if n % csv_every == 0 {
+        let (n, t) = (sim.step, sim.time);
+        if csv_every.due(t, n) {
             series.row(&series_row(&sim))?;
         }
-        if n % vtk_every == 0 {
+        let frame = vtk_every.due(t, n);
+        if frame && particles {
             snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+            block_out.write(&sim, &out)?;
         }
-        if n % ck_every == 0 {
+        if let Some(f) = &mut flow_out {
+            f.after_step(&sim, frame)?;
+        }
+        if ck_every.due(t, n) {
             save(&sim, &out.join("checkpoint.ck"))?;
         }
         if let Some(b) = &bar {
-            b.set_position(k + 1);
+            if by_time {
+                let done = ((t - t0) / (end - t0) * 1000.0).clamp(0.0, 1000.0) as u64;
+                if done != b.position() {
+                    b.set_position(done);
+                    b.set_message(format!("t = {t:.4} s, step {n}"));
+                }
+            } else {
+                b.set_position(k);
+            }
             if b.is_hidden() && last_line.elapsed().as_secs_f64() > 10.0 {
                 last_line = Instant::now();
                 eprintln!(
-                    "  t = {:.4} s, step {} of {}, {} spheres, {} contacts, {:.0} s elapsed",
+                    "  t = {:.4} s of {end} s, step {} of {}, {} spheres, {} contacts, {:.0} s elapsed",
                     sim.time,
-                    k + 1,
-                    total_steps,
+                    k,
+                    if by_time { "?".to_string() } else { total_steps.to_string() },
                     sim.dem.spheres.len(),
                     sim.dem.stats.pair_contacts,
                     started.elapsed().as_secs_f64()
@@ -180,33 +235,40 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         b.finish();
     }
     save(&sim, &out.join("checkpoint.ck"))?;
-    if sim.step % vtk_every != 0 {
-        snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+    if !vtk_every.fired_at(sim.step) {
+        if particles {
+            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+            block_out.write(&sim, &out)?;
+        }
+        if let Some(f) = &mut flow_out {
+            f.finish(&sim)?;
+        }
     }
-    if sim.step % csv_every != 0 {
+    if !csv_every.fired_at(sim.step) {
         series.row(&series_row(&sim))?;
     }
-    if sc.output.plots {
+    if sc.output.plots && particles {
         plot_energy(&out)?;
     }
     Ok(RunSummary {
         output_dir: out,
-        steps: total_steps,
+        steps: k,
         time: sim.time,
         wall_seconds: started.elapsed().as_secs_f64(),
         spheres: sim.dem.spheres.len(),
         spheres_lost: sim.dem.stats.spheres_lost,
+        fluid_cells: sim.fluid.as_ref().map_or(0, |f| f.grid().cell_count()),
     })
 }
 
-fn progress_bar(n: u64) -> indicatif::ProgressBar {
+fn progress_bar(n: u64, by_time: bool) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::new(n);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template(
-            "{bar:40} {percent:>3}% step {pos}/{len} elapsed {elapsed} ETA {eta}",
-        )
-        .expect("valid template"),
-    );
+    let template = if by_time {
+        "{bar:40} {percent:>3}% {msg} elapsed {elapsed} ETA {eta}"
+    } else {
+        "{bar:40} {percent:>3}% step {pos}/{len} elapsed {elapsed} ETA {eta}"
+    };
+    bar.set_style(indicatif::ProgressStyle::with_template(template).expect("valid template"));
     bar
 }
 
@@ -231,6 +293,8 @@ pub fn checkpoint_of(sim: &Simulation) -> Checkpoint {
         built_at: sim.dem.wall_contacts.built_at,
         feeders: sim.feeders.clone(),
         stats: sim.dem.stats,
+        rigid: sim.rigid.clone(),
+        fluid: sim.fluid.as_ref().map(|f| f.state().clone()),
     }
 }
 
@@ -241,13 +305,22 @@ fn save(sim: &Simulation, path: &Path) -> anyhow::Result<()> {
 }
 
 /// Puts a checkpoint's state into a freshly built simulation of the same scenario.
+///
+/// Panics if the checkpoint's flow does not fit the scenario's (see `flow::check_restart`).
 pub fn restore(sim: Simulation, ck: Checkpoint) -> Simulation {
     let mut dem = sim.dem;
     dem.spheres = ck.spheres;
     dem.stats = ck.stats;
-    Simulation::resumed(
+    let mut fluid = sim.fluid;
+    if let (Some(f), Some(state)) = (&mut fluid, ck.fluid) {
+        f.restore(state).expect("the saved flow fits the grid");
+    }
+    let mut rigid = ck.rigid;
+    rigid.templates = sim.rigid.templates;
+    let resumed = Simulation::resumed(
         dem,
         ck.feeders,
+        rigid,
         sim.min_period,
         ck.time,
         ck.step,
@@ -255,7 +328,11 @@ pub fn restore(sim: Simulation, ck: Checkpoint) -> Simulation {
         ck.built_at,
         &ck.contacts,
         &ck.wall_contacts,
-    )
+    );
+    match fluid {
+        Some(f) => resumed.with_fluid(f),
+        None => resumed,
+    }
 }
 
 /// One row of `series.csv`.
@@ -274,7 +351,7 @@ pub fn series_row(sim: &Simulation) -> Vec<f64> {
         }
     }
     let st = &sim.dem.stats;
-    vec![
+    let mut row = vec![
         sim.time,
         sim.step as f64,
         s.len() as f64,
@@ -286,7 +363,9 @@ pub fn series_row(sim: &Simulation) -> Vec<f64> {
         2.0 * st.pair_contacts as f64 / n,
         st.max_overlap_ratio,
         if m > 0.0 { mz / m } else { 0.0 },
-    ]
+    ];
+    flow::append_series(sim, &mut row);
+    row
 }
 
 fn record_probes(sim: &Simulation, probes: &mut [(u32, CsvSeries)]) -> std::io::Result<()> {
@@ -324,8 +403,45 @@ fn record_probes(sim: &Simulation, probes: &mut [(u32, CsvSeries)]) -> std::io::
     Ok(())
 }
 
+/// The block files of a run (`io::blocks`); nothing when the scenario has no blocks.
+struct BlockOutput(Option<(PvdSeries, CsvSeries)>);
+
+impl BlockOutput {
+    fn open(sim: &Simulation, out: &Path, resuming: bool, t0: f64) -> std::io::Result<Self> {
+        if sim.rigid.is_empty() {
+            return Ok(BlockOutput(None));
+        }
+        let csv = out.join("blocks.csv");
+        let csv = if resuming {
+            CsvSeries::resume(&csv, &BLOCK_COLUMNS, t0)?
+        } else {
+            CsvSeries::create(&csv, &BLOCK_COLUMNS)?
+        };
+        Ok(BlockOutput(Some((
+            open_pvd(&out.join("blocks.pvd"), resuming, t0)?,
+            csv,
+        ))))
+    }
+
+    fn write(&mut self, sim: &Simulation, out: &Path) -> std::io::Result<()> {
+        let Some((pvd, csv)) = &mut self.0 else {
+            return Ok(());
+        };
+        let name = format!("blocks_{:06}.vtu", pvd.entries().len());
+        write_block_points(&sim.rigid, &out.join(&name))?;
+        pvd.add(sim.time, &name, 0)?;
+        block_rows(&sim.rigid, sim.time, csv)?;
+        write_breakages(&sim.rigid, &out.join("breakages.csv"))
+    }
+}
+
 fn write_spheres(sim: &Simulation, path: &Path) -> std::io::Result<()> {
     let s = &sim.dem.spheres;
+    let body: Vec<i64> = s
+        .body
+        .iter()
+        .map(|&b| if b == NO_BODY { -1 } else { b as i64 })
+        .collect();
     let id: Vec<i64> = s.id.iter().map(|&i| i as i64).collect();
     let material: Vec<i64> = s.material.iter().map(|&m| m as i64).collect();
     let diameter: Vec<f64> = s.radius.iter().map(|r| 2.0 * r).collect();
@@ -356,6 +472,10 @@ fn write_spheres(sim: &Simulation, path: &Path) -> std::io::Result<()> {
             Array {
                 name: "material",
                 values: Values::Ints(&material),
+            },
+            Array {
+                name: "body",
+                values: Values::Ints(&body),
             },
         ],
     )

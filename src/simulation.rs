@@ -2,24 +2,42 @@
 //!
 //! A DEM step (velocity Verlet, see `dem::integrate`):
 //!
-//! 1. half kick of v and ω with the forces of the last evaluation [1][2]
+//! 1. half kick of v and ω with the forces of the last evaluation [1][2]; the members of each
+//!    rigid block are then given the block's rigid velocity again ([34][35], see
+//!    `RigidBodies::project_velocities`)
 //! 2. drift of the positions
 //! 3. boundaries: wrap periodic axes; remove spheres that left the domain
 //! 4. insertion: feeders add the spheres due
 //! 5. neighbour list: rebuild when a sphere moved more than skin/2 (history carried over)
 //! 6. forces at t + Δt: contacts [6]-[14] with walls as infinite spheres, gravity
+//!    and the links between bodies (wires, bonds)
 //! 7. half kick with the new forces
-//! 8. stability checks: NaN, absurd speed, overlap beyond bound
+//! 8. rigid blocks: the PMS recovery of each block from its members, which are put back in the
+//!    rigid shape [34]-[36], [41]-[49]
+//! 9. stability checks: NaN, absurd speed, overlap beyond bound
+//!
+//! With a fluid ([`Simulation::with_fluid`]) one step of the simulation is one fluid step
+//! Δt_f with the DEM steps inside it (uncoupled for now; the coupling of [59]-[63] comes
+//! next): Δt_f is the adaptive step of `fluid::timestep` (CFL and viscous limits, capped by
+//! the user bound), rounded *down* to a whole number k ≥ 1 of DEM steps, Δt_f = k Δt; the fluid
+//! advances by Δt_f, then the DEM takes its k steps. Without spheres (none present, no feeder
+//! still to insert) the fluid step is the adaptive step itself, shortened to land on the end
+//! time. See [`Simulation::step_towards`] (in `simulation/fluid_steps.rs`).
 //!
 //! ARCHITECTURE.md repeats this order; keep the two in step.
+
+mod fluid_steps;
 
 use crate::dem::contacts::SavedContact;
 use crate::dem::forces::{compute_forces, start_forces, Kick};
 use crate::dem::insertion::Feeder;
-use crate::dem::integrate::open_step;
+use crate::dem::integrate::{half_kick, open_step};
+use crate::dem::spheres::Spheres;
 use crate::dem::wall_contacts::SavedWallContacts;
 use crate::dem::Dem;
+use crate::fluid::Fluid;
 use crate::math::{is_finite, Vec3};
+use crate::rigid::bodies::RigidBodies;
 
 /// Why a run stopped before its end.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -42,18 +60,32 @@ pub struct Simulation {
     pub dem: Dem,
     /// Continuous feeders.
     pub feeders: Vec<Feeder>,
+    /// Rigid blocks made of DEM spheres, and the wires and bonds between bodies.
+    pub rigid: RigidBodies,
     /// Simulated time [s].
     pub time: f64,
-    /// Steps taken.
+    /// Steps taken: DEM steps without a fluid, fluid steps with one.
     pub step: u64,
     /// Shortest contact-spring period T of [22] over the pairings present [s] (for diagnoses).
     pub min_period: f64,
+    /// The water, if the scenario has one (METHOD.md §4).
+    pub fluid: Option<Fluid>,
 }
 
 impl Simulation {
     /// Prepares a simulation: builds the neighbour list and evaluates the initial forces
     /// (without advancing the contact history, as LAMMPS and LIGGGHTS do at set-up).
-    pub fn new(mut dem: Dem, feeders: Vec<Feeder>, min_period: f64) -> Self {
+    pub fn new(dem: Dem, feeders: Vec<Feeder>, min_period: f64) -> Self {
+        Self::with_bodies(dem, feeders, RigidBodies::default(), min_period)
+    }
+
+    /// As `new`, with rigid blocks and links (`rigid`), whose members are already in `dem`.
+    pub fn with_bodies(
+        mut dem: Dem,
+        feeders: Vec<Feeder>,
+        rigid: RigidBodies,
+        min_period: f64,
+    ) -> Self {
         if dem.neighbors.skin <= 0.0 {
             let d_max = dem
                 .spheres
@@ -74,13 +106,16 @@ impl Simulation {
         let mut sim = Simulation {
             dem,
             feeders,
+            rigid,
             time: 0.0,
             step: 0,
             min_period,
+            fluid: None,
         };
         sim.dem.rebuild_lists(sim.time);
         start_forces(&mut sim.dem.spheres, sim.dem.gravity);
         compute_forces(&mut sim.dem, sim.time, None, false);
+        sim.add_link_forces();
         sim
     }
 
@@ -92,6 +127,7 @@ impl Simulation {
     pub fn resumed(
         mut dem: Dem,
         feeders: Vec<Feeder>,
+        rigid: RigidBodies,
         min_period: f64,
         time: f64,
         step: u64,
@@ -104,19 +140,35 @@ impl Simulation {
         Simulation {
             dem,
             feeders,
+            rigid,
             time,
             step,
             min_period,
+            fluid: None,
         }
     }
 
-    /// Advances one time step Δt.
+    /// Advances one time step: a DEM step Δt without a fluid; with a fluid, one fluid step with
+    /// the DEM steps inside it (see the module docs).
     pub fn step(&mut self) -> Result<(), Instability> {
+        self.step_towards(f64::INFINITY)
+    }
+
+    /// One DEM step Δt, phases 1-8 above (the caller counts `self.step`).
+    fn dem_step(&mut self) -> Result<(), Instability> {
         let dt = self.dem.dt;
         let d = &mut self.dem;
+        // Blocks and links need the half kick on its own: the members of each block get their
+        // block's rigid velocity back before they drift [34][35].
+        let linked = !self.rigid.is_empty();
+        if linked {
+            half_kick(&mut d.spheres, dt);
+            self.rigid.project_velocities(&mut d.spheres, &d.domain);
+        }
         let opening = open_step(
             &mut d.spheres,
             dt,
+            !linked,
             &d.domain,
             d.gravity,
             d.neighbors.reference(),
@@ -138,7 +190,6 @@ impl Simulation {
             }
         }
         self.time = t_new;
-        self.step += 1;
         if changed || opening.moved || self.dem.walls_moved(self.time) {
             self.dem.rebuild_lists(self.time);
         }
@@ -146,8 +197,29 @@ impl Simulation {
             half_dt: 0.5 * dt,
             max_speed: self.dem.limits.max_speed,
         };
-        let bad = compute_forces(&mut self.dem, self.time, Some(kick), true);
+        if !linked {
+            // The closing half kick is fused into the force pass.
+            let bad = compute_forces(&mut self.dem, self.time, Some(kick), true);
+            return self.check(bad);
+        }
+        compute_forces(&mut self.dem, self.time, None, true);
+        self.add_link_forces();
+        let d = &mut self.dem;
+        half_kick(&mut d.spheres, dt);
+        if !self.rigid.blocks.is_empty() {
+            self.rigid.recover(&mut d.spheres, &d.domain, dt);
+        }
+        let bad = first_unstable(&d.spheres, kick.max_speed);
         self.check(bad)
+    }
+
+    /// The wires and bonds between bodies, added to the contact forces.
+    fn add_link_forces(&mut self) {
+        if !self.rigid.is_empty() {
+            let d = &mut self.dem;
+            self.rigid
+                .apply_link_forces(&mut d.spheres, &d.domain, self.time, d.dt);
+        }
     }
 
     /// Removes the spheres whose centre left the domain along a non-periodic axis; true if any
@@ -161,13 +233,18 @@ impl Simulation {
         let stays = |x: Vec3, v: Vec3| {
             domain.contains(x) || !is_finite(x) || v.length().is_nan() || v.length() > v_max
         };
-        let keep: Vec<bool> = (0..s.len())
+        let lost = (0..s.len())
+            .filter(|&i| !stays(s.position[i], s.velocity[i]))
+            .count();
+        if lost == 0 {
+            return false; // The common case allocates nothing.
+        }
+        let mut keep: Vec<bool> = (0..s.len())
             .map(|i| stays(s.position[i], s.velocity[i]))
             .collect();
+        // A block leaves as a whole when one of its members does.
+        d.stats.blocks_lost += self.rigid.drop_partial_blocks(s, &mut keep);
         let lost = keep.iter().filter(|&&k| !k).count();
-        if lost == 0 {
-            return false;
-        }
         s.retain(&keep);
         d.stats.spheres_lost += lost;
         true
@@ -241,4 +318,14 @@ impl Simulation {
         }
         Ok(())
     }
+}
+
+/// The lowest slot whose state is not finite or whose speed exceeds `max_speed`, if any (the
+/// check the fused force pass makes, for the steps that kick on their own).
+fn first_unstable(s: &Spheres, max_speed: f64) -> Option<usize> {
+    let max2 = max_speed * max_speed;
+    (0..s.len()).find(|&i| {
+        let (x, v, w) = (s.position[i], s.velocity[i], s.angular_velocity[i]);
+        !(is_finite(x) && is_finite(v) && is_finite(w)) || v.length_squared() > max2
+    })
 }

@@ -1,14 +1,24 @@
 //! `riprap validate`: the long validation runs, with a report (Markdown with PNG plots).
 //!
-//! Today this holds the flow solver's lid-driven cavity against Ghia, Ghia & Shin (1982) at
-//! Re = 100, 400 and 1000 (the quick level runs Re = 100 only, on a coarse grid). The DEM's
-//! checks against theory are fast enough to live in `cargo test`. Tolerances are in units of the
-//! lid speed U and come from the measured errors with a 50 % margin; Ghia's own 129² solution
-//! is off by up to ~0.008 U at the profile peaks (see `tests/fluid_cavity.rs`).
+//! Today this holds two cases of the flow solver:
+//!
+//! * the lid-driven cavity against Ghia, Ghia & Shin (1982) at Re = 100, 400 and 1000 (the
+//!   quick level runs Re = 100 only, on a coarse grid). Tolerances are in units of the lid
+//!   speed U and come from the measured errors with a 50 % margin; Ghia's own 129² solution is
+//!   off by up to ~0.008 U at the profile peaks (see `tests/fluid_cavity.rs`);
+//! * the LES of turbulent channel flow at Re_τ = 178.12 against the DNS of Moser, Kim &
+//!   Mansour (1999): bulk velocity, skin friction and the mean profile U⁺(y⁺). The case,
+//!   its tolerances and their justification are in
+//!   `src/fluid/validation/channel180/README.md`; the quick level runs a small box briefly.
+//!
+//! The DEM's checks against theory are fast enough to live in `cargo test`.
 
 use std::fmt::Write as _;
 use std::path::Path;
 
+use crate::fluid::validation::channel180::{
+    mkm_1999_bulk_velocity, mkm_1999_profile, run_channel, ChannelCase, ChannelResult,
+};
 use crate::fluid::validation::{ghia_1982, lid_driven_cavity, CavityResult};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
 
@@ -100,8 +110,208 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
             if ok { "pass" } else { "FAIL" }
         );
     }
+    all &= channel_section(out, quick, &mut md)?;
     std::fs::write(out.join("report.md"), &md)?;
     Ok((md, all))
+}
+
+/// The channel case of a level with its tolerances: |U_b⁺/U_b⁺_ref − 1|, the largest
+/// |U⁺/U⁺_ref − 1| over y⁺ ≥ 30, and |τ_w/(ρu_τ²) − 1| (steadiness).
+#[derive(Clone, Copy, Debug)]
+pub struct ChannelLevel {
+    /// The run.
+    pub case: ChannelCase,
+    /// Tolerance on the relative error of the bulk velocity.
+    pub bulk_tolerance: f64,
+    /// Tolerance on the relative error of U⁺ at the cell centres with y⁺ ≥ 30.
+    pub profile_tolerance: f64,
+    /// Tolerance on the mean wall stress over the averaging window, relative to ρ u_τ².
+    pub steadiness_tolerance: f64,
+}
+
+/// The channel run of a level: quick (seconds; a small box, a short average, loose
+/// tolerances) or full (the validation grid; see the README of the case).
+pub fn channel_level(quick: bool) -> ChannelLevel {
+    if quick {
+        ChannelLevel {
+            case: ChannelCase {
+                cells: [16, 32, 16],
+                lengths: [std::f64::consts::PI, 0.5 * std::f64::consts::PI],
+                spin_up: 5.0,
+                average: 5.0,
+                ..ChannelCase::validation()
+            },
+            bulk_tolerance: 0.15,
+            profile_tolerance: 0.15,
+            steadiness_tolerance: 0.5,
+        }
+    } else {
+        ChannelLevel {
+            case: ChannelCase::validation(),
+            bulk_tolerance: 0.10,
+            profile_tolerance: 0.10,
+            steadiness_tolerance: 0.05,
+        }
+    }
+}
+
+/// Runs the channel case of the level, appends its section to the report `md` and writes its
+/// plots into `out`; returns whether it passed.
+fn channel_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
+    let level = channel_level(quick);
+    let case = &level.case;
+    let start = std::time::Instant::now();
+    let r = run_channel(case, &mut |t, ub| {
+        if (t.round() as u64) % 10 == 0 {
+            eprintln!(
+                "channel Re_tau {}: t = {t:.0} h/u_tau, U_b+ = {ub:.3}",
+                case.re_tau
+            );
+        }
+    });
+    let seconds = start.elapsed().as_secs_f64();
+    let (eb, ep, es) = (
+        r.bulk_velocity_error(),
+        r.profile_error(30.0..=f64::INFINITY),
+        r.wall_stress - 1.0,
+    );
+    let ok = eb.abs() < level.bulk_tolerance
+        && ep < level.profile_tolerance
+        && es.abs() < level.steadiness_tolerance;
+    let ub_ref = mkm_1999_bulk_velocity();
+    let [dx, dy, dz] = case.wall_units();
+    let _ = writeln!(
+        md,
+        "\n## Turbulent channel, Re_tau = {} (LES, Smagorinsky C_s = {} with van Driest \
+         damping) against Moser, Kim & Mansour (1999)\n",
+        case.re_tau, case.smagorinsky.coefficient
+    );
+    let _ = writeln!(
+        md,
+        "Box {:.3}h x 2h x {:.3}h on {} x {} x {} cells (dx+ = {dx:.1}, dy+ = {dy:.1}, \
+         dz+ = {dz:.1}); spin-up {} h/u_tau, then {} h/u_tau of averages ({} samples), {} \
+         steps, {seconds:.0} s.\n",
+        case.lengths[0],
+        case.lengths[1],
+        case.cells[0],
+        case.cells[1],
+        case.cells[2],
+        case.spin_up,
+        case.average,
+        r.samples,
+        r.steps
+    );
+    md.push_str(
+        "| quantity | riprap | MKM 1999 | error | tolerance |\n|---|---:|---:|---:|---:|\n",
+    );
+    let _ = writeln!(
+        md,
+        "| bulk velocity U_b+ | {:.3} | {ub_ref:.3} | {:+.1} % | {:.0} % |",
+        r.bulk_velocity,
+        100.0 * eb,
+        100.0 * level.bulk_tolerance
+    );
+    let _ = writeln!(
+        md,
+        "| skin friction C_f = 2/U_b+^2 | {:.3e} | {:.3e} | {:+.1} % | |",
+        r.skin_friction,
+        2.0 / (ub_ref * ub_ref),
+        100.0 * (r.skin_friction * ub_ref * ub_ref / 2.0 - 1.0)
+    );
+    let _ = writeln!(
+        md,
+        "| max abs(U+ / U+_ref - 1), y+ >= 30 | | | {:.1} % | {:.0} % |",
+        100.0 * ep,
+        100.0 * level.profile_tolerance
+    );
+    let _ = writeln!(
+        md,
+        "| max abs(U+ / U+_ref - 1), all cells | | | {:.1} % | |",
+        100.0 * r.profile_error(0.0..=f64::INFINITY)
+    );
+    let _ = writeln!(
+        md,
+        "| mean wall stress / (rho u_tau^2) (steadiness) | {:.3} | 1 | {:+.1} % | {:.0} % |",
+        r.wall_stress,
+        100.0 * es,
+        100.0 * level.steadiness_tolerance
+    );
+    let _ = writeln!(md, "\nVerdict: {}\n", if ok { "pass" } else { "FAIL" });
+    plot_channel(out, &r)?;
+    md.push_str("![U+ against y+](channel180_profile.png)\n\n");
+    md.push_str("![U_b+ against time](channel180_bulk.png)\n");
+    eprintln!(
+        "channel Re_tau {}: U_b+ {:.3} (MKM {ub_ref:.3}, {:+.1} %), profile {:.1} %, wall \
+         stress {:.3} -> {}",
+        case.re_tau,
+        r.bulk_velocity,
+        100.0 * eb,
+        100.0 * ep,
+        r.wall_stress,
+        if ok { "pass" } else { "FAIL" }
+    );
+    Ok(ok)
+}
+
+/// U⁺ against log₁₀ y⁺ beside the DNS, the viscous sublayer U⁺ = y⁺ and the log law
+/// U⁺ = ln(y⁺)/0.41 + 5.2; and U_b⁺ against time.
+fn plot_channel(out: &Path, r: &ChannelResult) -> anyhow::Result<()> {
+    let log = |pts: &mut dyn Iterator<Item = (f64, f64)>| -> Vec<(f64, f64)> {
+        pts.filter(|p| p.0 > 0.0)
+            .map(|(y, u)| (y.log10(), u))
+            .collect()
+    };
+    let les = log(&mut r.profile.iter().copied());
+    let dns = log(&mut mkm_1999_profile().into_iter().map(|p| (p[1], p[2])));
+    let sublayer = log(&mut (0..=30).map(|m| {
+        let y = 10f64.powf(-1.0 + m as f64 * 0.04);
+        (y, y)
+    }));
+    let log_law = log(&mut (0..=30).map(|m| {
+        let y = 10f64.powf(1.0 + m as f64 * 0.045);
+        (y, y.ln() / 0.41 + 5.2)
+    }));
+    let title = format!(
+        "Channel Re_tau = {}, {}x{}x{} cells: mean velocity",
+        r.case.re_tau, r.case.cells[0], r.case.cells[1], r.case.cells[2]
+    );
+    line_plot(
+        &out.join("channel180_profile.png"),
+        &Axes {
+            title: &title,
+            x_label: "log10 y+",
+            y_label: "U+",
+            log_y: false,
+        },
+        &[
+            Series::new("riprap LES", &les, LineStyle::Line),
+            Series::new("DNS, Moser, Kim & Mansour 1999", &dns, LineStyle::Markers),
+            Series::new("U+ = y+", &sublayer, LineStyle::Dashed),
+            Series::new("U+ = ln(y+)/0.41 + 5.2", &log_law, LineStyle::Dashed),
+        ],
+    )?;
+    let ub_ref = mkm_1999_bulk_velocity();
+    let t_end = r.bulk_history.last().map_or(1.0, |p| p.0);
+    let reference = [(0.0, ub_ref), (t_end, ub_ref)];
+    let spin_up = [
+        (r.case.spin_up, ub_ref * 0.9),
+        (r.case.spin_up, ub_ref * 1.1),
+    ];
+    line_plot(
+        &out.join("channel180_bulk.png"),
+        &Axes {
+            title: "Channel: bulk velocity (averages start at the vertical line)",
+            x_label: "t [h/u_tau]",
+            y_label: "U_b+",
+            log_y: false,
+        },
+        &[
+            Series::new("riprap LES", &r.bulk_history, LineStyle::Line),
+            Series::new("DNS U_b+", &reference, LineStyle::Dashed),
+            Series::new("end of spin-up", &spin_up, LineStyle::Dashed),
+        ],
+    )?;
+    Ok(())
 }
 
 fn plot_cavity(path: &Path, r: &CavityResult) -> anyhow::Result<()> {

@@ -73,6 +73,7 @@ fn same_bits(a: &FluidState, b: &FluidState) -> bool {
         && eq(&a.pressure, &b.pressure)
         && eq(&a.previous_pressure, &b.previous_pressure)
         && eq(&a.mixture_density, &b.mixture_density)
+        && eq(&a.eddy_viscosity, &b.eddy_viscosity)
 }
 
 fn on_threads(threads: usize) -> FluidState {

@@ -4,6 +4,7 @@
 //! Run: `cargo test --release --test fluid_output`.
 
 use glam::DVec3;
+use riprap::fluid::operators::cell_vorticity;
 use riprap::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
 use riprap::io::vtk::{write_image, Array, Values};
 
@@ -65,4 +66,28 @@ fn cell_fields_write_as_a_vtk_image() {
     assert!(head.contains("ImageData") && head.contains("velocity_m_s"));
     assert!(head.contains(r#"WholeExtent="0 8 0 4 0 6""#));
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn cell_vorticity_of_a_solid_body_rotation_is_twice_the_rate() {
+    // u = Ω × x with Ω = (0, 0, 2) s⁻¹ about the box centre: ∇ × u = 2 Ω exactly for the
+    // central differences of a linear field (interior cells, away from the wall ghosts).
+    let grid = StaggeredGrid::new([8, 8, 4], DVec3::new(0.8, 0.8, 0.4), DVec3::ZERO);
+    let bcs = Boundaries::periodic()
+        .with(0, Boundary::FreeSlip, Boundary::FreeSlip)
+        .with(1, Boundary::FreeSlip, Boundary::FreeSlip);
+    let mut fluid = Fluid::new(grid, bcs, FluidParameters::laminar(1000.0, 1e-6)).unwrap();
+    let omega = DVec3::new(0.0, 0.0, 2.0);
+    let centre = DVec3::new(0.4, 0.4, 0.2);
+    fluid.set_velocity(|x| omega.cross(x - centre));
+    let f = fluid.cell_fields();
+    for (k, j, i) in [(1, 3, 3), (2, 1, 6), (0, 6, 2)] {
+        let w = f.vorticity[i + 8 * (j + 8 * k)];
+        assert!(
+            (w - 2.0 * omega).length() < 1e-12,
+            "cell ({i}, {j}, {k}): {w}"
+        );
+        let st = riprap::fluid::grid::Stencil::new(&grid);
+        assert_eq!(w, cell_vorticity(&st, fluid.velocity(), grid.cell(i, j, k)));
+    }
 }

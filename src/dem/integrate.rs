@@ -61,9 +61,13 @@ const CHUNK: usize = 4096;
 /// displacement test against `reference` (positions at the build; a sphere farther than
 /// `limit` from its reference position asks for a rebuild) and the outflow count; then the
 /// forces are started at gravity, m g, for the coming evaluation (`forces::start_forces`).
+/// With `kick` false the half kick is left out (the caller has done it: rigid blocks put
+/// their members' velocities back in the rigid shape between the kick and the drift).
+#[allow(clippy::too_many_arguments)]
 pub fn open_step(
     s: &mut Spheres,
     dt: f64,
+    kick: bool,
     domain: &Domain,
     gravity: Vec3,
     reference: &[Vec3],
@@ -97,8 +101,10 @@ pub fn open_step(
         let cols = x.iter_mut().zip(v).zip(w).zip(f).zip(t);
         for (k, (((((x, v), w), f), t), ((&m, &i), &fixed))) in cols.zip(own).enumerate() {
             if !fixed {
-                *v += h / m * *f;
-                *w += h / i * *t;
+                if kick {
+                    *v += h / m * *f;
+                    *w += h / i * *t;
+                }
                 *x = im.wrap(*x + dt * *v);
                 *f = m * gravity;
             } else {

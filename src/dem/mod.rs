@@ -62,8 +62,10 @@ pub struct Stats {
     pub max_overlap_slot: usize,
     /// Wall contacts dropped because a sphere touched more than `WALL_SLOTS` surfaces.
     pub dropped_wall_contacts: usize,
-    /// Spheres removed so far because they left the domain.
+    /// Spheres removed so far because they left the domain (members of lost blocks included).
     pub spheres_lost: usize,
+    /// Blocks removed so far because a member left the domain.
+    pub blocks_lost: usize,
 }
 
 /// The granular phase.

@@ -17,7 +17,7 @@
 use rayon::prelude::*;
 
 use super::domain::Domain;
-use super::spheres::{PermuteScratch, SphereId, Spheres};
+use super::spheres::{PermuteScratch, SphereId, Spheres, NO_BODY};
 use crate::math::Vec3;
 
 /// "No slot": a sphere that was not present at the previous build.
@@ -380,7 +380,7 @@ impl NeighborList {
         let slabs = grid.slabs() as u32;
         let slab_cells = grid.slab_cells() as u32;
         let pos = &self.reference;
-        let (rad, fixed) = (&spheres.radius, &spheres.fixed);
+        let (rad, fixed, body) = (&spheres.radius, &spheres.fixed, &spheres.body);
         let im = domain.images();
         let [a0, a1, a2] = grid.axes;
         let (n0, n1, n2) = (grid.n[a0], grid.n[a1], grid.n[a2]);
@@ -434,14 +434,16 @@ impl NeighborList {
                     }
                 }
                 let before = out.partner.len();
-                let (xi, ri, fi) = (pos[i], rad[i], fixed[i]);
+                let (xi, ri, fi, bi) = (pos[i], rad[i], fixed[i], body[i]);
                 for &(s, e, above) in &ranges {
                     let s = if above { s.max(i as u32 + 1) } else { s };
                     for j in s..e {
                         let j = j as usize;
                         let cut = ri + rad[j] + skin;
-                        if im.nearest(pos[j] - xi).length_squared() < cut * cut && !(fi && fixed[j])
-                        {
+                        // Two fixed spheres never move apart; members of one block never
+                        // touch (their contact is internal to the block).
+                        let skip = (fi && fixed[j]) || (bi != NO_BODY && body[j] == bi);
+                        if !skip && im.nearest(pos[j] - xi).length_squared() < cut * cut {
                             out.partner.push(j as u32);
                         }
                     }

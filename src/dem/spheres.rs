@@ -18,6 +18,9 @@ pub type MaterialIndex = u16;
 /// Stable identity of a sphere (assigned at insertion, never reused).
 pub type SphereId = u32;
 
+/// `Spheres::body` of a sphere that belongs to no rigid body.
+pub const NO_BODY: u32 = u32::MAX;
+
 /// All spheres of a simulation (structure-of-arrays).
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct Spheres {
@@ -43,6 +46,9 @@ pub struct Spheres {
     pub material: Vec<MaterialIndex>,
     /// Fixed spheres do not move (a rough base, say); they still push on others.
     pub fixed: Vec<bool>,
+    /// Id of the rigid body (block) the sphere is a member of, or `NO_BODY`. Members of one
+    /// body never touch each other: their contact is internal to the body.
+    pub body: Vec<u32>,
     /// The id the next inserted sphere gets.
     pub next_id: SphereId,
     /// The slot of each id ever issued, `NO_SLOT` once removed (index: id).
@@ -114,6 +120,7 @@ impl Spheres {
         self.material.reserve(n);
         self.fixed.reserve(n);
         self.slot.reserve(n);
+        self.body.reserve(n);
     }
 
     /// Adds a sphere and returns its id. Mass m = ρ (4/3) π r³, inertia I = (2/5) m r².
@@ -134,6 +141,7 @@ impl Spheres {
         self.fixed.push(s.fixed);
         self.slot.resize(id as usize, NO_SLOT);
         self.slot.push((self.id.len() - 1) as u32);
+        self.body.push(NO_BODY);
         id
     }
 
@@ -160,8 +168,15 @@ impl Spheres {
         compact(&mut self.inertia, keep);
         compact(&mut self.material, keep);
         compact(&mut self.fixed, keep);
+        compact(&mut self.body, keep);
         self.slot.fill(NO_SLOT);
         self.index_slots();
+    }
+
+    /// True when slots i and j are members of the same rigid body (no contact between them).
+    #[inline]
+    pub fn same_body(&self, i: usize, j: usize) -> bool {
+        self.body[i] != NO_BODY && self.body[i] == self.body[j]
     }
 
     /// Reorders the storage: the sphere at slot `order[k]` moves to slot k. `order` must be a
@@ -184,6 +199,7 @@ impl Spheres {
         gather(&mut self.inertia, order, &mut sc.f64s);
         gather(&mut self.material, order, &mut sc.u16s);
         gather(&mut self.fixed, order, &mut sc.bools);
+        gather(&mut self.body, order, &mut sc.u32s);
         self.index_slots();
     }
 

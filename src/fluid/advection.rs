@@ -33,9 +33,16 @@ pub fn advection(st: &Stencil, u: Velocity, a: usize, c: usize) -> f64 {
             sum += (hi * hi - lo * lo) * st.inv_d[a];
         } else {
             let sb = st.s[b];
-            let edge = |e: usize| 0.25 * (ub[e] + ub[e - sa]) * (ua[e] + ua[e - sb]);
-            sum += (edge(c + sb) - edge(c)) * st.inv_d[b];
+            let flux = edge_flux(ua, ub, sa, sb, c + sb) - edge_flux(ua, ub, sa, sb, c);
+            sum += flux * st.inv_d[b];
         }
     }
     sum
+}
+
+/// The flux ⟨u_b⟩^a ⟨u_a⟩^b = (u_b[e] + u_b[e − s_a])/2 · (u_a[e] + u_a[e − s_b])/2 at the a-b
+/// edge of face `e` [m² s⁻²]. A function, not a closure, so that it is always inlined.
+#[inline(always)]
+fn edge_flux(ua: &[f64], ub: &[f64], sa: usize, sb: usize, e: usize) -> f64 {
+    0.25 * (ub[e] + ub[e - sa]) * (ua[e] + ua[e - sb])
 }

@@ -34,18 +34,41 @@ pub fn molecular(st: &Stencil, mu: f64, ua: &[f64], c: usize) -> f64 {
 pub fn subgrid(st: &Stencil, u: Velocity, mu_t: &[f64], a: usize, c: usize) -> f64 {
     let ua = u[a];
     let sa = st.s[a];
-    let normal = |e: usize| 2.0 * mu_t[e] * (ua[e + sa] - ua[e]) * st.inv_d[a];
-    let mut sum = (normal(c) - normal(c - sa)) * st.inv_d[a];
+    let inv_a = st.inv_d[a];
+    let normal = normal_stress(ua, mu_t, sa, inv_a, c) - normal_stress(ua, mu_t, sa, inv_a, c - sa);
+    let mut sum = normal * inv_a;
     for (b, ub) in u.iter().enumerate() {
         if b == a {
             continue;
         }
-        let sb = st.s[b];
-        let shear = |e: usize| {
-            let mu_e = 0.25 * (mu_t[e] + mu_t[e - sa] + mu_t[e - sb] + mu_t[e - sa - sb]);
-            mu_e * ((ua[e] - ua[e - sb]) * st.inv_d[b] + (ub[e] - ub[e - sa]) * st.inv_d[a])
-        };
-        sum += (shear(c + sb) - shear(c)) * st.inv_d[b];
+        let (sb, inv_b) = (st.s[b], st.inv_d[b]);
+        let stress = shear_stress(ua, ub, mu_t, [sa, sb], [inv_a, inv_b], c + sb)
+            - shear_stress(ua, ub, mu_t, [sa, sb], [inv_a, inv_b], c);
+        sum += stress * inv_b;
     }
     sum
+}
+
+/// T(e) = 2 μ_SGS[e] (u_a[e + s_a] − u_a[e]) / Δ_a at the centre of cell `e` [Pa]; `inv_a` is
+/// 1/Δ_a. A function, not a closure, so that it is always inlined.
+#[inline(always)]
+fn normal_stress(ua: &[f64], mu_t: &[f64], sa: usize, inv_a: f64, e: usize) -> f64 {
+    2.0 * mu_t[e] * (ua[e + sa] - ua[e]) * inv_a
+}
+
+/// E(e) = μ_e(e) [(u_a[e] − u_a[e − s_b]) / Δ_b + (u_b[e] − u_b[e − s_a]) / Δ_a] at the a-b
+/// edge of face `e`, μ_e the mean of μ_SGS over the four cells around the edge [Pa]; `s` are
+/// the strides (s_a, s_b) and `inv_d` (1/Δ_a, 1/Δ_b). A function, not a closure, so that it
+/// is always inlined.
+#[inline(always)]
+fn shear_stress(
+    ua: &[f64],
+    ub: &[f64],
+    mu_t: &[f64],
+    [sa, sb]: [usize; 2],
+    [inv_a, inv_b]: [f64; 2],
+    e: usize,
+) -> f64 {
+    let mu_e = 0.25 * (mu_t[e] + mu_t[e - sa] + mu_t[e - sb] + mu_t[e - sa - sb]);
+    mu_e * ((ua[e] - ua[e - sb]) * inv_b + (ub[e] - ub[e - sa]) * inv_a)
 }

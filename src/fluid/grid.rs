@@ -276,6 +276,37 @@ where
     });
 }
 
+/// Runs `kernel(start, out_row)` for every (j, k) row of `region`, where `out_row` is the part
+/// `region[0]` of the row of `out` and `start` the padded index of its first element, in
+/// parallel over rows.
+///
+/// The row form of [`update_region`], for kernels that address their neighbours through
+/// slices shifted by the strides (so that the compiler drops the bounds checks and
+/// vectorises along x). Each row is written by one task: the result does not depend on the
+/// thread count. Nothing is allocated.
+pub fn update_rows<F>(grid: &StaggeredGrid, region: &IndexBox, out: &mut [f64], kernel: F)
+where
+    F: Fn(usize, &mut [f64]) + Sync,
+{
+    let p = grid.padded();
+    for_each_chunk(out, p[0], |row, line| {
+        let (j, k) = (row % p[1], row / p[1]);
+        if !region[1].contains(&j) || !region[2].contains(&k) {
+            return;
+        }
+        kernel(row * p[0] + region[0].start, &mut line[region[0].clone()]);
+    });
+}
+
+/// The `len` values of a padded field `f` from index `start + offset` on: the neighbours at a
+/// fixed stencil offset of a row of `len` points starting at `start`. Panics when the window
+/// leaves the field.
+#[inline(always)]
+pub fn shifted(f: &[f64], start: usize, offset: isize, len: usize) -> &[f64] {
+    let first = start.wrapping_add_signed(offset);
+    &f[first..first + len]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

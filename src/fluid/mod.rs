@@ -10,7 +10,8 @@
 //! round-off with variable density (Dodd & Ferrante 2014 splitting, FFT/DCT direct solver).
 //! Each face of the box is periodic, a no-slip wall (fixed or moving), free slip, an inflow
 //! (steady or oscillating) or an outflow ([`boundary`]). The time step adapts to CFL and
-//! viscous limits ([`timestep`]). [`validation`] holds the longer verification cases (the
+//! viscous limits ([`timestep`]). [`diagnostics`] gives whole-flow numbers (kinetic energy,
+//! largest speed, a memory estimate). [`validation`] holds the longer verification cases (the
 //! lid-driven cavity against Ghia et al. 1982) for a `riprap validate` command.
 //!
 //! In use:
@@ -38,6 +39,7 @@
 
 pub mod advection;
 pub mod boundary;
+pub mod diagnostics;
 pub mod diffusion;
 pub mod forcing;
 pub mod grid;
@@ -46,6 +48,7 @@ pub mod operators;
 pub mod pressure;
 pub mod sgs;
 pub mod step;
+pub mod tendency;
 pub mod timestep;
 pub mod validation;
 

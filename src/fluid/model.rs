@@ -1,10 +1,10 @@
 //! `Fluid`: the grid, the boundaries, the physical parameters, the state and the workspace of
 //! the flow solver, with its accessors. The time step itself is in [`super::step`].
 
-use super::boundary::{fill_scalar_ghosts, fill_velocity_ghosts, Boundaries};
+use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts, Boundaries};
 use super::forcing::DrivingPressureGradient;
 use super::grid::{IndexBox, StaggeredGrid, Stencil};
-use super::operators::{cell_velocity, divergence};
+use super::operators::{cell_velocity, cell_vorticity, divergence};
 use super::pressure::{Passes, PressureFields, Projection};
 use super::sgs::Smagorinsky;
 use super::timestep::{max_speed, stable_time_step, TimeStepLimits};
@@ -90,6 +90,9 @@ pub struct FluidState {
     pub body_force: [Vec<f64>; 3],
     /// Adams-Bashforth history: the advection-diffusion tendency Hⁿ⁻¹ [m s⁻²] on the faces.
     pub previous_tendency: [Vec<f64>; 3],
+    /// μ_SGS [Pa s] at cell centres from the last step [57] (zero without the model): it
+    /// bounds the next adaptive time step, so a restart needs it.
+    pub eddy_viscosity: Vec<f64>,
 }
 
 /// The flow solver: state, configuration and a workspace allocated once.
@@ -103,8 +106,6 @@ pub struct Fluid {
     pub(super) regions: [IndexBox; 3],
     /// Hⁿ [m s⁻²], this step's tendency.
     pub(super) tendency: [Vec<f64>; 3],
-    /// μ_SGS [Pa s] at cell centres (zero without the model).
-    pub(super) eddy_viscosity: Vec<f64>,
     /// pⁿ⁺¹ being computed [Pa].
     pub(super) next_pressure: Vec<f64>,
     pub(super) projection: Projection,
@@ -116,6 +117,8 @@ pub struct Fluid {
 pub struct CellFields {
     /// Velocity at cell centres, the mean of the two faces [m s⁻¹].
     pub velocity: Vec<DVec3>,
+    /// Vorticity ∇ × u at cell centres, the mean of the four edges around the cell [s⁻¹].
+    pub vorticity: Vec<DVec3>,
     /// Pressure less hydrostatic [Pa].
     pub pressure: Vec<f64>,
     /// Mixture density ρ̄ [kg m⁻³].
@@ -148,6 +151,7 @@ impl Fluid {
             mixture_density: vec![parameters.density; grid.len()],
             body_force: zero3(),
             previous_tendency: zero3(),
+            eddy_viscosity: grid.field(),
         };
         let regions = std::array::from_fn(|m| {
             std::array::from_fn(|a| {
@@ -167,7 +171,6 @@ impl Fluid {
             stencil: Stencil::new(&grid),
             regions,
             tendency: zero3(),
-            eddy_viscosity: grid.field(),
             next_pressure: grid.field(),
             projection: Projection::new(&grid, &boundaries),
         };
@@ -219,7 +222,8 @@ impl Fluid {
             && state.previous_tendency.iter().all(|v| v.len() == n)
             && state.pressure.len() == n
             && state.previous_pressure.len() == n
-            && state.mixture_density.len() == n;
+            && state.mixture_density.len() == n
+            && state.eddy_viscosity.len() == n;
         if !ok {
             return Err(format!("fluid state does not match the grid ({n} points)"));
         }
@@ -256,7 +260,7 @@ impl Fluid {
 
     /// μ_SGS at cell centres from the last step [Pa s].
     pub fn eddy_viscosity(&self) -> &[f64] {
-        &self.eddy_viscosity
+        &self.state.eddy_viscosity
     }
 
     /// Sets the velocity from a function of position, evaluated on each face for its own
@@ -281,8 +285,11 @@ impl Fluid {
     }
 
     /// Makes the current velocity divergence-free (constant-coefficient projection; pressure
-    /// and history unchanged). For initial conditions.
+    /// and history unchanged). For initial conditions. Outflow faces are first shifted
+    /// uniformly so that the net flux through the boundary is zero, which the projection needs
+    /// (as in [`advance_outflow`] with Δt = 0).
     pub fn project(&mut self) {
+        advance_outflow(&self.grid, &self.boundaries, &mut self.state.velocity, 0.0);
         let rho = vec![1.0; self.grid.len()];
         let zero = self.grid.field();
         let mut scratch = self.grid.field();
@@ -340,7 +347,7 @@ impl Fluid {
                 for j in self.grid.interior(1) {
                     for i in self.grid.interior(0) {
                         let c = self.grid.index(i, j, k);
-                        nu_t = nu_t.max(self.eddy_viscosity[c] / rho[c]);
+                        nu_t = nu_t.max(self.state.eddy_viscosity[c] / rho[c]);
                     }
                 }
             }
@@ -358,9 +365,10 @@ impl Fluid {
                 for i in 0..g.n[0] {
                     let c = g.cell(i, j, k);
                     out.velocity.push(cell_velocity(st, u, c));
+                    out.vorticity.push(cell_vorticity(st, u, c));
                     out.pressure.push(self.state.pressure[c]);
                     out.mixture_density.push(self.state.mixture_density[c]);
-                    out.eddy_viscosity.push(self.eddy_viscosity[c]);
+                    out.eddy_viscosity.push(self.state.eddy_viscosity[c]);
                     out.divergence.push(divergence(st, u, c));
                 }
             }

@@ -10,6 +10,7 @@
 //! | [`interp_to_face`] | cell centres | a-face c | (f[c] + f[c − s_a]) / 2 |
 //! | [`laplacian`] | any one location | same | Σ_b (f[c + s_b] − 2 f[c] + f[c − s_b]) / Δ_b² |
 //! | [`cell_velocity`] | faces | cell c | ((u[c] + u[c + 1])/2, …) |
+//! | [`cell_vorticity`] | faces | cell c | mean of ∇ × u on the four cell edges along each axis |
 //!
 //! `divergence ∘ gradient` is the 7-point Laplacian of the cell centres: that identity is what
 //! makes the projection exact (see [`super::pressure`]).
@@ -60,4 +61,24 @@ pub fn cell_velocity(st: &Stencil, u: Velocity, c: usize) -> DVec3 {
         0.5 * (u[1][c] + u[1][c + st.s[1]]),
         0.5 * (u[2][c] + u[2][c + st.s[2]]),
     )
+}
+
+/// Vorticity ω = ∇ × u at the centre of cell `c` [s⁻¹] (u with filled ghosts).
+///
+/// Component a, with (b, d) the next two axes in cyclic order, lives naturally on the edges
+/// along a: ω_a(e) = (u_d[e] − u_d[e − s_b]) / Δ_b − (u_b[e] − u_b[e − s_d]) / Δ_d at the edge
+/// stored at e (the low b and d faces of cell e). The cell value is the mean of the four
+/// edges e ∈ {c, c + s_b, c + s_d, c + s_b + s_d} around the cell.
+#[inline]
+pub fn cell_vorticity(st: &Stencil, u: Velocity, c: usize) -> DVec3 {
+    let mut w = DVec3::ZERO;
+    for a in 0..3 {
+        let (b, d) = ((a + 1) % 3, (a + 2) % 3);
+        let (sb, sd) = (st.s[b], st.s[d]);
+        let edge = |e: usize| {
+            (u[d][e] - u[d][e - sb]) * st.inv_d[b] - (u[b][e] - u[b][e - sd]) * st.inv_d[d]
+        };
+        w[a] = 0.25 * (edge(c) + edge(c + sb) + edge(c + sd) + edge(c + sb + sd));
+    }
+    w
 }

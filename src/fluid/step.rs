@@ -13,7 +13,7 @@
 //! The first step (no history) is forward Euler (r = 0), and its variable-density projection
 //! is iterated to convergence since there is no pressure to extrapolate; p¹ then also
 //! serves as p⁰. A_a is [`super::advection`], the
-//! viscous terms [`super::diffusion`], the body forces [`super::forcing`] and the projection,
+//! viscous terms [`super::diffusion`] (both evaluated row by row by [`super::tendency`]), the body forces [`super::forcing`] and the projection,
 //! with the variable-density splitting of Dodd & Ferrante, [`super::pressure`]. The driving
 //! gradient is a known function of time and is taken at the midpoint, which keeps the
 //! scheme second order for the oscillatory drive; ρ̄ and F are those set before the step.
@@ -22,15 +22,13 @@
 //! tⁿ⁺¹ before the projection (outflow faces by the convective condition, corrected to
 //! conserve volume); the projection moves only interior faces (Neumann pressure).
 
-use super::advection::advection;
 use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts};
-use super::diffusion::{molecular, subgrid};
 use super::forcing::body_acceleration;
-use super::grid::update_region;
+use super::grid::{shifted, update_rows};
 use super::model::Fluid;
-use super::operators::interp_to_face;
 use super::pressure::{Passes, PressureFields};
 use super::sgs::eddy_viscosity;
+use super::tendency::tendency_row;
 
 /// Most passes of the variable-density projection on the first step: the error shrinks by
 /// 1 − ρ₀/ρ̄_max per pass, 0.62 for quartz in water, so 100 passes reach 1e-13 below
@@ -70,7 +68,7 @@ impl Fluid {
                 &state.velocity[1][..],
                 &state.velocity[2][..],
             ];
-            eddy_viscosity(&grid, &bcs, model, mu, u, rho, &mut self.eddy_viscosity);
+            eddy_viscosity(&grid, &bcs, model, mu, u, rho, &mut state.eddy_viscosity);
         }
 
         // Hⁿ: advection and viscous stress divergence.
@@ -80,16 +78,11 @@ impl Fluid {
                 &state.velocity[1][..],
                 &state.velocity[2][..],
             ];
-            let mu_t = &self.eddy_viscosity[..];
+            let mu_t = &state.eddy_viscosity[..];
             let sgs = par.smagorinsky.is_some();
             for (a, h) in self.tendency.iter_mut().enumerate() {
-                update_region(&grid, &self.regions[a], h, |c, _| {
-                    let rho_f = interp_to_face(&st, a, rho, c);
-                    let mut viscous = molecular(&st, mu, u[a], c);
-                    if sgs {
-                        viscous += subgrid(&st, u, mu_t, a, c);
-                    }
-                    -advection(&st, u, a, c) + viscous / rho_f
+                update_rows(&grid, &self.regions[a], h, |start, row| {
+                    tendency_row(&st, a, sgs, u, mu_t, rho, mu, start, row);
                 });
             }
         }
@@ -106,16 +99,28 @@ impl Fluid {
                 &state.body_force[a],
             );
             let g_a = par.gravity[a];
-            update_region(&grid, &self.regions[a], &mut state.velocity[a], |c, old| {
-                let rho_f = interp_to_face(&st, a, rho, c);
-                let ab2 = if first {
-                    h[c]
-                } else {
-                    c_now * h[c] + c_old * h_old[c]
-                };
-                let b = body_acceleration(drive[a], rho_f, rho_w, g_a, f[c]);
-                old + dt * (ab2 + b)
-            });
+            let sa = st.s[a] as isize;
+            update_rows(
+                &grid,
+                &self.regions[a],
+                &mut state.velocity[a],
+                |start, u_row| {
+                    let len = u_row.len();
+                    let at = |f, off| shifted(f, start, off, len);
+                    let (h, h_old, f) = (at(h, 0), at(h_old, 0), at(f, 0));
+                    let (rho_c, rho_m) = (at(rho, 0), at(rho, -sa));
+                    for (i, u) in u_row.iter_mut().enumerate() {
+                        let rho_f = 0.5 * (rho_c[i] + rho_m[i]); // interp_to_face
+                        let ab2 = if first {
+                            h[i]
+                        } else {
+                            c_now * h[i] + c_old * h_old[i]
+                        };
+                        let b = body_acceleration(drive[a], rho_f, rho_w, g_a, f[i]);
+                        *u += dt * (ab2 + b);
+                    }
+                },
+            );
         }
 
         // Boundary values at tⁿ⁺¹, then the projection. Without history (first step) p̂ = 0

@@ -3,7 +3,11 @@
 //!
 //! * [`lid_driven_cavity`]: the 2D lid-driven cavity at Re = 100, 400, 1000 against the
 //!   centreline tables of Ghia, Ghia & Shin (1982), stored in
-//!   `tests/data/fluid/ghia1982_*.csv` with their provenance.
+//!   `tests/data/fluid/ghia1982_*.csv` with their provenance;
+//! * [`channel180`]: LES of turbulent channel flow at Re_τ = 178.12 against the DNS of Moser,
+//!   Kim & Mansour (1999), a case directory with its reference data and README.
+
+pub mod channel180;
 
 use super::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
 use glam::DVec3;

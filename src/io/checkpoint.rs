@@ -13,10 +13,14 @@ use crate::dem::insertion::Feeder;
 use crate::dem::spheres::Spheres;
 use crate::dem::wall_contacts::SavedWallContacts;
 use crate::dem::Stats;
+use crate::fluid::FluidState;
 use crate::math::Vec3;
+use crate::rigid::bodies::RigidBodies;
 
 const MAGIC: &[u8; 8] = b"RIPRAPCK";
-const VERSION: u32 = 2;
+/// 2: blocks and links; 3: the fluid state; 4: the storage order, the neighbour-build
+/// positions and the contact history by pair.
+const VERSION: u32 = 4;
 
 /// The saved state.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -42,6 +46,10 @@ pub struct Checkpoint {
     pub feeders: Vec<Feeder>,
     /// Counters.
     pub stats: Stats,
+    /// Blocks, wires and bonds (templates come from the scenario).
+    pub rigid: RigidBodies,
+    /// The flow, Adams-Bashforth history included (`Fluid::state`), if the run has one.
+    pub fluid: Option<FluidState>,
 }
 
 /// What can go wrong reading a checkpoint.
@@ -126,6 +134,8 @@ mod tests {
             built_at: 0.05,
             feeders: vec![],
             stats: Stats::default(),
+            rigid: Default::default(),
+            fluid: None,
         }
     }
 

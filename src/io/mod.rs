@@ -5,6 +5,7 @@
 //! leaves readable files behind.
 
 // Module declarations.
+pub mod blocks;
 pub mod checkpoint;
 pub mod csv;
 pub mod plot;

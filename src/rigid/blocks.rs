@@ -27,7 +27,7 @@ use super::templates::BlockTemplate;
 pub type BlockId = u32;
 
 /// Owner value of a sphere that belongs to no block (see `Blocks::sphere_owners`).
-pub const NO_BLOCK: u32 = u32::MAX;
+pub const NO_BLOCK: u32 = crate::dem::spheres::NO_BODY;
 
 /// Position and motion of one rigid body.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -137,6 +137,11 @@ pub struct Blocks {
     pub force: Vec<Vec3>,
     /// Total torque about x_g of the last evaluation [N m] (reference integrator).
     pub torque: Vec<Vec3>,
+    /// Displacement of the centre since the block was placed, summed step by step as nearest
+    /// periodic images, so that it stays right across periodic faces [m].
+    pub displacement: Vec<Vec3>,
+    /// Orientation when the block was placed [-].
+    pub initial_orientation: Vec<Quat>,
     /// Each block's range in `member_id` and `member_offset`.
     pub members: Vec<Range<u32>>,
     /// DEM sphere ids of the members, block after block.
@@ -190,6 +195,8 @@ impl Blocks {
         self.inertia.push(t.inertia(density));
         self.force.push(Vec3::ZERO);
         self.torque.push(Vec3::ZERO);
+        self.displacement.push(Vec3::ZERO);
+        self.initial_orientation.push(normalise(s.orientation));
         self.members.push(start..start + member_ids.len() as u32);
         id
     }
@@ -266,6 +273,18 @@ impl Blocks {
         owner
     }
 
+    /// The slot of the block with this id, if present (slots are sorted by id).
+    pub fn slot_of(&self, id: BlockId) -> Option<usize> {
+        self.id.binary_search(&id).ok()
+    }
+
+    /// Angle of the rotation from the initial orientation to the present one [rad], in [0, π].
+    pub fn rotation_angle(&self, b: usize) -> f64 {
+        let d = self.orientation[b] * self.initial_orientation[b].inverse();
+        // atan2 rather than acos(w): exact near zero, where acos loses half the digits.
+        2.0 * d.xyz().length().atan2(d.w.abs())
+    }
+
     /// Kinetic energy Σ ½ M v² + ½ ω·I ω of all blocks [J].
     pub fn kinetic_energy(&self) -> f64 {
         (0..self.len())
@@ -292,6 +311,8 @@ impl Blocks {
             self.inertia.push(old.inertia[b]);
             self.force.push(old.force[b]);
             self.torque.push(old.torque[b]);
+            self.displacement.push(old.displacement[b]);
+            self.initial_orientation.push(old.initial_orientation[b]);
         }
     }
 }

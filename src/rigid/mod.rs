@@ -15,7 +15,8 @@
 //! | `members` | member slices; rigid placement; force and torque sums | [46][48] |
 //! | `pms` | **the source's model**: recovery of a block from its free members | [34]-[36], [41]-[49] |
 //! | `newton_euler` | **the reference integrator**: Newton-Euler with quaternions, symplectic rotation | |
-//! | `links` | tension-only wires between blocks, breakable bonds | |
+//! | `links` | tension-only wires between blocks, breakable parallel bonds (bending, twist) | |
+//! | `bodies` | `RigidBodies`: blocks and links as the time step sees them (link forces, PMS phase) | [34]-[49] |
 //!
 //! Two ways to move a block, with the same `Blocks` state and the same member spheres:
 //!
@@ -28,6 +29,7 @@
 //!   drift. riprap's tests use it as the reference for PMS.
 
 pub mod blocks;
+pub mod bodies;
 pub mod jacobi;
 pub mod library;
 pub mod links;

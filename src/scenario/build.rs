@@ -3,9 +3,11 @@
 
 use std::fmt::Write as _;
 
+use super::blocks::build_blocks;
+use super::fluid::build_fluid;
 use super::schema::{v3, ContactSection, DampingName, ModelName, WallSection};
-use super::spheres::build_spheres;
-use super::{ScenarioError, Source};
+use super::spheres::{build_spheres, check_walls};
+use super::{FluidDerived, ScenarioError, Source};
 use crate::dem::contacts::PairContacts;
 use crate::dem::domain::Domain;
 use crate::dem::material::{ContactModel, Damping, Material, NormalSpring, PairLaw, PairOverride};
@@ -42,17 +44,40 @@ pub struct Derived {
     /// Per pairing: (restitution a run at this step shows, steps in contact), from
     /// `timestep::discrete_impact` at the reference velocity.
     pub at_step: Vec<(f64, u64)>,
+    /// One line per block template (count, size, mass), and the links.
+    pub block_lines: Vec<String>,
+    /// The flow, if the scenario has one.
+    pub fluid: Option<FluidDerived>,
 }
 
 impl Derived {
-    /// The report printed by `riprap check`.
+    /// The report printed by `riprap check`: the spheres' part (unless there are none and a
+    /// fluid), then the fluid's.
     pub fn report(&self) -> String {
+        let mut s = match &self.fluid {
+            Some(_) if self.spheres == (0, 0) => "spheres: none (a flow-only scenario)\n".into(),
+            _ => self.sphere_report(),
+        };
+        if let Some(f) = &self.fluid {
+            s.push_str(&f.report());
+        }
+        s
+    }
+
+    /// The spheres' part of the report.
+    fn sphere_report(&self) -> String {
         let mut s = String::new();
         let _ = writeln!(
             s,
             "spheres: {} at the start, {} fed during the run",
             self.spheres.0, self.spheres.1
         );
+        if !self.block_lines.is_empty() {
+            let _ = writeln!(s, "rigid blocks:");
+            for l in &self.block_lines {
+                let _ = writeln!(s, "  {l}");
+            }
+        }
         let _ = writeln!(
             s,
             "reference impact velocity: {:.3} m/s",
@@ -223,7 +248,7 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     let gravity = v3(gravity);
 
     // Materials.
-    if sc.materials.is_empty() {
+    if sc.materials.is_empty() && sc.fluid.is_none() {
         return Err(src.invalid("material", "at least one [[material]] is needed"));
     }
     let mut materials = Vec::new();
@@ -309,13 +334,24 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     }
 
     let walls = build_walls(src, &names)?;
-    let (spheres, feeders) = build_spheres(src, &names, &materials, &domain)?;
+    let (mut spheres, feeders, mut origin) = build_spheres(src, &names, &materials, &domain)?;
+    let rigid = build_blocks(src, &names, &materials, &domain, &mut spheres, &mut origin)?;
+    check_walls(src, &spheres, &origin)?;
 
-    // Pairings present: every material with its smallest and largest radius.
-    let mut kinds: Vec<(u16, f64)> = Vec::new();
-    let mut note = |m: u16, r: f64| {
-        if !kinds.iter().any(|&(a, b)| a == m && b == r) {
-            kinds.push((m, r));
+    // Pairings present: every material with its smallest and largest radius, and the members of
+    // each block template with the smallest and the largest member mass (within a step a member
+    // moves as a free sphere of its own mass, so that mass sets the contact period).
+    let ball = |m: u16, r: f64| {
+        materials[m as usize].density * 4.0 / 3.0 * std::f64::consts::PI * r.powi(3)
+    };
+    let mut kinds: Vec<(u16, f64, f64, &str)> = Vec::new();
+    let mut note = |m: u16, r: f64, mass: f64, what: &'static str| {
+        let same = |x: f64, y: f64| (x - y).abs() <= 1e-9 * x.abs().max(y.abs());
+        if !kinds
+            .iter()
+            .any(|&(a, b, c, _)| a == m && same(b, r) && same(c, mass))
+        {
+            kinds.push((m, r, mass, what));
         }
     };
     for m in 0..n_mat as u16 {
@@ -323,8 +359,9 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             .radius
             .iter()
             .zip(&spheres.material)
-            .filter(|(_, &mm)| mm == m)
-            .map(|(r, _)| *r);
+            .zip(&spheres.body)
+            .filter(|((_, &mm), &b)| mm == m && b == crate::dem::spheres::NO_BODY)
+            .map(|((r, _), _)| *r);
         let feed = feeders
             .iter()
             .flat_map(|f| f.classes.iter())
@@ -335,24 +372,35 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             all.iter().cloned().reduce(f64::min),
             all.iter().cloned().reduce(f64::max),
         ) {
-            note(m, lo);
-            note(m, hi);
+            note(m, lo, ball(m, lo), "");
+            note(m, hi, ball(m, hi), "");
+        }
+    }
+    for (t, tpl) in rigid.templates.iter().enumerate() {
+        if !rigid.blocks.template.contains(&(t as u32)) {
+            continue;
+        }
+        let m = material_of(src, &names, "", Some(&sc.block_templates[t].material))?;
+        let masses = tpl.member_masses(materials[m as usize].density);
+        let by = |f: &dyn Fn(usize, usize) -> bool| {
+            (0..masses.len())
+                .reduce(|a, b| if f(b, a) { b } else { a })
+                .unwrap_or(0)
+        };
+        let light = by(&|b, a| masses[b] < masses[a]);
+        let big = by(&|b, a| tpl.members[b].radius > tpl.members[a].radius);
+        for k in [light, big] {
+            note(m, tpl.members[k].radius, masses[k], "block member ");
         }
     }
     let g = gravity.length();
-    let mass = |m: u16, r: f64| {
-        materials[m as usize].density * 4.0 / 3.0 * std::f64::consts::PI * r.powi(3)
-    };
     let mut pairings = Vec::new();
-    for (a, &(ma, ra)) in kinds.iter().enumerate() {
-        for &(mb, rb) in &kinds[a..] {
+    for (a, &(ma, ra, mass_a, what_a)) in kinds.iter().enumerate() {
+        for &(mb, rb, mass_b, what_b) in &kinds[a..] {
             let law = &laws[ma as usize * n_mat + mb as usize];
-            let (r_star, m_star) = (
-                ra * rb / (ra + rb),
-                mass(ma, ra) * mass(mb, rb) / (mass(ma, ra) + mass(mb, rb)),
-            );
+            let (r_star, m_star) = (ra * rb / (ra + rb), mass_a * mass_b / (mass_a + mass_b));
             let name = format!(
-                "{} d={:.4} / {} d={:.4}",
+                "{what_a}{} d={:.4} / {what_b}{} d={:.4}",
                 names[ma as usize],
                 2.0 * ra,
                 names[mb as usize],
@@ -360,13 +408,7 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             );
             pairings.push((
                 name,
-                contact_scales(
-                    law,
-                    r_star,
-                    m_star,
-                    v_ref,
-                    mass(ma, ra).min(mass(mb, rb)) * g,
-                ),
+                contact_scales(law, r_star, m_star, v_ref, mass_a.min(mass_b) * g),
             ));
         }
         let mut seen = Vec::new();
@@ -377,21 +419,40 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             seen.push(w.material);
             let law = &laws[ma as usize * n_mat + w.material as usize];
             let name = format!(
-                "{} d={:.4} / wall {}",
+                "{what_a}{} d={:.4} / wall {}",
                 names[ma as usize],
                 2.0 * ra,
                 names[w.material as usize]
             );
-            pairings.push((
-                name,
-                contact_scales(law, ra, mass(ma, ra), v_ref, mass(ma, ra) * g),
-            ));
+            pairings.push((name, contact_scales(law, ra, mass_a, v_ref, mass_a * g)));
+        }
+    }
+    // Bonds are springs too: T = 2π √(m*/k) for the normal and shear springs, 2π √(I*/k) for
+    // bending and twisting, with m*, I* of the two bonded spheres.
+    let mut bond_period = f64::INFINITY;
+    for b in &rigid.bonds {
+        let (Some(i), Some(j)) = (spheres.slot_of(b.spheres[0]), spheres.slot_of(b.spheres[1]))
+        else {
+            continue;
+        };
+        let m = harmonic(spheres.mass[i], spheres.mass[j]);
+        let inertia = harmonic(spheres.inertia[i], spheres.inertia[j]);
+        let l = &b.bond;
+        for (inert, k) in [
+            (m, l.normal_stiffness),
+            (m, l.shear_stiffness),
+            (inertia, l.bending_stiffness),
+            (inertia, l.twisting_stiffness),
+        ] {
+            if k > 0.0 {
+                bond_period = bond_period.min(std::f64::consts::TAU * (inert / k).sqrt());
+            }
         }
     }
     let min_period = pairings
         .iter()
         .map(|p| p.1.period)
-        .fold(f64::INFINITY, f64::min);
+        .fold(bond_period, f64::min);
     let max_dt = min_period / MIN_STEPS_PER_PERIOD;
     let dt = match sc.run.time_step {
         Some(dt) => {
@@ -421,6 +482,34 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     let skin_fraction = sc.run.skin_fraction.unwrap_or(0.2);
     positive(src, "run.skin_fraction", skin_fraction)?;
     let d_max = kinds.iter().map(|k| 2.0 * k.1).fold(0.0, f64::max);
+    let mut block_lines = Vec::new();
+    for (t, tpl) in rigid.templates.iter().enumerate() {
+        let n = rigid
+            .blocks
+            .template
+            .iter()
+            .filter(|&&k| k as usize == t)
+            .count();
+        let m = material_of(src, &names, "", Some(&sc.block_templates[t].material))?;
+        let rho = materials[m as usize].density;
+        block_lines.push(format!(
+            "{:<16} {:>6} blocks, {:>3} spheres each, D_n = {:.4} m, W = {:.4e} kg, bounding diameter {:.4} m, mass representation error {:.1e}",
+            tpl.name,
+            n,
+            tpl.members.len(),
+            tpl.nominal_diameter(),
+            tpl.mass(rho),
+            2.0 * super::blocks::bounding_radius(tpl),
+            tpl.representation_error
+        ));
+    }
+    if !rigid.wires.is_empty() || !rigid.bonds.is_empty() {
+        block_lines.push(format!(
+            "links: {} wires, {} bonds",
+            rigid.wires.len(),
+            rigid.bonds.len()
+        ));
+    }
     let n_fed: usize = feeders.iter().map(|f| f.total).sum();
     let n_total = spheres.len() + n_fed;
     for (p, &id) in sc.output.probes.iter().enumerate() {
@@ -461,7 +550,8 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             sc.run.max_overlap_ratio.unwrap_or(0.5),
         )?,
     };
-    let mut spheres = spheres;
+    let radii: Vec<f64> = kinds.iter().map(|k| k.1).collect();
+    let fluid = build_fluid(src, &domain, gravity, dt, &radii)?;
     spheres.reserve(n_fed);
     let dem = Dem {
         spheres,
@@ -493,12 +583,22 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         // and sorting ~150 B, ~4 listed pairs at 62 B, wall lists ~40 B.
         memory: n_total as f64 * 620.0,
         at_step,
+        block_lines,
+        fluid: fluid.as_ref().map(|f| f.1.clone()),
     };
-    let simulation = Simulation::new(dem, feeders, min_period);
+    let mut simulation = Simulation::with_bodies(dem, feeders, rigid, min_period);
+    if let Some((f, _)) = fluid {
+        simulation = simulation.with_fluid(f);
+    }
     Ok(Built {
         simulation,
         derived,
     })
+}
+
+/// a b / (a + b): the reduced mass or inertia of two bodies.
+fn harmonic(a: f64, b: f64) -> f64 {
+    a * b / (a + b)
 }
 
 /// The restitution of a head-on impact in continuous time: what the dashpots were chosen for.

@@ -2,8 +2,10 @@
 //!
 //! Every error names the file, the line, the key and the reason. Unknown keys are errors.
 
+mod blocks;
 mod build;
 pub mod default;
+pub mod fluid;
 pub mod schema;
 mod spheres;
 
@@ -14,6 +16,7 @@ use toml::de::{DeTable, DeValue, ValueDeserializer};
 use toml::Spanned;
 
 pub use build::{build, Built, Derived};
+pub use fluid::FluidDerived;
 pub use schema::Scenario;
 
 /// What is wrong with a scenario.
@@ -251,6 +254,7 @@ fn tagged_at(path: &[Seg]) -> Option<&'static str> {
     match path {
         [Seg::Key(k), Seg::Index(_)] if k == "wall" => Some("wall"),
         [Seg::Key(k), Seg::Index(_)] if k == "spheres" => Some("spheres"),
+        [Seg::Key(k), Seg::Index(_)] if k == "blocks" => Some("blocks"),
         [.., Seg::Key(k)] if k == "motion" => Some("motion"),
         _ => None,
     }
@@ -283,6 +287,9 @@ fn payload_error(what: &str, node: &Spanned<DeValue<'_>>) -> Option<toml::de::Er
         ("spheres", "lattice") => check::<schema::LatticeSet>(de()),
         ("spheres", "random") => check::<schema::RandomSet>(de()),
         ("spheres", "feed") => check::<schema::FeedSet>(de()),
+        ("blocks", "list") => check::<schema::ListBlocks>(de()),
+        ("blocks", "lattice") => check::<schema::LatticeBlocks>(de()),
+        ("blocks", "random") => check::<schema::RandomBlocks>(de()),
         ("motion", "fixed") => check::<schema::FixedMotion>(de()),
         ("motion", "linear") => check::<schema::LinearMotion>(de()),
         ("motion", "oscillation") => check::<schema::OscillationMotion>(de()),

@@ -26,9 +26,23 @@ pub struct Scenario {
     /// Sphere sets.
     #[serde(default)]
     pub spheres: Vec<SphereSet>,
+    /// Block templates.
+    #[serde(default, rename = "block_template")]
+    pub block_templates: Vec<BlockTemplateSection>,
+    /// Block sets.
+    #[serde(default)]
+    pub blocks: Vec<BlockSet>,
+    /// Wires between blocks.
+    #[serde(default, rename = "wire")]
+    pub wires: Vec<WireSection>,
+    /// Bonds between spheres.
+    #[serde(default, rename = "bond")]
+    pub bonds: Vec<BondSection>,
     /// Output.
     #[serde(default)]
     pub output: OutputSection,
+    /// The water (`scenario::fluid`).
+    pub fluid: Option<super::fluid::FluidSection>,
 }
 
 /// `[run]`
@@ -509,4 +523,222 @@ impl Default for OutputSection {
 /// Converts a TOML triple.
 pub fn v3(a: [f64; 3]) -> Vec3 {
     Vec3::from_array(a)
+}
+
+/// `[[block_template]]`: the shape and size of a rigid block made of spheres.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BlockTemplateSection {
+    /// Name, used by `[[blocks]]`.
+    pub name: String,
+    /// The shape.
+    pub shape: ShapeName,
+    /// Material of the block (its density gives the mass).
+    pub material: String,
+    /// Spheres per edge (cube, default 3), per leg (tetrapod, default 3), or in all (rock,
+    /// default 24).
+    pub resolution: Option<usize>,
+    /// Seed of a rock's shape (default 0).
+    pub seed: Option<u64>,
+    /// The spheres of `shape = "spheres"`: [x, y, z, diameter] [m], in any frame.
+    pub spheres: Option<Vec<[f64; 4]>>,
+    /// Diameter of the rod's spheres [m] (`three_sphere_rod`).
+    pub sphere_diameter: Option<f64>,
+    /// Nominal diameter D_n = V^(1/3) [m] (as D_n50 of a grading).
+    pub nominal_diameter: Option<f64>,
+    /// Unit mass W [kg] (instead of `nominal_diameter`).
+    pub mass: Option<f64>,
+}
+
+/// A template's shape.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ShapeName {
+    /// Three equal spheres touching in a line (the source's settling block).
+    ThreeSphereRod,
+    /// A cube of overlapping spheres.
+    Cube,
+    /// A tetrapod: a core and four tapered legs at tetrahedral angles.
+    Tetrapod,
+    /// An irregular rock-like cluster from a seed.
+    Rock,
+    /// The user's own list of spheres.
+    Spheres,
+}
+
+/// One block of a `list` set.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BlockEntry {
+    /// Centre of mass [m].
+    pub position: [f64; 3],
+    /// Rotation vector (axis × angle) from the template's definition frame [rad] (default none).
+    #[serde(default)]
+    pub rotation: [f64; 3],
+    /// Velocity of the centre [m s⁻¹].
+    #[serde(default)]
+    pub velocity: [f64; 3],
+    /// Angular velocity [rad s⁻¹].
+    #[serde(default)]
+    pub angular_velocity: [f64; 3],
+}
+
+/// `[[blocks]]`: a set of blocks of one template, placed by `kind`.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum BlockSet {
+    /// Blocks listed one by one.
+    List(ListBlocks),
+    /// Blocks on a simple cubic lattice filling a box.
+    Lattice(LatticeBlocks),
+    /// Blocks dropped at random sites of a box (by count or to a layer thickness).
+    Random(RandomBlocks),
+}
+
+impl BlockSet {
+    /// The kind, as written in TOML.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            BlockSet::List(_) => "list",
+            BlockSet::Lattice(_) => "lattice",
+            BlockSet::Random(_) => "random",
+        }
+    }
+}
+
+/// `kind = "list"`
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ListBlocks {
+    /// Template name.
+    pub template: String,
+    /// The blocks.
+    pub blocks: Vec<BlockEntry>,
+}
+
+/// `kind = "lattice"`
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LatticeBlocks {
+    /// Template name.
+    pub template: String,
+    /// Lower corner of the box [m].
+    pub min: [f64; 3],
+    /// Upper corner [m].
+    pub max: [f64; 3],
+    /// Lattice spacing [m] (default: the template's bounding diameter, so blocks never touch).
+    pub spacing: Option<f64>,
+    /// Random orientations (default true).
+    #[serde(default = "yes")]
+    pub random_orientation: bool,
+    /// Seed of the orientations.
+    #[serde(default)]
+    pub seed: u64,
+    /// Initial velocity [m s⁻¹].
+    #[serde(default)]
+    pub velocity: [f64; 3],
+}
+
+/// `kind = "random"`: blocks at random sites of a box, with random orientations, to be dropped
+/// and packed by gravity.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RandomBlocks {
+    /// Template name.
+    pub template: String,
+    /// Lower corner of the release box [m].
+    pub min: [f64; 3],
+    /// Upper corner [m].
+    pub max: [f64; 3],
+    /// Number of blocks.
+    pub count: Option<usize>,
+    /// Or: the thickness of the layer they should form once packed [m], over the box's
+    /// horizontal footprint, n = t A (1 − porosity) / V.
+    pub layer_thickness: Option<f64>,
+    /// Porosity of the packed layer [-] (default 0.5, typical of tetrapod and cube armour).
+    pub porosity: Option<f64>,
+    /// Seed of the sites and orientations.
+    #[serde(default)]
+    pub seed: u64,
+    /// Initial velocity [m s⁻¹].
+    #[serde(default)]
+    pub velocity: [f64; 3],
+}
+
+/// One end of a `[[wire]]`.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WireEndSection {
+    /// Block id (blocks are numbered from 0 in the order they are defined); none: a fixed point.
+    pub block: Option<u32>,
+    /// On a block, the offset from its centre in its body frame [m]; else the world point [m].
+    #[serde(default)]
+    pub point: [f64; 3],
+}
+
+/// `[[wire]]`: a tension-only wire between two blocks, or a block and a fixed point.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WireSection {
+    /// The two ends.
+    pub ends: [WireEndSection; 2],
+    /// Length at which the wire becomes taut [m] (default: the initial distance of the ends).
+    pub slack_length: Option<f64>,
+    /// Axial stiffness E A / l₀ [N m⁻¹].
+    pub stiffness: f64,
+    /// Damping of the stretching [N s m⁻¹] (default 0).
+    #[serde(default)]
+    pub damping: f64,
+    /// Breaking force [N] (default: unbreakable).
+    pub breaking_force: Option<f64>,
+}
+
+/// Which sphere pairs a `[[bond]]` glues.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BondBetween {
+    /// Every pair of spheres (not of the same block) closer than `gap` at the start.
+    Touching,
+    /// The pairs of sphere ids in `spheres`.
+    Pairs,
+}
+
+/// `[[bond]]`: breakable bonds between spheres (free ones, or members of different blocks).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BondSection {
+    /// Which pairs.
+    pub between: BondBetween,
+    /// The pairs of sphere ids (`between = "pairs"`).
+    pub spheres: Option<Vec<[u32; 2]>>,
+    /// Largest surface gap bonded, as a fraction of the smaller radius (`touching`; default 0.01).
+    pub gap: Option<f64>,
+    /// Normal stiffness [N m⁻¹].
+    pub normal_stiffness: f64,
+    /// Shear stiffness [N m⁻¹].
+    pub shear_stiffness: f64,
+    /// Bending stiffness [N m rad⁻¹] (default 0: the bond hinges).
+    #[serde(default)]
+    pub bending_stiffness: f64,
+    /// Twisting stiffness [N m rad⁻¹] (default 0).
+    #[serde(default)]
+    pub twisting_stiffness: f64,
+    /// Normal dashpot [N s m⁻¹] (default 0).
+    #[serde(default)]
+    pub normal_damping: f64,
+    /// Shear dashpot [N s m⁻¹] (default 0).
+    #[serde(default)]
+    pub shear_damping: f64,
+    /// Bending dashpot [N m s rad⁻¹] (default 0).
+    #[serde(default)]
+    pub bending_damping: f64,
+    /// Twisting dashpot [N m s rad⁻¹] (default 0).
+    #[serde(default)]
+    pub twisting_damping: f64,
+    /// Tensile strength [N] (default: unbreakable).
+    pub tensile_strength: Option<f64>,
+    /// Shear strength [N] (default: unbreakable).
+    pub shear_strength: Option<f64>,
+    /// Bending strength [N m] (default: unbreakable).
+    pub bending_strength: Option<f64>,
 }

@@ -111,7 +111,7 @@ fn size_classes(
 }
 
 /// Refuses a region [min, max] of a sphere set that is empty or reaches outside the domain.
-fn check_region(
+pub(super) fn check_region(
     src: &Source,
     key: &str,
     min: [f64; 3],
@@ -156,7 +156,7 @@ pub(super) fn build_spheres(
     names: &[String],
     materials: &[Material],
     domain: &Domain,
-) -> Result<(Spheres, Vec<Feeder>), ScenarioError> {
+) -> Result<(Spheres, Vec<Feeder>, Vec<String>), ScenarioError> {
     let mut spheres = Spheres::default();
     let mut feeders = Vec::new();
     // Where each initial sphere comes from, for messages: its key path.
@@ -343,8 +343,7 @@ pub(super) fn build_spheres(
         }
         check_overlaps(src, &spheres, first, domain, &origin)?;
     }
-    check_walls(src, &spheres, &origin)?;
-    Ok((spheres, feeders))
+    Ok((spheres, feeders, origin))
 }
 
 /// Refuses initial spheres that overlap (spheres from `first` on against all earlier ones).
@@ -401,7 +400,11 @@ fn check_overlaps(
 
 /// Refuses initial spheres whose centre lies on the wrong side of a wall (behind a plane, out of
 /// a container, inside an obstacle): the wall would throw them out with a huge force.
-fn check_walls(src: &Source, s: &Spheres, origin: &[String]) -> Result<(), ScenarioError> {
+pub(super) fn check_walls(
+    src: &Source,
+    s: &Spheres,
+    origin: &[String],
+) -> Result<(), ScenarioError> {
     for (w, wall) in src.scenario.walls.iter().enumerate() {
         let name = wall
             .common()

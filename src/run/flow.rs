@@ -1,0 +1,296 @@
+//! The flow's outputs in a run: `flow.pvd` + `flow_NNNNNN.vti` (ParaView image data, values at
+//! cell centres), `sample_<name>.csv` for the `[[fluid.sample]]` lines and planes, the fluid
+//! columns of `series.csv`, and the fluid part of a restart.
+//!
+//! Image arrays: `velocity` [m s⁻¹], `pressure` (less hydrostatic) [Pa], `vorticity` [s⁻¹],
+//! `eddy_viscosity` μ_SGS [Pa s], `mixture_density` ρ̄ [kg m⁻³] [53], `divergence` [s⁻¹].
+//! Sample rows: one per cell per time, cells in storage order (x fastest), with the columns of
+//! [`SAMPLE_COLUMNS`]; `pandas.read_csv(...).groupby("time")` gives one profile per time.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Context};
+
+use super::schedule::Schedule;
+use super::SERIES_COLUMNS;
+use crate::fluid::{CellFields, Fluid};
+use crate::io::checkpoint::Checkpoint;
+use crate::io::csv::CsvSeries;
+use crate::io::pvd::PvdSeries;
+use crate::io::vtk::{write_image, Array};
+use crate::math::Vec3;
+use crate::scenario::fluid::{SampleKind, SampleSection};
+use crate::simulation::Simulation;
+
+/// The fluid's columns of `series.csv`, after [`SERIES_COLUMNS`]: kinetic energy of the flow
+/// [J], largest speed at a cell centre [m s⁻¹], largest |∇·u| [s⁻¹], last fluid step [s].
+pub const FLUID_SERIES_COLUMNS: [&str; 4] = [
+    "fluid_kinetic_energy",
+    "fluid_max_speed",
+    "fluid_max_divergence",
+    "fluid_time_step",
+];
+
+/// Columns of a sample file.
+pub const SAMPLE_COLUMNS: [&str; 13] = [
+    "time",
+    "x",
+    "y",
+    "z",
+    "velocity_x",
+    "velocity_y",
+    "velocity_z",
+    "pressure",
+    "vorticity_x",
+    "vorticity_y",
+    "vorticity_z",
+    "eddy_viscosity",
+    "mixture_density",
+];
+
+/// The columns of `series.csv` for this simulation.
+pub fn series_columns(sim: &Simulation) -> Vec<&'static str> {
+    let mut c = SERIES_COLUMNS.to_vec();
+    if sim.fluid.is_some() {
+        c.extend(FLUID_SERIES_COLUMNS);
+    }
+    c
+}
+
+/// Appends the fluid's values of [`FLUID_SERIES_COLUMNS`] to a row of `series.csv`.
+pub fn append_series(sim: &Simulation, row: &mut Vec<f64>) {
+    if let Some(f) = &sim.fluid {
+        row.extend([
+            f.kinetic_energy(),
+            f.max_cell_speed(),
+            f.max_divergence(),
+            f.last_time_step(),
+        ]);
+    }
+}
+
+/// Checks that a checkpoint fits the scenario's fluid (both have one or neither, same grid).
+pub fn check_restart(sim: &Simulation, ck: &Checkpoint, path: &Path) -> anyhow::Result<()> {
+    match (&sim.fluid, &ck.fluid) {
+        (None, None) => Ok(()),
+        (Some(_), None) => bail!(
+            "{}: saved by a run without a fluid, and the scenario now has [fluid]",
+            path.display()
+        ),
+        (None, Some(_)) => bail!(
+            "{}: saved by a run with a fluid, and the scenario now has no [fluid]",
+            path.display()
+        ),
+        (Some(f), Some(s)) => {
+            if s.pressure.len() != f.grid().len() || s.velocity[0].len() != f.grid().len() {
+                bail!(
+                    "{}: the saved flow does not fit the scenario's grid {:?} (was the grid \
+                     changed?)",
+                    path.display(),
+                    f.grid().n
+                );
+            }
+            Ok(())
+        }
+    }
+}
+
+/// Writes the flow as a `.vti` image at `path`.
+pub fn write_flow(fluid: &Fluid, fields: &CellFields, path: &Path) -> std::io::Result<()> {
+    let g = fluid.grid();
+    write_image(
+        path,
+        g.n,
+        g.origin,
+        g.spacing,
+        &[
+            Array::vectors("velocity", &fields.velocity),
+            Array::scalars("pressure", &fields.pressure),
+            Array::vectors("vorticity", &fields.vorticity),
+            Array::scalars("eddy_viscosity", &fields.eddy_viscosity),
+            Array::scalars("mixture_density", &fields.mixture_density),
+            Array::scalars("divergence", &fields.divergence),
+        ],
+    )
+}
+
+/// One line or plane of cells written to CSV on its own schedule.
+struct Sample {
+    /// Compact cell indices (i + nx (j + ny k)), x fastest.
+    cells: Vec<usize>,
+    /// Their centres [m].
+    centres: Vec<Vec3>,
+    csv: CsvSeries,
+    schedule: Schedule,
+    /// Due after this step.
+    pending: bool,
+}
+
+impl Sample {
+    /// The cells of a sample: along or across `axis`, through the cell holding `position`.
+    fn cells(fluid: &Fluid, s: &SampleSection) -> (Vec<usize>, Vec<Vec3>) {
+        let g = fluid.grid();
+        let a = s.axis.index();
+        let p = Vec3::from_array(s.position);
+        let at: [usize; 3] = std::array::from_fn(|b| {
+            let i = ((p[b] - g.origin[b]) / g.spacing[b]).floor();
+            (i.max(0.0) as usize).min(g.n[b] - 1)
+        });
+        let fixed = |b: usize| match s.kind {
+            SampleKind::Line => b != a,
+            SampleKind::Plane => b == a,
+        };
+        let range = |b: usize| {
+            if fixed(b) {
+                at[b]..at[b] + 1
+            } else {
+                0..g.n[b]
+            }
+        };
+        let (mut cells, mut centres) = (Vec::new(), Vec::new());
+        for k in range(2) {
+            for j in range(1) {
+                for i in range(0) {
+                    cells.push(i + g.n[0] * (j + g.n[1] * k));
+                    centres.push(g.cell_centre(i, j, k));
+                }
+            }
+        }
+        (cells, centres)
+    }
+
+    fn write(&mut self, time: f64, f: &CellFields) -> std::io::Result<()> {
+        for (&c, x) in self.cells.iter().zip(&self.centres) {
+            let (u, w) = (f.velocity[c], f.vorticity[c]);
+            self.csv.row(&[
+                time,
+                x.x,
+                x.y,
+                x.z,
+                u.x,
+                u.y,
+                u.z,
+                f.pressure[c],
+                w.x,
+                w.y,
+                w.z,
+                f.eddy_viscosity[c],
+                f.mixture_density[c],
+            ])?;
+        }
+        Ok(())
+    }
+}
+
+/// The flow's files of a run.
+pub struct FlowOutput {
+    dir: PathBuf,
+    pvd: PvdSeries,
+    samples: Vec<Sample>,
+}
+
+impl FlowOutput {
+    /// Opens `flow.pvd` and the sample files in `dir` (resuming them at the simulation's time
+    /// when `resuming`), and, for a fresh run, writes the state at t = 0.
+    pub fn open(
+        sim: &Simulation,
+        sections: &[SampleSection],
+        dir: &Path,
+        resuming: bool,
+    ) -> anyhow::Result<Option<FlowOutput>> {
+        let Some(fluid) = &sim.fluid else {
+            return Ok(None);
+        };
+        let t0 = sim.time;
+        let pvd_path = dir.join("flow.pvd");
+        let pvd = if resuming && pvd_path.exists() {
+            PvdSeries::resume(&pvd_path, t0)?
+        } else {
+            PvdSeries::new(&pvd_path)
+        };
+        let mut samples = Vec::new();
+        for (i, s) in sections.iter().enumerate() {
+            let path = dir.join(s.file_name(i));
+            let csv = if resuming {
+                CsvSeries::resume(&path, &SAMPLE_COLUMNS, t0)
+            } else {
+                CsvSeries::create(&path, &SAMPLE_COLUMNS)
+            }
+            .with_context(|| format!("cannot open {}", path.display()))?;
+            let (cells, centres) = Sample::cells(fluid, s);
+            let mut schedule = Schedule::new(s.interval, 0.0, true);
+            schedule.start(t0, sim.step);
+            samples.push(Sample {
+                cells,
+                centres,
+                csv,
+                schedule,
+                pending: false,
+            });
+        }
+        let mut out = FlowOutput {
+            dir: dir.to_path_buf(),
+            pvd,
+            samples,
+        };
+        if !resuming {
+            let fields = fluid.cell_fields();
+            out.snapshot(sim, &fields)?;
+            for s in &mut out.samples {
+                s.write(t0, &fields)?;
+            }
+        }
+        Ok(Some(out))
+    }
+
+    /// After a step: writes the samples that are due, and a snapshot when `snapshot`.
+    pub fn after_step(&mut self, sim: &Simulation, snapshot: bool) -> anyhow::Result<()> {
+        let Some(fluid) = &sim.fluid else {
+            return Ok(());
+        };
+        let mut any = snapshot;
+        for s in &mut self.samples {
+            s.pending = s.schedule.due(sim.time, sim.step);
+            any |= s.pending;
+        }
+        if !any {
+            return Ok(());
+        }
+        let fields = fluid.cell_fields();
+        if snapshot {
+            self.snapshot(sim, &fields)?;
+        }
+        for s in self.samples.iter_mut().filter(|s| s.pending) {
+            s.write(sim.time, &fields)?;
+        }
+        Ok(())
+    }
+
+    /// Writes `flow_NNNNNN.vti` and adds it to `flow.pvd`.
+    fn snapshot(&mut self, sim: &Simulation, fields: &CellFields) -> anyhow::Result<()> {
+        let Some(fluid) = &sim.fluid else {
+            return Ok(());
+        };
+        let name = format!("flow_{:06}.vti", self.pvd.entries().len());
+        let path = self.dir.join(&name);
+        write_flow(fluid, fields, &path)
+            .with_context(|| format!("cannot write {}", path.display()))?;
+        self.pvd.add(sim.time, &name, 0)?;
+        Ok(())
+    }
+
+    /// Writes the final snapshot (when the schedule did not just write one).
+    pub fn finish(&mut self, sim: &Simulation) -> anyhow::Result<()> {
+        if let Some(fluid) = &sim.fluid {
+            self.snapshot(sim, &fluid.cell_fields())?;
+        }
+        Ok(())
+    }
+}
+
+/// Writes the flow that failed to `flow_failed.vti` (best effort).
+pub fn write_failed(sim: &Simulation, dir: &Path) {
+    if let Some(f) = &sim.fluid {
+        let _ = write_flow(f, &f.cell_fields(), &dir.join("flow_failed.vti"));
+    }
+}

@@ -1,0 +1,242 @@
+//! The `[fluid]` section of a scenario: the water of METHOD.md §4 on a staggered grid, its
+//! boundaries, driving pressure gradient, time-step limits, initial velocity and samples; the
+//! checks with file:line:key messages, the built `Fluid`, and what `riprap check` prints.
+//!
+//! ```toml
+//! [fluid]
+//! cell_size = 1.2875e-3            # m (or cells = [nx, ny, nz]); box = [domain] unless min/max
+//! density = 1000.0                 # kg/m3 (default 998.2, water at 20 °C)
+//! kinematic_viscosity = 1.0e-6     # m2/s (default 1.004e-6)
+//! smagorinsky = true               # C_s = 0.1, van Driest A⁺ = 25 [56]-[58] unless set
+//! cfl_number = 0.3                 # advective Courant number of the adaptive step
+//! max_time_step = 0.01             # s, user bound on the fluid step
+//! initial_velocity = [0.0, 0.0, 0.0]
+//! perturbation_amplitude = 0.01    # m/s, seeded white noise, then projected
+//!
+//! [fluid.boundaries]               # faces not given: periodic where [domain] is, else wall
+//! z_min = { kind = "wall" }
+//! z_max = { kind = "free_slip" }
+//!
+//! [fluid.driving_pressure_gradient]
+//! kind = "oscillatory"             # U_∞ = U_max sin(2π t / T)
+//! velocity_amplitude = [0.85, 0.0, 0.0]
+//! period = 5.0
+//!
+//! [[fluid.sample]]                 # cell values along a line (or on a plane) to CSV
+//! name = "profile"
+//! kind = "line"
+//! axis = "z"
+//! position = [0.04, 0.01, 0.0]
+//! interval = 0.05
+//! ```
+//!
+//! The schema is here; [`build`] checks it and makes the `Fluid`, [`report`] holds what
+//! `riprap check` prints.
+
+mod build;
+mod report;
+
+pub(super) use build::build_fluid;
+pub use report::{FluidDerived, CELLS_PER_DIAMETER};
+
+use serde::{Deserialize, Serialize};
+
+/// `[fluid]`: the water. Every key is optional except the grid resolution (`cell_size` or
+/// `cells`).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FluidSection {
+    /// Lower corner of the flow box [m] (default: `domain.min`).
+    pub min: Option<[f64; 3]>,
+    /// Upper corner of the flow box [m] (default: `domain.max`).
+    pub max: Option<[f64; 3]>,
+    /// Target cell size Δ [m]: each axis gets round(L / Δ) cells (give this or `cells`).
+    pub cell_size: Option<f64>,
+    /// Cells along x, y, z (give this or `cell_size`).
+    pub cells: Option<[usize; 3]>,
+    /// Density of water ρ_w [kg m⁻³] (default 998.2).
+    pub density: Option<f64>,
+    /// Kinematic viscosity ν [m² s⁻¹] (default 1.004e-6).
+    pub kinematic_viscosity: Option<f64>,
+    /// Smagorinsky subgrid model [56]-[58] on or off (default on).
+    #[serde(default = "yes")]
+    pub smagorinsky: bool,
+    /// C_s [–] (default 0.1, the source's).
+    pub smagorinsky_coefficient: Option<f64>,
+    /// Van Driest damping near no-slip walls [58] (default on).
+    pub van_driest_damping: Option<bool>,
+    /// A⁺ [–] (default 25, as in [58]).
+    pub van_driest_constant: Option<f64>,
+    /// Advective Courant number C_adv of the adaptive step [–] (default 0.3).
+    pub cfl_number: Option<f64>,
+    /// Viscous number C_visc of the adaptive step [–] (default 0.2; at most 0.25).
+    pub viscous_number: Option<f64>,
+    /// Upper bound on the fluid step [s] (default none).
+    pub max_time_step: Option<f64>,
+    /// Uniform initial velocity [m s⁻¹] (default zero).
+    #[serde(default)]
+    pub initial_velocity: [f64; 3],
+    /// Amplitude of a random initial perturbation [m s⁻¹] (default 0): each face velocity gets
+    /// a uniform value in [−A, A], then the field is projected to be divergence-free.
+    #[serde(default)]
+    pub perturbation_amplitude: f64,
+    /// Seed of the perturbation.
+    #[serde(default)]
+    pub perturbation_seed: u64,
+    /// The six faces.
+    #[serde(default)]
+    pub boundaries: BoundariesSection,
+    /// A uniform pressure gradient that drives the flow.
+    pub driving_pressure_gradient: Option<DrivingSection>,
+    /// Line and plane samples written to CSV.
+    #[serde(default, rename = "sample")]
+    pub samples: Vec<SampleSection>,
+}
+
+fn yes() -> bool {
+    true
+}
+
+/// `[fluid.boundaries]`: one entry per face; a face not given is periodic where `[domain]`
+/// is periodic and a fixed no-slip wall elsewhere.
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BoundariesSection {
+    /// Face x = min.x.
+    pub x_min: Option<FaceSection>,
+    /// Face x = max.x.
+    pub x_max: Option<FaceSection>,
+    /// Face y = min.y.
+    pub y_min: Option<FaceSection>,
+    /// Face y = max.y.
+    pub y_max: Option<FaceSection>,
+    /// Face z = min.z.
+    pub z_min: Option<FaceSection>,
+    /// Face z = max.z.
+    pub z_max: Option<FaceSection>,
+}
+
+impl BoundariesSection {
+    /// The faces as `[axis][low, high]`.
+    fn faces(&self) -> [[&Option<FaceSection>; 2]; 3] {
+        [
+            [&self.x_min, &self.x_max],
+            [&self.y_min, &self.y_max],
+            [&self.z_min, &self.z_max],
+        ]
+    }
+}
+
+/// What happens on a face.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FaceKind {
+    /// Flow leaving re-enters through the opposite face (both faces of the axis).
+    Periodic,
+    /// No-slip wall, fixed or sliding in its own plane with `velocity`.
+    Wall,
+    /// Impermeable, zero shear (a symmetry plane or rigid lid).
+    FreeSlip,
+    /// Prescribed velocity: `velocity` + `velocity_amplitude` sin(2π t / `period`).
+    Inflow,
+    /// Convective outflow, corrected to conserve volume.
+    Outflow,
+}
+
+/// One face: `{ kind = "wall", velocity = [0.1, 0.0, 0.0] }`.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FaceSection {
+    /// The condition.
+    pub kind: FaceKind,
+    /// Wall velocity (tangential) or mean inflow velocity [m s⁻¹].
+    pub velocity: Option<[f64; 3]>,
+    /// Inflow: amplitude of the oscillating part [m s⁻¹].
+    pub velocity_amplitude: Option<[f64; 3]>,
+    /// Inflow: period of the oscillation [s].
+    pub period: Option<f64>,
+}
+
+/// Steady or oscillatory drive.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DrivingKind {
+    /// Constant −∇P = `force_density`.
+    Steady,
+    /// −∇P = ρ_w U_max (2π/T) cos(2π t/T): free stream U_max sin(2π t/T).
+    Oscillatory,
+}
+
+/// `[fluid.driving_pressure_gradient]`
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DrivingSection {
+    /// Steady or oscillatory.
+    pub kind: DrivingKind,
+    /// Steady: −∇P [N m⁻³ = Pa m⁻¹], pointing the way the water is pushed.
+    pub force_density: Option<[f64; 3]>,
+    /// Oscillatory: U_max, amplitude and direction of the free-stream velocity [m s⁻¹].
+    pub velocity_amplitude: Option<[f64; 3]>,
+    /// Oscillatory: period T [s].
+    pub period: Option<f64>,
+}
+
+/// A line or a plane of cells.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SampleKind {
+    /// The cells along `axis` through `position`.
+    Line,
+    /// The cells of the layer normal to `axis` through `position`.
+    Plane,
+}
+
+/// x, y or z.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum AxisName {
+    /// x
+    X,
+    /// y
+    Y,
+    /// z
+    Z,
+}
+
+impl AxisName {
+    /// 0, 1 or 2.
+    pub fn index(self) -> usize {
+        match self {
+            AxisName::X => 0,
+            AxisName::Y => 1,
+            AxisName::Z => 2,
+        }
+    }
+}
+
+/// `[[fluid.sample]]`: cell-centre values (velocity, pressure, vorticity, eddy viscosity, ρ̄)
+/// written to `sample_<name>.csv` every `interval`.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SampleSection {
+    /// Names the file `sample_<name>.csv` (default: the index, `sample_0.csv`).
+    pub name: Option<String>,
+    /// Line or plane.
+    pub kind: SampleKind,
+    /// Line: its direction; plane: its normal.
+    pub axis: AxisName,
+    /// A point of the line or plane [m], inside the flow box.
+    pub position: [f64; 3],
+    /// Simulated time between rows [s].
+    pub interval: f64,
+}
+
+impl SampleSection {
+    /// The file name of sample number `index`.
+    pub fn file_name(&self, index: usize) -> String {
+        match &self.name {
+            Some(n) => format!("sample_{n}.csv"),
+            None => format!("sample_{index}.csv"),
+        }
+    }
+}

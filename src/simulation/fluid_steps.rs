@@ -1,0 +1,134 @@
+//! The pace of a simulation with a fluid: how long a step is, and how many DEM steps it holds.
+//!
+//! ```text
+//! Δt_adaptive = min( C_adv / Σ_a (max|u_a| / Δ_a) ,  C_visc / (ν_max Σ_a 1/Δ_a²) ,  Δt_max )
+//! with spheres:     k = ⌊Δt_adaptive / Δt⌋ ≥ 1 ,   Δt_f = k Δt
+//! without spheres:  Δt_f = Δt_adaptive (the last two steps split evenly to land on the end)
+//! ```
+//!
+//! Δt is the DEM step of [22]. The fluid advances first (tⁿ → tⁿ + Δt_f), then the DEM takes
+//! its k steps; afterwards the simulated time is the fluid's, so both clocks agree exactly at
+//! every step boundary, checkpoints included. Everything depends on the state only, so a run
+//! is deterministic and a restart continues bit for bit. Nothing here allocates.
+
+use super::{Instability, Simulation};
+use crate::fluid::Fluid;
+
+/// Relative tolerance on the end time of a run paced by the fluid alone: its last step lands
+/// on the end to within a few ulps (`Fluid::step_adaptive`).
+const END_TOLERANCE: f64 = 1e-12;
+
+impl Simulation {
+    /// Adds the water. The fluid's clock must be the simulation's (a fresh fluid at t = 0, or
+    /// one restored from the same checkpoint).
+    pub fn with_fluid(mut self, fluid: Fluid) -> Self {
+        self.fluid = Some(fluid);
+        self
+    }
+
+    /// True while there are spheres to move: spheres present, or a feeder that has not yet
+    /// inserted all of its spheres. Then the DEM step sets the grain of the fluid step.
+    pub fn dem_active(&self) -> bool {
+        !self.dem.spheres.is_empty() || self.feeders.iter().any(|f| f.inserted < f.total)
+    }
+
+    /// True when the run has reached `t_end` [s]: within half a DEM step when DEM steps set
+    /// the pace, to the last few ulps when the fluid alone does.
+    pub fn reached(&self, t_end: f64) -> bool {
+        if self.fluid.is_some() && !self.dem_active() {
+            t_end - self.time <= END_TOLERANCE * t_end.abs()
+        } else {
+            (t_end - self.time) / self.dem.dt < 0.5
+        }
+    }
+
+    /// Advances one step towards the end time `t_end` [s] (`f64::INFINITY`: no end): a DEM
+    /// step without a fluid; with a fluid, one fluid step of the rule in the module docs,
+    /// never past `t_end` (with spheres: at most the whole DEM steps left to it).
+    ///
+    /// Fails with a diagnosis when the flow becomes non-finite, or when the fluid's stable step
+    /// falls below the DEM step (the fluid step cannot be shorter than one DEM step).
+    pub fn step_towards(&mut self, t_end: f64) -> Result<(), Instability> {
+        self.step += 1;
+        if self.fluid.is_none() {
+            return self.dem_step();
+        }
+        let dem_active = self.dem_active();
+        let dt = self.dem.dt;
+        let fluid = self.fluid.as_mut().expect("checked above");
+        let stable = fluid.stable_time_step();
+        if !(stable > 0.0 && stable.is_finite()) {
+            let what = format!("the fluid's stable time step is {stable:e} s");
+            return Err(self.fluid_failure(what));
+        }
+        if !dem_active {
+            let target = if t_end - self.time > END_TOLERANCE * t_end.abs() {
+                t_end
+            } else {
+                f64::INFINITY
+            };
+            fluid.step_adaptive(target);
+            self.time = fluid.time();
+            return self.check_fluid();
+        }
+        if stable < dt {
+            let what = format!(
+                "the fluid's stable step {stable:.4e} s (CFL and viscous limits) fell below the \
+                 DEM step {dt:.4e} s, and a fluid step holds at least one DEM step"
+            );
+            return Err(self.fluid_failure(what));
+        }
+        let mut k = (stable / dt).floor();
+        let left = ((t_end - self.time) / dt).round();
+        if left.is_finite() {
+            k = k.min(left.max(1.0));
+        }
+        fluid.step(k * dt);
+        let t_fluid = fluid.time();
+        self.check_fluid()?;
+        for _ in 0..k as u64 {
+            self.dem_step()?;
+        }
+        self.time = t_fluid;
+        Ok(())
+    }
+
+    /// Stops the run when a velocity of the flow is not finite.
+    fn check_fluid(&self) -> Result<(), Instability> {
+        match &self.fluid {
+            Some(f) if !f.is_finite() => {
+                Err(self.fluid_failure("the flow has non-finite velocities".to_string()))
+            }
+            _ => Ok(()),
+        }
+    }
+
+    /// An instability of the flow, with the numbers that usually explain it.
+    fn fluid_failure(&self, what: String) -> Instability {
+        let cause = match &self.fluid {
+            Some(f) => {
+                let p = f.parameters();
+                format!(
+                    "flow too fast or too viscous for the grid and step: last fluid step {:.4e} s, \
+                     cells {:.4e} × {:.4e} × {:.4e} m, CFL number {}, viscous number {}, bound \
+                     {:e} s; check the boundary velocities and the driving gradient, lower \
+                     fluid.cfl_number or fluid.max_time_step, or (with spheres) run.time_step",
+                    f.last_time_step(),
+                    f.grid().spacing.x,
+                    f.grid().spacing.y,
+                    f.grid().spacing.z,
+                    p.time_step.cfl,
+                    p.time_step.viscous,
+                    p.time_step.max
+                )
+            }
+            None => String::new(),
+        };
+        Instability {
+            time: self.time,
+            step: self.step,
+            what,
+            cause,
+        }
+    }
+}
