@@ -18,7 +18,9 @@
 # Env: BENCH_INPUTS  folder with gen_b1.py, in.b1.liggghts, in.b1.lammps, in.chute and
 #                    data.chute.gz (default: shared/bench beside the repository)
 #      RUN_DIR       logs (default: runs/compare in the repository; git-ignored)
-#      REPEATS, CASES, B1_N, B1_STEPS, B2_STEPS, M1_STEPS, NP_LIST (default "1 2")
+#      REPEATS, CASES, B1_N, B1_STEPS, B2_STEPS, M1_STEPS, NP_LIST (default "1 2"),
+#      B1_PEERS (default "liggghts lammps"; B1's goal is against LIGGGHTS, "liggghts" alone
+#      halves the run time)
 # The peers are installed from Debian when missing (apt-get install -y liggghts lammps,
 # through sudo when not root); riprap is built with cargo build --release.
 set -euo pipefail
@@ -33,6 +35,7 @@ B1_STEPS=${B1_STEPS:-10000}
 B2_STEPS=${B2_STEPS:-1000}
 M1_STEPS=${M1_STEPS:-2000}
 NP_LIST=${NP_LIST:-"1 2"}
+B1_PEERS=${B1_PEERS:-"liggghts lammps"}
 MPIRUN=(mpirun --allow-run-as-root --oversubscribe)
 
 for f in gen_b1.py in.b1.liggghts in.b1.lammps in.chute data.chute.gz; do
@@ -79,11 +82,15 @@ b1_round() {  # b1_round N STEPS REP
   local n=$1 steps=$2 rep=$3
   b1_data "$n"
   for np in $NP_LIST; do
-    run "b1.liggghts.$n.np$np.r$rep" "${MPIRUN[@]}" -np "$np" liggghts -var data "b1_$n.data" \
-      -var nsteps "$steps" -in "$INPUTS/in.b1.liggghts" -log none
+    case " $B1_PEERS " in *" liggghts "*)
+      run "b1.liggghts.$n.np$np.r$rep" "${MPIRUN[@]}" -np "$np" liggghts -var data "b1_$n.data" \
+        -var nsteps "$steps" -in "$INPUTS/in.b1.liggghts" -log none ;;
+    esac
     run "b1.riprap.$n.np$np.r$rep" "$RIPRAP" --threads "$np" bench b1 --n "$n" --steps "$steps"
-    run "b1.lammps.$n.np$np.r$rep" "${MPIRUN[@]}" -np "$np" lmp -var data "b1_$n.data" \
-      -var nsteps "$steps" -in "$INPUTS/in.b1.lammps" -log none
+    case " $B1_PEERS " in *" lammps "*)
+      run "b1.lammps.$n.np$np.r$rep" "${MPIRUN[@]}" -np "$np" lmp -var data "b1_$n.data" \
+        -var nsteps "$steps" -in "$INPUTS/in.b1.lammps" -log none ;;
+    esac
   done
 }
 
