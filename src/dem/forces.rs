@@ -518,24 +518,27 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
             tally.contacts += hits.len;
             tally.dropped += hits.dropped;
         }
-        // The closing half kick and the checks.
+        // The closing half kick and the checks. Each sphere is loaded once and stored once
+        // (see `integrate::open_step`: a vector read back just after a store in parts stalls).
         if let Some(kick) = kick {
-            let range = i0..i0 + f.len();
+            let n = f.len();
             let h = kick.half_dt;
             let max2 = kick.max_speed * kick.max_speed;
-            let own = (mass[range.clone()].iter())
-                .zip(&inertia[range.clone()])
-                .zip(&fixed[range.clone()])
-                .zip(&position[range]);
-            let cols = f.iter().zip(tq.iter()).zip(v.iter_mut()).zip(w.iter_mut());
-            for (k, ((((f, t), v), w), (((&m, &i), &fixed), x))) in cols.zip(own).enumerate() {
-                if !fixed {
-                    *v += h / m * *f;
-                    *w += h / i * *t;
+            let (tq, v, w) = (&tq[..n], &mut v[..n], &mut w[..n]);
+            let (mass, inertia) = (&mass[i0..i0 + n], &inertia[i0..i0 + n]);
+            let (fixed, position) = (&fixed[i0..i0 + n], &position[i0..i0 + n]);
+            for k in 0..n {
+                let (mut vk, mut wk) = (v[k], w[k]);
+                if !fixed[k] {
+                    vk += h / mass[k] * f[k];
+                    wk += h / inertia[k] * tq[k];
+                    v[k] = vk;
+                    w[k] = wk;
                 }
                 // Non-finite values propagate into the sum; NaN fails the comparison.
-                let fine =
-                    (x.x + x.y + x.z + w.x + w.y + w.z).is_finite() && v.length_squared() <= max2;
+                let x = position[k];
+                let fine = (x.x + x.y + x.z + wk.x + wk.y + wk.z).is_finite()
+                    && vk.length_squared() <= max2;
                 if !fine && tally.bad.is_none() {
                     tally.bad = Some(i0 + k);
                 }

@@ -92,31 +92,42 @@ pub fn open_step(
         ..
     } = s;
     let (mass, inertia, fixed) = (&*mass, &*inertia, &*fixed);
+    // Each sphere is loaded once, updated in registers and stored once: reading back a vector
+    // just stored in parts (glam writes x, y and z in two stores) stalls store forwarding,
+    // which used to cost more than the arithmetic.
     let leaf = |c: usize, ((x, v), (w, (f, t))): Columns, ()| {
-        let range = c * CHUNK..c * CHUNK + x.len();
+        let i0 = c * CHUNK;
+        let n = x.len();
+        let (v, w, f, t) = (&mut v[..n], &mut w[..n], &mut f[..n], &mut t[..n]);
+        let (mass, inertia, fixed) = (&mass[i0..i0 + n], &inertia[i0..i0 + n], &fixed[i0..i0 + n]);
+        let reference = if check_moves {
+            &reference[i0..i0 + n]
+        } else {
+            &[]
+        };
         let mut o = Opening::default();
-        let own = (mass[range.clone()].iter())
-            .zip(&inertia[range.clone()])
-            .zip(&fixed[range.clone()]);
-        let cols = x.iter_mut().zip(v).zip(w).zip(f).zip(t);
-        for (k, (((((x, v), w), f), t), ((&m, &i), &fixed))) in cols.zip(own).enumerate() {
-            if !fixed {
+        for k in 0..n {
+            let (mut xk, mut vk) = (x[k], v[k]);
+            if !fixed[k] {
+                let m = mass[k];
                 if kick {
-                    *v += h / m * *f;
-                    *w += h / i * *t;
+                    vk += h / m * f[k];
+                    w[k] += h / inertia[k] * t[k];
+                    v[k] = vk;
                 }
-                *x = im.wrap(*x + dt * *v);
-                *f = m * gravity;
+                xk = im.wrap(xk + dt * vk);
+                x[k] = xk;
+                f[k] = m * gravity;
             } else {
-                *f = Vec3::ZERO;
+                f[k] = Vec3::ZERO;
             }
-            *t = Vec3::ZERO;
+            t[k] = Vec3::ZERO;
             if check_moves {
-                let d = im.nearest(*x - reference[range.start + k]);
+                let d = im.nearest(xk - reference[k]);
                 o.moved |= d.length_squared() > limit2;
             }
             // Outside along an open axis, finite and not absurdly fast: an outflow.
-            if !im.contains(*x) && is_finite(*x) && v.length_squared() <= max2 {
+            if !im.contains(xk) && is_finite(xk) && vk.length_squared() <= max2 {
                 o.outside += 1;
             }
         }
