@@ -23,11 +23,31 @@ use crate::math::Vec3;
 /// roots (distance, a, √(m* a)) and a fourth only when it slides.
 #[inline(always)]
 pub fn force(law: &PairLaw, p: &Pair, xi: &mut Vec3, dt: f64) -> Reaction {
+    let [a, root] = roots(p.r_star(), p.m_star(), p.delta);
+    force_with_roots(law, p, a, root, xi, dt)
+}
+
+/// The contact radius a = √(R* δ) [m] and √(m* a) [kg^½ m^½], the square roots of a contact
+/// (besides its distance), apart so that the pair loop can take them for many contacts at
+/// once instead of waiting on each in turn.
+#[inline(always)]
+pub fn roots(r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
+    let a = (r_star * delta).sqrt();
+    [a, (m_star * a).sqrt()]
+}
+
+/// `force` with a and √(m* a) given (`roots`).
+#[inline(always)]
+pub fn force_with_roots(
+    law: &PairLaw,
+    p: &Pair,
+    a: f64,
+    root: f64,
+    xi: &mut Vec3,
+    dt: f64,
+) -> Reaction {
     let n = p.n;
-    let (r_star, m_star) = (p.r_star(), p.m_star());
     let (kn_a, kt_a, cn, ct) = law.hertz_mindlin;
-    let a = (r_star * p.delta).sqrt();
-    let root = (m_star * a).sqrt();
     let k_n = kn_a * a;
     let k_t = kt_a * a;
     let gamma_n = cn * root;
