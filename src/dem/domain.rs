@@ -106,17 +106,20 @@ pub struct Images {
 impl Images {
     /// The separation `d` reduced to its nearest periodic image, for separations of less than
     /// 1.5 periods, as between two positions inside the box (`Domain::minimum_image` takes any).
-    /// One compare per axis, and no function call: the callers' values stay in registers.
+    /// Without branches (the shift is chosen by selects, so the pair loop does not stall on
+    /// mispredicted image tests) and without function calls: the callers' values stay in
+    /// registers. d - (-L) is d + L exactly, and d - 0 is d, so this is the textbook
+    /// "subtract L above L/2, add L below -L/2" to the bit.
     #[inline(always)]
-    pub fn nearest(&self, mut d: Vec3) -> Vec3 {
-        for k in 0..3 {
-            if d[k] > self.half[k] {
-                d[k] -= self.length[k];
-            } else if d[k] < -self.half[k] {
-                d[k] += self.length[k];
-            }
-        }
-        d
+    pub fn nearest(&self, d: Vec3) -> Vec3 {
+        let above = d.cmpgt(self.half);
+        let below = d.cmplt(-self.half);
+        let shift = Vec3::select(
+            above,
+            self.length,
+            Vec3::select(below, -self.length, Vec3::ZERO),
+        );
+        d - shift
     }
 
     /// Wraps a position back into the box along periodic axes (as `Domain::wrap`).
