@@ -317,11 +317,15 @@ pub fn restore(sim: Simulation, ck: Checkpoint) -> Simulation {
     }
     let mut rigid = ck.rigid;
     rigid.templates = sim.rigid.templates;
-    let resumed = Simulation::resumed(dem, ck.feeders, rigid, sim.min_period, ck.time, ck.step);
-    match fluid {
-        Some(f) => resumed.with_fluid(f),
-        None => resumed,
+    let mut resumed =
+        Simulation::resumed(dem, ck.feeders, rigid, sim.min_period, ck.time, ck.step);
+    if let Some(f) = fluid {
+        resumed = resumed.with_fluid(f);
     }
+    // The coupling keeps no state of its own: the held loads are in the spheres, ρ̄ and F in
+    // the flow.
+    resumed.coupling = sim.coupling;
+    resumed
 }
 
 /// One row of `series.csv`.

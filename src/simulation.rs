@@ -28,6 +28,7 @@
 
 mod fluid_steps;
 
+use crate::coupling::Coupling;
 use crate::dem::forces::{compute_forces, MeshCandidates};
 use crate::dem::insertion::Feeder;
 use crate::dem::integrate::{drift, half_kick};
@@ -67,6 +68,8 @@ pub struct Simulation {
     pub min_period: f64,
     /// The water, if the scenario has one (METHOD.md §4).
     pub fluid: Option<Fluid>,
+    /// The coupling of spheres and water ([53], [59]-[63]), with a fluid.
+    pub coupling: Option<Coupling>,
 }
 
 impl Simulation {
@@ -98,6 +101,7 @@ impl Simulation {
             step: 0,
             min_period,
             fluid: None,
+            coupling: None,
         };
         sim.refresh_lists();
         sim.evaluate_forces();
@@ -122,6 +126,7 @@ impl Simulation {
             step,
             min_period,
             fluid: None,
+            coupling: None,
         };
         sim.refresh_lists();
         sim
@@ -186,6 +191,9 @@ impl Simulation {
     /// Contact, wall and body forces [6]-[14], then the wires and bonds.
     fn evaluate_forces(&mut self) {
         compute_forces(&mut self.dem, self.time);
+        if let Some(c) = &self.coupling {
+            c.add_fluid_loads(&mut self.dem.spheres, self.dem.dt); // the water's held load
+        }
         if !self.rigid.is_empty() {
             let d = &mut self.dem;
             self.rigid

@@ -6,6 +6,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::fluid_load::FluidLoad;
 use crate::math::Vec3;
 
 /// Index of a material in the simulation's material table.
@@ -45,6 +46,8 @@ pub struct Spheres {
     /// Id of the rigid body (block) the sphere is a member of, or `NO_BODY`. Members of one
     /// body never touch each other: their contact is internal to the body.
     pub body: Vec<u32>,
+    /// The water's load, held over a fluid step (zero without a fluid; see `crate::coupling`).
+    pub fluid: Vec<FluidLoad>,
     /// The id the next inserted sphere gets.
     pub next_id: SphereId,
 }
@@ -93,6 +96,7 @@ impl Spheres {
         self.material.reserve(n);
         self.fixed.reserve(n);
         self.body.reserve(n);
+        self.fluid.reserve(n);
     }
 
     /// Adds a sphere and returns its id. Mass m = ρ (4/3) π r³, inertia I = (2/5) m r².
@@ -112,6 +116,7 @@ impl Spheres {
         self.material.push(s.material);
         self.fixed.push(s.fixed);
         self.body.push(NO_BODY);
+        self.fluid.push(FluidLoad::default());
         id
     }
 
@@ -139,6 +144,7 @@ impl Spheres {
         compact(&mut self.material, keep);
         compact(&mut self.fixed, keep);
         compact(&mut self.body, keep);
+        compact(&mut self.fluid, keep);
     }
 
     /// True when slots i and j are members of the same rigid body (no contact between them).

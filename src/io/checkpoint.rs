@@ -17,8 +17,9 @@ use crate::fluid::FluidState;
 use crate::rigid::bodies::RigidBodies;
 
 const MAGIC: &[u8; 8] = b"RIPRAPCK";
-/// 2: blocks and links were added; 3: the fluid state.
-const VERSION: u32 = 3;
+/// 2: blocks and links were added; 3: the fluid state; 4: the fluid's held load on each
+/// sphere (`Spheres::fluid`).
+const VERSION: u32 = 4;
 
 /// The saved state.
 #[derive(Clone, Debug, Serialize, Deserialize)]
