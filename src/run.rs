@@ -317,8 +317,7 @@ pub fn restore(sim: Simulation, ck: Checkpoint) -> Simulation {
     }
     let mut rigid = ck.rigid;
     rigid.templates = sim.rigid.templates;
-    let mut resumed =
-        Simulation::resumed(dem, ck.feeders, rigid, sim.min_period, ck.time, ck.step);
+    let mut resumed = Simulation::resumed(dem, ck.feeders, rigid, sim.min_period, ck.time, ck.step);
     if let Some(f) = fluid {
         resumed = resumed.with_fluid(f);
     }

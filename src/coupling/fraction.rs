@@ -14,11 +14,19 @@
 //! * then the cut-cell values are scaled by one factor so that Σ_C φ_C ΔV = (4/3) π r³
 //!   exactly (clamped at 1), which makes the mass of the mixture [53] equal to the sphere's.
 //!
-//! Error (measured in the tests below over random centres): before the scaling, the relative
-//! error of Σ φ ΔV is below 0.5 % for m = 4 and d/Δ ≥ 2, and below 0.1 % for m = 8; after it,
-//! round-off. The scaling moves each cut cell by the mean sampling error, so a single cut
-//! cell's φ is within about 1/m of its exact value (worst case), typically 1/m² — a surface
-//! error of order Δ/m, well below the grid's own resolution of the interface (Δ).
+//! Error of Σ φ ΔV against (4/3) π r³ before the scaling, worst over 20 random centres (test
+//! below): the sub-samples count lattice points in a sphere, whose error falls slowly.
+//!
+//! | d/Δ | m = 4 | m = 8 |
+//! |---:|---:|---:|
+//! | 2 | 3.0 % | 0.50 % |
+//! | 4 | 0.50 % | 0.15 % |
+//! | 8 | 0.14 % | 0.04 % |
+//!
+//! After the scaling the sum is exact to round-off (1e-14). The scaling moves each cut cell
+//! by the mean sampling error; a single cut cell's φ stays within about 1/m of its exact value
+//! (worst case), a surface position error below Δ/m, under the grid's own resolution of the
+//! interface (Δ).
 //!
 //! Storage: each sphere owns a box of B × B × B cells (B = ⌊d_max/Δ_min⌋ + 2 covers every
 //! sphere) starting at its lowest cell, so spheres are filled in parallel, each writing only
@@ -130,15 +138,19 @@ pub fn sphere_fractions(
 /// (values clamped at 1; see the module docs).
 pub fn normalise(grid: &StaggeredGrid, r: f64, phi: &mut [f64]) {
     let target = 4.0 / 3.0 * std::f64::consts::PI * r.powi(3) / grid.cell_volume();
-    let (mut full, mut cut) = (0.0, 0.0);
-    for &v in phi.iter() {
-        if v >= 1.0 {
-            full += 1.0;
-        } else {
-            cut += v;
+    // A few passes: cells the scaling pushes to 1 are clamped and the rest scaled again.
+    for _ in 0..4 {
+        let (mut full, mut cut) = (0.0, 0.0);
+        for &v in phi.iter() {
+            if v >= 1.0 {
+                full += 1.0;
+            } else {
+                cut += v;
+            }
         }
-    }
-    if cut > 0.0 {
+        if cut <= 0.0 || (full + cut - target).abs() <= 1e-14 * target {
+            return;
+        }
         let scale = (target - full) / cut;
         for v in phi.iter_mut() {
             if *v < 1.0 {
@@ -180,18 +192,21 @@ mod tests {
     }
 
     /// Σ φ ΔV against the sphere volume, 20 random centres per case. Tolerances: the measured
-    /// worst errors (0.2 % at d/Δ = 2 with m = 4, falling with d/Δ and m) with a margin of
-    /// about 2; after normalisation round-off (1e-12).
+    /// worst errors (table in the module docs) with a margin of 1.5; after normalisation
+    /// round-off (1e-12).
     #[test]
     fn volume_of_the_fractions_is_the_sphere_volume() {
+        let mut measured = Vec::new();
         for (d, m, tol) in [
-            (2.0, 4, 5e-3),
-            (4.0, 4, 3e-3),
-            (8.0, 4, 2e-3),
-            (2.0, 8, 1.5e-3),
-            (8.0, 8, 5e-4),
+            (2.0, 4, 4.5e-2),
+            (4.0, 4, 7.5e-3),
+            (8.0, 4, 2.1e-3),
+            (2.0, 8, 7.5e-3),
+            (4.0, 8, 2.3e-3),
+            (8.0, 8, 6e-4),
         ] {
             let e = volume_error(d, m, false, 7);
+            measured.push((d, m, e));
             eprintln!("d/Δ = {d}, m = {m}: worst relative volume error {e:.2e}");
             assert!(e < tol, "d/Δ = {d}, m = {m}: error {e:.2e} ≥ {tol:.0e}");
         }
@@ -216,8 +231,7 @@ mod tests {
             phi[l[0] as usize + b * (l[1] as usize + b * l[2] as usize)]
         };
         assert_eq!(at(3, 3, 3), 1.0); // [3,4]³: farthest corner at √3 = 1.73 < r
-        assert_eq!(at(1, 1, 1), 0.0); // [1,2]³: nearest corner at 2√3 > r
-        assert!(at(2, 2, 2) > 0.0 && at(2, 2, 2) < 1.0); // [2,3]³: cut
+        assert!(at(2, 3, 3) > 0.0 && at(2, 3, 3) < 1.0); // cut: nearest point at 1, farthest at 2.45
         let (mut lo, mut hi) = (0.0, 0.0);
         for k in 0..cells.extent[2] {
             for j in 0..cells.extent[1] {
@@ -231,6 +245,6 @@ mod tests {
                 }
             }
         }
-        assert_eq!(lo, hi);
+        assert!((lo - hi).abs() < 1e-12 * lo, "{lo} {hi}");
     }
 }

@@ -10,8 +10,21 @@
 //!   (clamped at 1 where spheres overlap, ρ̄ then the φ-weighted mean of their densities);
 //! * the force and torque on each sphere from the provisional flow n+1* ([`resolved`], [59]
 //!   [61]) plus buoyancy, held over the DEM sub-steps of the fluid step;
-//! * after the sub-steps, φ and ρ̄ at the new positions, the velocity correction [62] and
-//!   the interaction force F [63] that the next provisional step uses.
+//! * after the sub-steps, φ and ρ̄ at the new positions, the velocity correction [62]
+//!   ũⁿ⁺¹ = ũⁿ⁺¹* (1 − φ) + (u_p + ω_p × r) φ, and the interaction force [63]
+//!   F = ρ̄ (ũⁿ⁺¹ − ũⁿ⁺¹*) / Δt_f, the momentum change the correction imposes.
+//!
+//! Two choices where the source is silent (measured with validation case 1, a fixed sphere at
+//! Re = 10 and 100, d/Δ = 6):
+//!
+//! * F is applied to the flow *by* the correction [62], within the step that computes it, and
+//!   not fed again into the next provisional step: feeding it back drives every face a sphere
+//!   touches to the sphere's velocity, which thickens the body by up to a cell (C_D +27 %).
+//! * In [59] each face counts with the share of the solid on it that belongs to the sphere,
+//!   w_i / Σ_j w_j (1 for a lone sphere), not with w_i: the correction removes from the flow
+//!   the momentum of the whole face, and weighting by w_i gives the sphere only part of it
+//!   (the φ-weighted sum of a force density that peaks on the cut faces; C_D −40 %). With the
+//!   share, the drag is the momentum the correction takes from the water (conservative).
 //!
 //! **Unresolved spheres** (smaller than `resolved_cells_per_diameter` cells): the drag form [5]
 //! with a published drag law ([`drag`]) against the fluid velocity interpolated to the centre
@@ -34,8 +47,8 @@
 //! sphere mid-step. The force the first half kick of the step uses is replaced by the new held
 //! force (`FluidLoad::applied`), so the held force acts over the whole step.
 //!
-//! State between steps: the held loads (a column of `Spheres`, checkpointed with it), ρ̄ and F
-//! (in `FluidState`, checkpointed with it). φ is recomputed from the positions when needed, so
+//! State between steps: the held loads (a column of `Spheres`, checkpointed with it) and ρ̄ (in
+//! `FluidState`, checkpointed with it); `FluidState::body_force` stays zero. φ is recomputed from the positions when needed, so
 //! a restart continues bit for bit. Loops over spheres run in parallel, each writing only its
 //! own sphere's values; sums onto the grid run serially in slot order. Results do not depend on
 //! the number of threads. Nothing allocates in a step unless spheres were added.
@@ -44,6 +57,7 @@ pub mod drag;
 pub mod fraction;
 pub mod interpolate;
 pub mod resolved;
+pub mod validation;
 
 use glam::DVec3;
 use rayon::prelude::*;
@@ -117,6 +131,9 @@ pub struct Coupling {
     obstacle: Vec<f64>,
     /// Force of the water on the fixed solid at the last step [N] ([59]).
     pub obstacle_force: DVec3,
+    /// The interaction force F [63] of the last correction on the faces [N m⁻³] (for output:
+    /// the correction has already applied it).
+    interaction: [Vec<f64>; 3],
 }
 
 impl Coupling {
@@ -141,6 +158,7 @@ impl Coupling {
             cell_phi_rho: field(),
             obstacle: Vec::new(),
             obstacle_force: DVec3::ZERO,
+            interaction: std::array::from_fn(|_| field()),
         }
     }
 
@@ -192,6 +210,7 @@ impl Coupling {
     /// replaces the last one in the forces the next half kick uses. `dt` is the DEM step [s].
     pub fn fluid_forces(&mut self, fluid: &Fluid, spheres: &mut Spheres, dt: f64) {
         self.compute_fractions(spheres);
+        self.accumulate_weights(spheres);
         let this = &*self;
         let b3 = this.b * this.b * this.b;
         let u = fluid.velocity();
@@ -210,13 +229,12 @@ impl Coupling {
                 let buoyancy = -this.rho_w * volume * this.gravity;
                 load.unresolved = !this.is_resolved(r);
                 if load.unresolved {
-                    load.fluid_velocity =
-                        interpolate::velocity_at(&this.grid, &this.bcs, u, x);
+                    load.fluid_velocity = interpolate::velocity_at(&this.grid, &this.bcs, u, x);
                     load.force = buoyancy;
                     load.torque = DVec3::ZERO;
                 } else {
                     let own = &phi[i * b3..(i + 1) * b3];
-                    let (fr, tr) = st.sphere_force(&this.grid, &this.bcs, &boxes[i], this.b, own, x);
+                    let (fr, tr) = st.sphere_force(&boxes[i], this.b, own, x, &this.weight);
                     load.force = fr + buoyancy;
                     load.torque = tr;
                 }
@@ -233,13 +251,19 @@ impl Coupling {
                 load.impulse = 0.5 * dt * drag;
             });
         if !self.obstacle.is_empty() {
-            self.obstacle_force = st.obstacle_force(&self.grid, &self.bcs, &self.obstacle);
+            self.obstacle_force = st.obstacle_force(&self.obstacle);
         }
     }
 
     /// The drag [5] on a sphere of radius `r` [m] at relative velocity `u_rel` [m s⁻¹] [N].
     fn drag(&self, u_rel: DVec3, r: f64) -> DVec3 {
-        drag::drag_force(self.parameters.drag_law, self.rho_w, self.nu, 2.0 * r, u_rel)
+        drag::drag_force(
+            self.parameters.drag_law,
+            self.rho_w,
+            self.nu,
+            2.0 * r,
+            u_rel,
+        )
     }
 
     /// In each force evaluation of the DEM: adds the held load, and for unresolved spheres the
@@ -362,6 +386,42 @@ impl Coupling {
     /// [62] on every face covered by a resolved sphere or the obstacle, and with `dt_f` the
     /// interaction force [63]; F is zero on the other faces.
     fn correct_velocity(&mut self, fluid: &mut Fluid, spheres: &Spheres, dt_f: Option<f64>) {
+        self.accumulate_weights(spheres);
+        let grid = self.grid;
+        let st = grid.strides();
+        let (u, density) = fluid.correction_fields();
+        for a in 0..3 {
+            let (w, wu) = (&self.weight[a], &self.weighted_velocity[a]);
+            let sa = st[a];
+            u[a].par_iter_mut()
+                .zip(self.interaction[a].par_iter_mut())
+                .enumerate()
+                .for_each(|(c, (u, f))| {
+                    if w[c] <= 0.0 {
+                        *f = 0.0;
+                        return;
+                    }
+                    let phi = w[c].min(1.0);
+                    let u_solid = wu[c] / w[c];
+                    let u_star = *u;
+                    *u = u_star * (1.0 - phi) + u_solid * phi; // [62]
+                    if let Some(dt_f) = dt_f {
+                        let rho_f = 0.5 * (density[c] + density[c - sa]);
+                        *f = rho_f * (*u - u_star) / dt_f; // [63]
+                    }
+                });
+        }
+    }
+
+    /// The interaction force F [63] of the last correction on the faces of each component
+    /// [N m⁻³]: F = ρ̄ (uⁿ⁺¹ − uⁿ⁺¹*) / Δt_f, already applied by the correction [62].
+    pub fn interaction_force(&self) -> &[Vec<f64>; 3] {
+        &self.interaction
+    }
+
+    /// Σ_i w_i and Σ_i w_i (v_i + ω_i × r)_a on every face, from the fractions of the spheres
+    /// and the obstacle.
+    fn accumulate_weights(&mut self, spheres: &Spheres) {
         let (b, grid, bcs) = (self.b, self.grid, self.bcs);
         let b3 = b * b * b;
         for a in 0..3 {
@@ -382,29 +442,6 @@ impl Coupling {
                 self.weight[a][c] += w;
             });
         }
-        let st = grid.strides();
-        let (u, force, density) = fluid.correction_fields();
-        for a in 0..3 {
-            let (w, wu) = (&self.weight[a], &self.weighted_velocity[a]);
-            let sa = st[a];
-            u[a].par_iter_mut()
-                .zip(force[a].par_iter_mut())
-                .enumerate()
-                .for_each(|(c, (u, f))| {
-                    if w[c] <= 0.0 {
-                        *f = 0.0;
-                        return;
-                    }
-                    let phi = w[c].min(1.0);
-                    let u_solid = wu[c] / w[c];
-                    let u_star = *u;
-                    *u = u_star * (1.0 - phi) + u_solid * phi; // [62]
-                    if let Some(dt_f) = dt_f {
-                        let rho_f = 0.5 * (density[c] + density[c - sa]);
-                        *f += rho_f * (*u - u_star) / dt_f; // [63]
-                    }
-                });
-        }
     }
 
     /// Gives the water the drag impulse of each unresolved sphere over the fluid step, with
@@ -413,7 +450,7 @@ impl Coupling {
         let (grid, bcs) = (self.grid, self.bcs);
         let volume = grid.cell_volume();
         let st = grid.strides();
-        let (u, _, density) = fluid.correction_fields();
+        let (u, density) = fluid.correction_fields();
         for i in 0..spheres.len() {
             let load = &mut spheres.fluid[i];
             if !load.unresolved {

@@ -8,9 +8,12 @@
 //! ```text
 //! w_i(c) = ½ (φ_i[c] + φ_i[c − s_a])                                             [–]
 //! f_a(c) = −(p̄[c] − p̄[c − s_a]) / Δ_a + μ ∇²u_a(c) + Σ_b δ_b(2 μ_SGS S_ab)(c)     [N m⁻³]
-//! F_i,a  = Σ_c w_i(c) ΔV f_a(c)                                                  [59]
-//! T_i    = Σ_a Σ_c w_i(c) ΔV (x_c − x_i) × f_a(c) e_a                            [61]
+//! F_i,a  = Σ_c s_i(c) ΔV f_a(c) ,   s_i(c) = w_i(c) / Σ_j w_j(c)                 [59]
+//! T_i    = Σ_a Σ_c s_i(c) ΔV (x_c − x_i) × f_a(c) e_a                            [61]
 //! ```
+//!
+//! s_i is sphere i's share of the solid on the face (1 for a lone sphere; the source writes
+//! φ, see [`super`] for why the share).
 //!
 //! evaluated with the provisional flow n+1* (velocity and pressure after the projection of
 //! the fluid step, μ_SGS of that step). ΔV = Δx Δy Δz [m³]; x_c the face centre, unwrapped
@@ -138,6 +141,8 @@ pub fn fill_obstacle_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, phi: &mut [f
 
 /// The provisional flow as [59] reads it.
 pub struct FlowView<'a> {
+    grid: StaggeredGrid,
+    bcs: Boundaries,
     st: Stencil,
     p: &'a [f64],
     u: [&'a [f64]; 3],
@@ -150,6 +155,8 @@ impl<'a> FlowView<'a> {
     /// The view of `fluid` after its (provisional) step.
     pub fn new(fluid: &'a Fluid) -> FlowView<'a> {
         FlowView {
+            grid: *fluid.grid(),
+            bcs: *fluid.boundaries(),
             st: Stencil::new(fluid.grid()),
             p: fluid.pressure(),
             u: fluid.velocity(),
@@ -171,19 +178,21 @@ impl<'a> FlowView<'a> {
         f
     }
 
-    /// Force [N] and torque about `x` [N m] on the sphere centred at `x` [59] [61].
+    /// Force [N] and torque about `x` [N m] on the sphere centred at `x` [59] [61], with box
+    /// `cells`, fractions `phi` (B³, B = `b`) and `total` Σ_j w_j on the faces.
     pub fn sphere_force(
         &self,
-        grid: &StaggeredGrid,
-        bcs: &Boundaries,
         cells: &CellBox,
         b: usize,
         phi: &[f64],
         x: DVec3,
+        total: &[Vec<f64>; 3],
     ) -> (DVec3, DVec3) {
+        let (grid, bcs) = (&self.grid, &self.bcs);
         let volume = grid.cell_volume();
         let (mut force, mut torque) = (DVec3::ZERO, DVec3::ZERO);
         for_each_face(grid, bcs, cells, b, phi, |a, c, w, x_face| {
+            let w = w / total[a][c].max(w);
             let mut f = DVec3::ZERO;
             f[a] = w * volume * self.force_density(a, c);
             force += f;
@@ -193,7 +202,8 @@ impl<'a> FlowView<'a> {
     }
 
     /// Force [N] on a fixed solid given by its cell fractions [59].
-    pub fn obstacle_force(&self, grid: &StaggeredGrid, bcs: &Boundaries, phi: &[f64]) -> DVec3 {
+    pub fn obstacle_force(&self, phi: &[f64]) -> DVec3 {
+        let (grid, bcs) = (&self.grid, &self.bcs);
         let volume = grid.cell_volume();
         let mut force = DVec3::ZERO;
         obstacle_faces(grid, bcs, phi, |a, c, w| {

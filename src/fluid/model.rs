@@ -237,25 +237,11 @@ impl Fluid {
         [&v[0], &v[1], &v[2]]
     }
 
-    /// Mutable velocity components on their faces, padded [m s⁻¹], for the coupling's velocity
-    /// correction [62]. Call [`Fluid::fill_ghosts`] after changing them; boundary faces must
-    /// keep their values.
-    pub fn velocity_mut(&mut self) -> &mut [Vec<f64>; 3] {
-        &mut self.state.velocity
-    }
-
-    /// Velocity (mutable), external force F (mutable) and ρ̄, at once: what the coupling's
-    /// velocity correction [62] and interaction force [63] change and read. Call
-    /// [`Fluid::fill_ghosts`] afterwards; boundary faces must keep their values.
-    #[allow(clippy::type_complexity)]
-    pub fn correction_fields(&mut self) -> (&mut [Vec<f64>; 3], &mut [Vec<f64>; 3], &[f64]) {
+    /// Velocity (mutable) and ρ̄ at once: what the coupling's velocity correction [62] changes
+    /// and reads. Call [`Fluid::fill_ghosts`] afterwards; boundary faces must keep their values.
+    pub fn correction_fields(&mut self) -> (&mut [Vec<f64>; 3], &[f64]) {
         let s = &mut self.state;
-        (&mut s.velocity, &mut s.body_force, &s.mixture_density)
-    }
-
-    /// External force density F on the faces of each component [N m⁻³].
-    pub fn body_force(&self) -> &[Vec<f64>; 3] {
-        &self.state.body_force
+        (&mut s.velocity, &s.mixture_density)
     }
 
     /// Pressure less hydrostatic, cell centres, padded [Pa].

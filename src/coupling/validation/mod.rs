@@ -1,0 +1,4 @@
+//! The coupling's validation cases (METHOD.md §5), run by `riprap validate`: each a
+//! directory with its README (source, set-up, compared quantity, tolerance, run cost).
+
+pub mod sphere_drag;
