@@ -16,6 +16,10 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
+use crate::coupling::drag::{clift_grace_weber_1978, schiller_naumann_1933};
+use crate::coupling::validation::sphere_drag::{
+    run_sphere_drag, sphere_drag_level, standard_drag_curve,
+};
 use crate::fluid::validation::channel180::{
     mkm_1999_bulk_velocity, mkm_1999_profile, run_channel, ChannelCase, ChannelResult,
 };
@@ -66,8 +70,129 @@ pub fn cavity_cases(quick: bool) -> Vec<CavityCase> {
 /// Runs the cases, writes `report.md` and one PNG per case into `out`; returns the report and
 /// whether every case passed.
 pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)> {
+    run_validation_cases(out, quick, None)
+}
+
+/// The names `riprap validate --only` accepts.
+pub const CASES: [&str; 3] = ["cavity", "channel", "sphere_drag"];
+
+/// As [`run_validation`], only the case named `only` (one of [`CASES`]) when given.
+pub fn run_validation_cases(
+    out: &Path,
+    quick: bool,
+    only: Option<&str>,
+) -> anyhow::Result<(String, bool)> {
+    if let Some(name) = only {
+        anyhow::ensure!(
+            CASES.contains(&name),
+            "unknown validation case `{name}`; the cases are {CASES:?}"
+        );
+    }
+    let run = |name: &str| only.is_none_or(|o| o == name);
     std::fs::create_dir_all(out)?;
     let mut md = String::from("# riprap validation report\n\n");
+    let mut all = true;
+    if run("cavity") {
+        all &= cavity_section(out, quick, &mut md)?;
+    }
+    if run("channel") {
+        all &= channel_section(out, quick, &mut md)?;
+    }
+    if run("sphere_drag") {
+        all &= sphere_drag_section(out, quick, &mut md)?;
+    }
+    std::fs::write(out.join("report.md"), &md)?;
+    Ok((md, all))
+}
+
+/// Case 1 of the coupling (METHOD.md §5): C_D of a fixed sphere against the standard curve.
+fn sphere_drag_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
+    md.push_str(
+        "\n## Coupling case 1: drag of a fixed sphere against the standard drag curve \
+         (Clift, Grace & Weber 1978)\n\n",
+    );
+    md.push_str(
+        "Set-up, reference and tolerances: `src/coupling/validation/sphere_drag/README.md`.\n\n",
+    );
+    md.push_str("| Re | d/Δ | box [d] | steps | C_D riprap | C_D standard | error | tolerance | verdict |\n");
+    md.push_str("|---:|---:|---|---:|---:|---:|---:|---:|---|\n");
+    let mut all = true;
+    let mut measured = Vec::new();
+    for (case, tol) in sphere_drag_level(quick) {
+        let start = std::time::Instant::now();
+        let r = run_sphere_drag(&case);
+        let ok = r.error().abs() < tol;
+        all &= ok;
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} × {} × {} | {} | {:.3} | {:.3} | {:+.1} % | {:.0} % | {} |",
+            case.re,
+            case.cells_per_diameter,
+            case.lengths[0],
+            case.lengths[1],
+            case.lengths[2],
+            r.steps,
+            r.drag_coefficient,
+            r.reference,
+            100.0 * r.error(),
+            100.0 * tol,
+            if ok { "pass" } else { "FAIL" }
+        );
+        eprintln!(
+            "sphere drag Re {}: C_D {:.3} (standard {:.3}, {:+.1} %) in {:.0} s -> {}",
+            case.re,
+            r.drag_coefficient,
+            r.reference,
+            100.0 * r.error(),
+            start.elapsed().as_secs_f64(),
+            if ok { "pass" } else { "FAIL" }
+        );
+        measured.push((case.re.log10(), r.drag_coefficient.log10()));
+    }
+    let curve: Vec<(f64, f64)> = (0..=60)
+        .map(|k| {
+            let re = 10f64.powf(-0.5 + 3.0 * k as f64 / 60.0);
+            (re.log10(), clift_grace_weber_1978(re).log10())
+        })
+        .collect();
+    let sn: Vec<(f64, f64)> = curve
+        .iter()
+        .map(|&(lr, _)| (lr, schiller_naumann_1933(10f64.powf(lr)).log10()))
+        .collect();
+    let table: Vec<(f64, f64)> = standard_drag_curve()
+        .into_iter()
+        .map(|(re, cd)| (re.log10(), cd.log10()))
+        .collect();
+    line_plot(
+        &out.join("sphere_drag.png"),
+        &Axes {
+            title: "Fixed sphere in a uniform stream: drag coefficient",
+            x_label: "log10 Re",
+            y_label: "log10 C_D",
+            log_y: false,
+        },
+        &[
+            Series::new("riprap (resolved coupling)", &measured, LineStyle::Markers),
+            Series::new(
+                "standard curve, Clift, Grace & Weber 1978",
+                &curve,
+                LineStyle::Line,
+            ),
+            Series::new(
+                "reference table (case directory)",
+                &table,
+                LineStyle::Markers,
+            ),
+            Series::new("Schiller & Naumann 1933", &sn, LineStyle::Dashed),
+        ],
+    )?;
+    md.push_str("\n![C_D against Re](sphere_drag.png)\n");
+    let _ = writeln!(md, "\nVerdict: {}\n", if all { "pass" } else { "FAIL" });
+    Ok(all)
+}
+
+/// The lid-driven cavity cases of the level.
+fn cavity_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
     md.push_str("## Lid-driven cavity (flow solver) against Ghia, Ghia & Shin (1982)\n\n");
     md.push_str("| Re | grid | steps | steadiness [U] | max abs u err [U] | max abs v err [U] | tolerance (u, v) | verdict |\n");
     md.push_str("|---:|---:|---:|---:|---:|---:|---:|---|\n");
@@ -110,9 +235,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
             if ok { "pass" } else { "FAIL" }
         );
     }
-    all &= channel_section(out, quick, &mut md)?;
-    std::fs::write(out.join("report.md"), &md)?;
-    Ok((md, all))
+    Ok(all)
 }
 
 /// The channel case of a level with its tolerances: |U_b⁺/U_b⁺_ref − 1|, the largest
