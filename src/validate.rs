@@ -17,6 +17,9 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use crate::coupling::drag::{clift_grace_weber_1978, schiller_naumann_1933};
+use crate::coupling::validation::block_settling::{
+    estimates as block_estimates, run_block_settling, tolerance_band, BlockSample,
+};
 use crate::coupling::validation::sphere_drag::{
     run_sphere_drag, sphere_drag_level, standard_drag_curve,
 };
@@ -74,7 +77,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 3] = ["cavity", "channel", "sphere_drag"];
+pub const CASES: [&str; 4] = ["cavity", "channel", "sphere_drag", "block_settling"];
 
 /// As [`run_validation`], only the case named `only` (one of [`CASES`]) when given.
 pub fn run_validation_cases(
@@ -100,6 +103,9 @@ pub fn run_validation_cases(
     }
     if run("sphere_drag") {
         all &= sphere_drag_section(out, quick, &mut md)?;
+    }
+    if run("block_settling") {
+        all &= block_settling_section(out, quick, &mut md)?;
     }
     std::fs::write(out.join("report.md"), &md)?;
     Ok((md, all))
@@ -189,6 +195,111 @@ fn sphere_drag_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Resu
     md.push_str("\n![C_D against Re](sphere_drag.png)\n");
     let _ = writeln!(md, "\nVerdict: {}\n", if all { "pass" } else { "FAIL" });
     Ok(all)
+}
+
+/// Case 3 of the coupling: the three-sphere block settling in still water.
+fn block_settling_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
+    let start = std::time::Instant::now();
+    let r = run_block_settling(quick)?;
+    let seconds = start.elapsed().as_secs_f64();
+    let (broadside, equivalent) = block_estimates();
+    let (lo, hi) = tolerance_band();
+    let ok = r.settling_speed > lo && r.settling_speed < hi;
+    let (first, last) = (r.samples[0], *r.samples.last().expect("samples"));
+    md.push_str(
+        "\n## Coupling case 3: three-sphere glass block (d = 2 cm, s.g. 2.23) settling in \
+         still water\n\n",
+    );
+    let _ = writeln!(
+        md,
+        "Set-up, estimates and tolerance: `src/coupling/validation/block_settling/README.md`. \
+         d/Δ = {:.0}, {} fluid steps, {seconds:.0} s.\n",
+        r.cells_per_diameter, r.steps
+    );
+    md.push_str("| quantity | value |\n|---|---:|\n");
+    let _ = writeln!(
+        md,
+        "| settling speed, mean over the last 10 cm [m/s] | {:.3} |",
+        r.settling_speed
+    );
+    let _ = writeln!(
+        md,
+        "| estimate: broadside, three lone spheres on the standard curve [m/s] | {broadside:.3} |"
+    );
+    let _ = writeln!(
+        md,
+        "| estimate: volume-equivalent sphere, Haider & Levenspiel (1989), ψ = 0.693 [m/s] | {equivalent:.3} |"
+    );
+    let _ = writeln!(md, "| tolerance band [m/s] | {lo:.3} to {hi:.3} |");
+    let _ = writeln!(
+        md,
+        "| tilt of the axis above the horizontal, start → end [°] | {:.1} → {:.1} |",
+        first.tilt, last.tilt
+    );
+    let _ = writeln!(
+        md,
+        "| time to fall to 3 d above the floor [s] | {:.3} |",
+        last.time
+    );
+    let _ = writeln!(md, "\nVerdict: {}\n", if ok { "pass" } else { "FAIL" });
+    let series = |f: &dyn Fn(&BlockSample) -> f64| -> Vec<(f64, f64)> {
+        r.samples.iter().map(|p| (p.time, f(p))).collect()
+    };
+    let t_end = last.time;
+    let height = series(&|p| p.height);
+    line_plot(
+        &out.join("block_height.png"),
+        &Axes {
+            title: "Three-sphere block settling: height of the centre",
+            x_label: "t [s]",
+            y_label: "z [m]",
+            log_y: false,
+        },
+        &[Series::new("riprap", &height, LineStyle::Line)],
+    )?;
+    let speed = series(&|p| -p.vertical_velocity);
+    let upper = [(0.0, broadside), (t_end, broadside)];
+    let lower = [(0.0, equivalent), (t_end, equivalent)];
+    line_plot(
+        &out.join("block_speed.png"),
+        &Axes {
+            title: "Three-sphere block settling: settling speed beside the two estimates",
+            x_label: "t [s]",
+            y_label: "-w [m/s]",
+            log_y: false,
+        },
+        &[
+            Series::new("riprap", &speed, LineStyle::Line),
+            Series::new("broadside, three lone spheres", &upper, LineStyle::Dashed),
+            Series::new(
+                "equivalent sphere, Haider & Levenspiel",
+                &lower,
+                LineStyle::Dashed,
+            ),
+        ],
+    )?;
+    let tilt = series(&|p| p.tilt);
+    line_plot(
+        &out.join("block_tilt.png"),
+        &Axes {
+            title: "Three-sphere block settling: axis angle above the horizontal",
+            x_label: "t [s]",
+            y_label: "tilt [degrees]",
+            log_y: false,
+        },
+        &[Series::new("riprap", &tilt, LineStyle::Line)],
+    )?;
+    md.push_str(
+        "![height](block_height.png)\n\n![speed](block_speed.png)\n\n![tilt](block_tilt.png)\n",
+    );
+    eprintln!(
+        "block settling: {:.3} m/s (band {lo:.3} to {hi:.3}), tilt {:.1} -> {:.1} deg in {seconds:.0} s -> {}",
+        r.settling_speed,
+        first.tilt,
+        last.tilt,
+        if ok { "pass" } else { "FAIL" }
+    );
+    Ok(ok)
 }
 
 /// The lid-driven cavity cases of the level.
