@@ -17,8 +17,8 @@
 //! 9. stability checks: NaN, absurd speed, overlap beyond bound
 //!
 //! With a fluid ([`Simulation::with_fluid`]) one step of the simulation is one fluid step
-//! Δt_f with the DEM steps inside it (uncoupled for now; the coupling of [59]-[63] comes
-//! next): Δt_f is the adaptive step of `fluid::timestep` (CFL and viscous limits, capped by
+//! Δt_f with the DEM steps inside it (coupled by `crate::coupling` when the scenario has
+//! `[coupling]`; the order is in `simulation/fluid_steps.rs`): Δt_f is the adaptive step of `fluid::timestep` (CFL and viscous limits, capped by
 //! the user bound), rounded *down* to a whole number k ≥ 1 of DEM steps, Δt_f = k Δt; the fluid
 //! advances by Δt_f, then the DEM takes its k steps. Without spheres (none present, no feeder
 //! still to insert) the fluid step is the adaptive step itself, shortened to land on the end

@@ -284,3 +284,39 @@ fn assert_same(a: &Simulation, b: &Simulation) {
         "nothing moved"
     );
 }
+
+/// `[coupling]` needs a `[fluid]`; its keys are checked with file:line:key messages; `riprap
+/// check` prints the mode and how the smallest and largest spheres are treated.
+#[test]
+fn coupling_section_is_checked_and_reported() {
+    let text = tank(1e-6, 2500.0, false, &sphere([0.02, 0.02, 0.04], 0.01));
+    let err = |t: &str| match Source::from_str(t, "case.toml", PathBuf::from(".")) {
+        Err(e) => e.to_string(),
+        Ok(src) => build(&src).err().map(|e| e.to_string()).unwrap_or_default(),
+    };
+    // Without [fluid] the coupling is refused with its key.
+    let fluid = text.find("[fluid]").unwrap();
+    let end = text.find("[[material]]").unwrap();
+    let only_coupling = format!("{}{}", &text[..fluid], &text[end..]);
+    let e2 = err(&only_coupling);
+    assert!(e2.contains("coupling") && e2.contains("[fluid]"), "{e2}");
+    let bad = text.replace("mode = \"auto\"", "mode = \"auto\"\nsubsamples = 40");
+    let e3 = err(&bad);
+    assert!(
+        e3.contains("case.toml:") && e3.contains("coupling.subsamples"),
+        "{e3}"
+    );
+    let unknown = text.replace("mode = \"auto\"", "mode = \"sometimes\"");
+    let e4 = err(&unknown);
+    assert!(
+        e4.contains("case.toml") && e4.contains("coupling.mode") && e4.contains("sometimes"),
+        "{e4}"
+    );
+    let src = Source::from_str(&text, "case.toml", PathBuf::from(".")).unwrap();
+    let report = build(&src).unwrap().derived.report();
+    println!("{report}");
+    assert!(
+        report.contains("coupling: Auto") && report.contains("d/Δ = 4.00: resolved"),
+        "{report}"
+    );
+}
