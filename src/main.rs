@@ -52,7 +52,7 @@ enum Command {
         /// Output folder for the report.
         #[arg(long, default_value = "output/validation")]
         output: PathBuf,
-        /// Only this case: cavity, channel, sphere_drag, block_settling.
+        /// Only this case: cavity, channel, sphere_drag, cylinder_strouhal, block_settling.
         #[arg(long)]
         only: Option<String>,
     },

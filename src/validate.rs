@@ -20,6 +20,7 @@ use crate::coupling::drag::{clift_grace_weber_1978, schiller_naumann_1933};
 use crate::coupling::validation::block_settling::{
     estimates as block_estimates, run_block_settling, tolerance_band, BlockSample,
 };
+use crate::coupling::validation::cylinder_strouhal::{cylinder_level, roshko_1954, run_cylinder};
 use crate::coupling::validation::sphere_drag::{
     run_sphere_drag, sphere_drag_level, standard_drag_curve,
 };
@@ -77,7 +78,13 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 4] = ["cavity", "channel", "sphere_drag", "block_settling"];
+pub const CASES: [&str; 5] = [
+    "cavity",
+    "channel",
+    "sphere_drag",
+    "cylinder_strouhal",
+    "block_settling",
+];
 
 /// As [`run_validation`], only the case named `only` (one of [`CASES`]) when given.
 pub fn run_validation_cases(
@@ -103,6 +110,9 @@ pub fn run_validation_cases(
     }
     if run("sphere_drag") {
         all &= sphere_drag_section(out, quick, &mut md)?;
+    }
+    if run("cylinder_strouhal") {
+        all &= cylinder_section(out, quick, &mut md)?;
     }
     if run("block_settling") {
         all &= block_settling_section(out, quick, &mut md)?;
@@ -193,6 +203,85 @@ fn sphere_drag_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Resu
         ],
     )?;
     md.push_str("\n![C_D against Re](sphere_drag.png)\n");
+    let _ = writeln!(md, "\nVerdict: {}\n", if all { "pass" } else { "FAIL" });
+    Ok(all)
+}
+
+/// Case 2 of the coupling: Strouhal number of a fixed cylinder against Roshko (1954).
+fn cylinder_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
+    md.push_str(
+        "\n## Coupling case 2: vortex shedding behind a fixed cylinder against Roshko (1954)\n\n",
+    );
+    md.push_str(
+        "Set-up, reference and tolerances: `src/coupling/validation/cylinder_strouhal/README.md`.\n\n",
+    );
+    md.push_str("| Re | D/Δ | steps | periods | St riprap | St Roshko | error | tolerance | mean C_D | verdict |\n");
+    md.push_str("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+    let mut all = true;
+    let mut measured = Vec::new();
+    for (case, tol) in cylinder_level(quick) {
+        let start = std::time::Instant::now();
+        let r = run_cylinder(&case);
+        let ok = r.periods >= 3 && r.error().abs() < tol;
+        all &= ok;
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {:.4} | {:.4} | {:+.1} % | {:.0} % | {:.3} | {} |",
+            case.re,
+            case.cells_per_diameter,
+            r.steps,
+            r.periods,
+            r.strouhal,
+            r.reference,
+            100.0 * r.error(),
+            100.0 * tol,
+            r.drag,
+            if ok { "pass" } else { "FAIL" }
+        );
+        eprintln!(
+            "cylinder Re {}: St {:.4} (Roshko {:.4}, {:+.1} %) in {:.0} s -> {}",
+            case.re,
+            r.strouhal,
+            r.reference,
+            100.0 * r.error(),
+            start.elapsed().as_secs_f64(),
+            if ok { "pass" } else { "FAIL" }
+        );
+        measured.push((case.re, r.strouhal));
+        let png = format!("cylinder_lift_re{}.png", case.re);
+        let title = format!("Cylinder, Re = {}: lift coefficient", case.re);
+        line_plot(
+            &out.join(&png),
+            &Axes {
+                title: &title,
+                x_label: "t [D/U]",
+                y_label: "C_L",
+                log_y: false,
+            },
+            &[Series::new("riprap", &r.lift, LineStyle::Line)],
+        )?;
+        let _ = writeln!(md, "\n![lift Re {}]({png})\n", case.re);
+    }
+    let roshko: Vec<(f64, f64)> = (0..=40)
+        .map(|k| {
+            let re = 50.0 + 100.0 * k as f64 / 40.0;
+            (re, roshko_1954(re))
+        })
+        .collect();
+    line_plot(
+        &out.join("cylinder_strouhal.png"),
+        &Axes {
+            title: "Cylinder: Strouhal number against Reynolds number",
+            x_label: "Re",
+            y_label: "St",
+            log_y: false,
+        },
+        &[
+            Series::new("riprap", &measured, LineStyle::Markers),
+            Series::new("Roshko 1954: 0.212 (1 - 21.2/Re)", &roshko, LineStyle::Line),
+        ],
+    )?;
+    md.push_str("![St against Re](cylinder_strouhal.png)\n");
     let _ = writeln!(md, "\nVerdict: {}\n", if all { "pass" } else { "FAIL" });
     Ok(all)
 }

@@ -251,7 +251,7 @@ impl Coupling {
                 load.impulse = 0.5 * dt * drag;
             });
         if !self.obstacle.is_empty() {
-            self.obstacle_force = st.obstacle_force(&self.obstacle);
+            self.obstacle_force = st.obstacle_force(&self.obstacle, &self.weight);
         }
     }
 

@@ -201,13 +201,15 @@ impl<'a> FlowView<'a> {
         (force, torque)
     }
 
-    /// Force [N] on a fixed solid given by its cell fractions [59].
-    pub fn obstacle_force(&self, phi: &[f64]) -> DVec3 {
+    /// Force [N] on a fixed solid given by its cell fractions [59], each face counted with the
+    /// solid's share w / Σ_j w_j of it (`total` = Σ_j w_j on the faces).
+    pub fn obstacle_force(&self, phi: &[f64], total: &[Vec<f64>; 3]) -> DVec3 {
         let (grid, bcs) = (&self.grid, &self.bcs);
         let volume = grid.cell_volume();
         let mut force = DVec3::ZERO;
         obstacle_faces(grid, bcs, phi, |a, c, w| {
-            force[a] += w * volume * self.force_density(a, c);
+            let share = w / total[a][c].max(w);
+            force[a] += share * volume * self.force_density(a, c);
         });
         force
     }

@@ -2,4 +2,5 @@
 //! directory with its README (source, set-up, compared quantity, tolerance, run cost).
 
 pub mod block_settling;
+pub mod cylinder_strouhal;
 pub mod sphere_drag;
