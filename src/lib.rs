@@ -11,6 +11,7 @@
 //! * [`geometry`]: where a sphere touches a plane, box, cylinder or triangle mesh
 //! * [`dem`]: spheres, materials, contact laws, neighbour search, walls, integration
 //! * [`fluid`]: the LES of the water on a staggered grid (METHOD.md §4)
+//! * [`coupling`]: the Euler-Lagrange coupling of spheres and water ([53], [59]-[63], drag [5])
 //! * [`simulation`]: the order of the phases of a time step
 //! * [`scenario`]: TOML scenario files and the checks and derived quantities of `riprap check`
 //! * [`io`]: VTK and `.pvd` output, CSV time series, plots, checkpoints
@@ -19,6 +20,7 @@
 #![warn(missing_docs)]
 
 pub mod bench;
+pub mod coupling;
 pub mod dem;
 pub mod fluid;
 pub mod geometry;

@@ -52,6 +52,9 @@ enum Command {
         /// Output folder for the report.
         #[arg(long, default_value = "output/validation")]
         output: PathBuf,
+        /// Only this case: cavity, channel, sphere_drag, cylinder_strouhal, block_settling.
+        #[arg(long)]
+        only: Option<String>,
     },
     /// Validate a scenario and print the derived quantities (contact time, time step, ...).
     Check {
@@ -238,8 +241,12 @@ fn main() -> ExitCode {
         Command::Bench {
             case: BenchCase::Fluid(args),
         } => riprap::bench::fluid::run_cli(&args),
-        Command::Validate { quick, output } => (|| {
-            let (_, ok) = riprap::validate::run_validation(&output, quick)?;
+        Command::Validate {
+            quick,
+            output,
+            only,
+        } => (|| {
+            let (_, ok) = riprap::validate::run_validation_cases(&output, quick, only.as_deref())?;
             eprintln!("report: {}", output.join("report.md").display());
             if ok {
                 Ok(())

@@ -317,7 +317,7 @@ pub fn restore(sim: Simulation, ck: Checkpoint) -> Simulation {
     }
     let mut rigid = ck.rigid;
     rigid.templates = sim.rigid.templates;
-    let resumed = Simulation::resumed(
+    let mut resumed = Simulation::resumed(
         dem,
         ck.feeders,
         rigid,
@@ -329,10 +329,13 @@ pub fn restore(sim: Simulation, ck: Checkpoint) -> Simulation {
         &ck.contacts,
         &ck.wall_contacts,
     );
-    match fluid {
-        Some(f) => resumed.with_fluid(f),
-        None => resumed,
+    if let Some(f) = fluid {
+        resumed = resumed.with_fluid(f);
     }
+    // The coupling keeps no state of its own: the held loads are in the spheres, ρ̄ and F in
+    // the flow.
+    resumed.coupling = sim.coupling;
+    resumed
 }
 
 /// One row of `series.csv`.

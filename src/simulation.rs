@@ -17,8 +17,8 @@
 //! 9. stability checks: NaN, absurd speed, overlap beyond bound
 //!
 //! With a fluid ([`Simulation::with_fluid`]) one step of the simulation is one fluid step
-//! Δt_f with the DEM steps inside it (uncoupled for now; the coupling of [59]-[63] comes
-//! next): Δt_f is the adaptive step of `fluid::timestep` (CFL and viscous limits, capped by
+//! Δt_f with the DEM steps inside it (coupled by `crate::coupling` when the scenario has
+//! `[coupling]`; the order is in `simulation/fluid_steps.rs`): Δt_f is the adaptive step of `fluid::timestep` (CFL and viscous limits, capped by
 //! the user bound), rounded *down* to a whole number k ≥ 1 of DEM steps, Δt_f = k Δt; the fluid
 //! advances by Δt_f, then the DEM takes its k steps. Without spheres (none present, no feeder
 //! still to insert) the fluid step is the adaptive step itself, shortened to land on the end
@@ -28,6 +28,7 @@
 
 mod fluid_steps;
 
+use crate::coupling::Coupling;
 use crate::dem::contacts::SavedContact;
 use crate::dem::forces::{compute_forces, start_forces, Kick};
 use crate::dem::insertion::Feeder;
@@ -70,6 +71,8 @@ pub struct Simulation {
     pub min_period: f64,
     /// The water, if the scenario has one (METHOD.md §4).
     pub fluid: Option<Fluid>,
+    /// The coupling of spheres and water ([53], [59]-[63]), with a fluid.
+    pub coupling: Option<Coupling>,
 }
 
 impl Simulation {
@@ -111,11 +114,12 @@ impl Simulation {
             step: 0,
             min_period,
             fluid: None,
+            coupling: None,
         };
         sim.dem.rebuild_lists(sim.time);
         start_forces(&mut sim.dem.spheres, sim.dem.gravity);
         compute_forces(&mut sim.dem, sim.time, None, false);
-        sim.add_link_forces();
+        sim.add_body_forces();
         sim
     }
 
@@ -145,6 +149,7 @@ impl Simulation {
             step,
             min_period,
             fluid: None,
+            coupling: None,
         }
     }
 
@@ -197,13 +202,13 @@ impl Simulation {
             half_dt: 0.5 * dt,
             max_speed: self.dem.limits.max_speed,
         };
-        if !linked {
+        if !linked && self.coupling.is_none() {
             // The closing half kick is fused into the force pass.
             let bad = compute_forces(&mut self.dem, self.time, Some(kick), true);
             return self.check(bad);
         }
         compute_forces(&mut self.dem, self.time, None, true);
-        self.add_link_forces();
+        self.add_body_forces();
         let d = &mut self.dem;
         half_kick(&mut d.spheres, dt);
         if !self.rigid.blocks.is_empty() {
@@ -213,8 +218,12 @@ impl Simulation {
         self.check(bad)
     }
 
-    /// The wires and bonds between bodies, added to the contact forces.
-    fn add_link_forces(&mut self) {
+    /// The water's held load ([59] [61], drag [5]), then the wires and bonds between bodies,
+    /// added to the contact forces.
+    fn add_body_forces(&mut self) {
+        if let Some(c) = &self.coupling {
+            c.add_fluid_loads(&mut self.dem.spheres, self.dem.dt);
+        }
         if !self.rigid.is_empty() {
             let d = &mut self.dem;
             self.rigid

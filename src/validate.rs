@@ -16,6 +16,14 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
+use crate::coupling::drag::{clift_grace_weber_1978, schiller_naumann_1933};
+use crate::coupling::validation::block_settling::{
+    estimates as block_estimates, run_block_settling, tolerance_band, BlockSample,
+};
+use crate::coupling::validation::cylinder_strouhal::{cylinder_level, roshko_1954, run_cylinder};
+use crate::coupling::validation::sphere_drag::{
+    run_sphere_drag, sphere_drag_level, standard_drag_curve,
+};
 use crate::fluid::validation::channel180::{
     mkm_1999_bulk_velocity, mkm_1999_profile, run_channel, ChannelCase, ChannelResult,
 };
@@ -66,8 +74,325 @@ pub fn cavity_cases(quick: bool) -> Vec<CavityCase> {
 /// Runs the cases, writes `report.md` and one PNG per case into `out`; returns the report and
 /// whether every case passed.
 pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)> {
+    run_validation_cases(out, quick, None)
+}
+
+/// The names `riprap validate --only` accepts.
+pub const CASES: [&str; 5] = [
+    "cavity",
+    "channel",
+    "sphere_drag",
+    "cylinder_strouhal",
+    "block_settling",
+];
+
+/// As [`run_validation`], only the case named `only` (one of [`CASES`]) when given.
+pub fn run_validation_cases(
+    out: &Path,
+    quick: bool,
+    only: Option<&str>,
+) -> anyhow::Result<(String, bool)> {
+    if let Some(name) = only {
+        anyhow::ensure!(
+            CASES.contains(&name),
+            "unknown validation case `{name}`; the cases are {CASES:?}"
+        );
+    }
+    let run = |name: &str| only.is_none_or(|o| o == name);
     std::fs::create_dir_all(out)?;
     let mut md = String::from("# riprap validation report\n\n");
+    let mut all = true;
+    if run("cavity") {
+        all &= cavity_section(out, quick, &mut md)?;
+    }
+    if run("channel") {
+        all &= channel_section(out, quick, &mut md)?;
+    }
+    if run("sphere_drag") {
+        all &= sphere_drag_section(out, quick, &mut md)?;
+    }
+    if run("cylinder_strouhal") {
+        all &= cylinder_section(out, quick, &mut md)?;
+    }
+    if run("block_settling") {
+        all &= block_settling_section(out, quick, &mut md)?;
+    }
+    std::fs::write(out.join("report.md"), &md)?;
+    Ok((md, all))
+}
+
+/// Case 1 of the coupling (METHOD.md §5): C_D of a fixed sphere against the standard curve.
+fn sphere_drag_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
+    md.push_str(
+        "\n## Coupling case 1: drag of a fixed sphere against the standard drag curve \
+         (Clift, Grace & Weber 1978)\n\n",
+    );
+    md.push_str(
+        "Set-up, reference and tolerances: `src/coupling/validation/sphere_drag/README.md`.\n\n",
+    );
+    md.push_str("| Re | d/Δ | box [d] | steps | C_D riprap | C_D standard | error | tolerance | verdict |\n");
+    md.push_str("|---:|---:|---|---:|---:|---:|---:|---:|---|\n");
+    let mut all = true;
+    let mut measured = Vec::new();
+    for (case, tol) in sphere_drag_level(quick) {
+        let start = std::time::Instant::now();
+        let r = run_sphere_drag(&case);
+        let ok = r.error().abs() < tol;
+        all &= ok;
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} × {} × {} | {} | {:.3} | {:.3} | {:+.1} % | {:.0} % | {} |",
+            case.re,
+            case.cells_per_diameter,
+            case.lengths[0],
+            case.lengths[1],
+            case.lengths[2],
+            r.steps,
+            r.drag_coefficient,
+            r.reference,
+            100.0 * r.error(),
+            100.0 * tol,
+            if ok { "pass" } else { "FAIL" }
+        );
+        eprintln!(
+            "sphere drag Re {}: C_D {:.3} (standard {:.3}, {:+.1} %) in {:.0} s -> {}",
+            case.re,
+            r.drag_coefficient,
+            r.reference,
+            100.0 * r.error(),
+            start.elapsed().as_secs_f64(),
+            if ok { "pass" } else { "FAIL" }
+        );
+        measured.push((case.re.log10(), r.drag_coefficient.log10()));
+    }
+    let curve: Vec<(f64, f64)> = (0..=60)
+        .map(|k| {
+            let re = 10f64.powf(-0.5 + 3.0 * k as f64 / 60.0);
+            (re.log10(), clift_grace_weber_1978(re).log10())
+        })
+        .collect();
+    let sn: Vec<(f64, f64)> = curve
+        .iter()
+        .map(|&(lr, _)| (lr, schiller_naumann_1933(10f64.powf(lr)).log10()))
+        .collect();
+    let table: Vec<(f64, f64)> = standard_drag_curve()
+        .into_iter()
+        .map(|(re, cd)| (re.log10(), cd.log10()))
+        .collect();
+    line_plot(
+        &out.join("sphere_drag.png"),
+        &Axes {
+            title: "Fixed sphere in a uniform stream: drag coefficient",
+            x_label: "log10 Re",
+            y_label: "log10 C_D",
+            log_y: false,
+        },
+        &[
+            Series::new("riprap (resolved coupling)", &measured, LineStyle::Markers),
+            Series::new(
+                "standard curve, Clift, Grace & Weber 1978",
+                &curve,
+                LineStyle::Line,
+            ),
+            Series::new(
+                "reference table (case directory)",
+                &table,
+                LineStyle::Markers,
+            ),
+            Series::new("Schiller & Naumann 1933", &sn, LineStyle::Dashed),
+        ],
+    )?;
+    md.push_str("\n![C_D against Re](sphere_drag.png)\n");
+    let _ = writeln!(md, "\nVerdict: {}\n", if all { "pass" } else { "FAIL" });
+    Ok(all)
+}
+
+/// Case 2 of the coupling: Strouhal number of a fixed cylinder against Roshko (1954).
+fn cylinder_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
+    md.push_str(
+        "\n## Coupling case 2: vortex shedding behind a fixed cylinder against Roshko (1954)\n\n",
+    );
+    md.push_str(
+        "Set-up, reference and tolerances: `src/coupling/validation/cylinder_strouhal/README.md`.\n\n",
+    );
+    md.push_str("| Re | D/Δ | steps | periods | St riprap | St Roshko | error | tolerance | mean C_D | verdict |\n");
+    md.push_str("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+    let mut all = true;
+    let mut measured = Vec::new();
+    for (case, tol) in cylinder_level(quick) {
+        let start = std::time::Instant::now();
+        let r = run_cylinder(&case);
+        let ok = r.periods >= 3 && r.error().abs() < tol;
+        all &= ok;
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {:.4} | {:.4} | {:+.1} % | {:.0} % | {:.3} | {} |",
+            case.re,
+            case.cells_per_diameter,
+            r.steps,
+            r.periods,
+            r.strouhal,
+            r.reference,
+            100.0 * r.error(),
+            100.0 * tol,
+            r.drag,
+            if ok { "pass" } else { "FAIL" }
+        );
+        eprintln!(
+            "cylinder Re {}: St {:.4} (Roshko {:.4}, {:+.1} %) in {:.0} s -> {}",
+            case.re,
+            r.strouhal,
+            r.reference,
+            100.0 * r.error(),
+            start.elapsed().as_secs_f64(),
+            if ok { "pass" } else { "FAIL" }
+        );
+        measured.push((case.re, r.strouhal));
+        let png = format!("cylinder_lift_re{}.png", case.re);
+        let title = format!("Cylinder, Re = {}: lift coefficient", case.re);
+        line_plot(
+            &out.join(&png),
+            &Axes {
+                title: &title,
+                x_label: "t [D/U]",
+                y_label: "C_L",
+                log_y: false,
+            },
+            &[Series::new("riprap", &r.lift, LineStyle::Line)],
+        )?;
+        let _ = writeln!(md, "\n![lift Re {}]({png})\n", case.re);
+    }
+    let roshko: Vec<(f64, f64)> = (0..=40)
+        .map(|k| {
+            let re = 50.0 + 100.0 * k as f64 / 40.0;
+            (re, roshko_1954(re))
+        })
+        .collect();
+    line_plot(
+        &out.join("cylinder_strouhal.png"),
+        &Axes {
+            title: "Cylinder: Strouhal number against Reynolds number",
+            x_label: "Re",
+            y_label: "St",
+            log_y: false,
+        },
+        &[
+            Series::new("riprap", &measured, LineStyle::Markers),
+            Series::new("Roshko 1954: 0.212 (1 - 21.2/Re)", &roshko, LineStyle::Line),
+        ],
+    )?;
+    md.push_str("![St against Re](cylinder_strouhal.png)\n");
+    let _ = writeln!(md, "\nVerdict: {}\n", if all { "pass" } else { "FAIL" });
+    Ok(all)
+}
+
+/// Case 3 of the coupling: the three-sphere block settling in still water.
+fn block_settling_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
+    let start = std::time::Instant::now();
+    let r = run_block_settling(quick)?;
+    let seconds = start.elapsed().as_secs_f64();
+    let (broadside, equivalent) = block_estimates();
+    let (lo, hi) = tolerance_band();
+    let ok = r.settling_speed > lo && r.settling_speed < hi;
+    let (first, last) = (r.samples[0], *r.samples.last().expect("samples"));
+    md.push_str(
+        "\n## Coupling case 3: three-sphere glass block (d = 2 cm, s.g. 2.23) settling in \
+         still water\n\n",
+    );
+    let _ = writeln!(
+        md,
+        "Set-up, estimates and tolerance: `src/coupling/validation/block_settling/README.md`. \
+         d/Δ = {:.0}, {} fluid steps, {seconds:.0} s.\n",
+        r.cells_per_diameter, r.steps
+    );
+    md.push_str("| quantity | value |\n|---|---:|\n");
+    let _ = writeln!(
+        md,
+        "| settling speed, mean over the last 10 cm [m/s] | {:.3} |",
+        r.settling_speed
+    );
+    let _ = writeln!(
+        md,
+        "| estimate: broadside, three lone spheres on the standard curve [m/s] | {broadside:.3} |"
+    );
+    let _ = writeln!(
+        md,
+        "| estimate: volume-equivalent sphere, Haider & Levenspiel (1989), ψ = 0.693 [m/s] | {equivalent:.3} |"
+    );
+    let _ = writeln!(md, "| tolerance band [m/s] | {lo:.3} to {hi:.3} |");
+    let _ = writeln!(
+        md,
+        "| tilt of the axis above the horizontal, start → end [°] | {:.1} → {:.1} |",
+        first.tilt, last.tilt
+    );
+    let _ = writeln!(
+        md,
+        "| time to fall to 3 d above the floor [s] | {:.3} |",
+        last.time
+    );
+    let _ = writeln!(md, "\nVerdict: {}\n", if ok { "pass" } else { "FAIL" });
+    let series = |f: &dyn Fn(&BlockSample) -> f64| -> Vec<(f64, f64)> {
+        r.samples.iter().map(|p| (p.time, f(p))).collect()
+    };
+    let t_end = last.time;
+    let height = series(&|p| p.height);
+    line_plot(
+        &out.join("block_height.png"),
+        &Axes {
+            title: "Three-sphere block settling: height of the centre",
+            x_label: "t [s]",
+            y_label: "z [m]",
+            log_y: false,
+        },
+        &[Series::new("riprap", &height, LineStyle::Line)],
+    )?;
+    let speed = series(&|p| -p.vertical_velocity);
+    let upper = [(0.0, broadside), (t_end, broadside)];
+    let lower = [(0.0, equivalent), (t_end, equivalent)];
+    line_plot(
+        &out.join("block_speed.png"),
+        &Axes {
+            title: "Three-sphere block settling: settling speed beside the two estimates",
+            x_label: "t [s]",
+            y_label: "-w [m/s]",
+            log_y: false,
+        },
+        &[
+            Series::new("riprap", &speed, LineStyle::Line),
+            Series::new("broadside, three lone spheres", &upper, LineStyle::Dashed),
+            Series::new(
+                "equivalent sphere, Haider & Levenspiel",
+                &lower,
+                LineStyle::Dashed,
+            ),
+        ],
+    )?;
+    let tilt = series(&|p| p.tilt);
+    line_plot(
+        &out.join("block_tilt.png"),
+        &Axes {
+            title: "Three-sphere block settling: axis angle above the horizontal",
+            x_label: "t [s]",
+            y_label: "tilt [degrees]",
+            log_y: false,
+        },
+        &[Series::new("riprap", &tilt, LineStyle::Line)],
+    )?;
+    md.push_str(
+        "![height](block_height.png)\n\n![speed](block_speed.png)\n\n![tilt](block_tilt.png)\n",
+    );
+    eprintln!(
+        "block settling: {:.3} m/s (band {lo:.3} to {hi:.3}), tilt {:.1} -> {:.1} deg in {seconds:.0} s -> {}",
+        r.settling_speed,
+        first.tilt,
+        last.tilt,
+        if ok { "pass" } else { "FAIL" }
+    );
+    Ok(ok)
+}
+
+/// The lid-driven cavity cases of the level.
+fn cavity_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
     md.push_str("## Lid-driven cavity (flow solver) against Ghia, Ghia & Shin (1982)\n\n");
     md.push_str("| Re | grid | steps | steadiness [U] | max abs u err [U] | max abs v err [U] | tolerance (u, v) | verdict |\n");
     md.push_str("|---:|---:|---:|---:|---:|---:|---:|---|\n");
@@ -110,9 +435,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
             if ok { "pass" } else { "FAIL" }
         );
     }
-    all &= channel_section(out, quick, &mut md)?;
-    std::fs::write(out.join("report.md"), &md)?;
-    Ok((md, all))
+    Ok(all)
 }
 
 /// The channel case of a level with its tolerances: |U_b⁺/U_b⁺_ref − 1|, the largest

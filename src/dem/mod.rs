@@ -7,6 +7,7 @@
 pub mod contact;
 pub mod contacts;
 pub mod domain;
+pub mod fluid_load;
 pub mod forces;
 pub mod insertion;
 pub mod integrate;

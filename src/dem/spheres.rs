@@ -10,6 +10,7 @@
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+use super::fluid_load::FluidLoad;
 use crate::math::Vec3;
 
 /// Index of a material in the simulation's material table.
@@ -49,6 +50,9 @@ pub struct Spheres {
     /// Id of the rigid body (block) the sphere is a member of, or `NO_BODY`. Members of one
     /// body never touch each other: their contact is internal to the body.
     pub body: Vec<u32>,
+    /// The water's load, held over a fluid step (see `crate::coupling`). Empty without a
+    /// coupling (it is 176 bytes a sphere), else one per sphere: `with_fluid_loads` fills it.
+    pub fluid: Vec<FluidLoad>,
     /// The id the next inserted sphere gets.
     pub next_id: SphereId,
     /// The slot of each id ever issued, `NO_SLOT` once removed (index: id).
@@ -67,6 +71,7 @@ pub struct PermuteScratch {
     u32s: Vec<u32>,
     u16s: Vec<u16>,
     bools: Vec<bool>,
+    loads: Vec<FluidLoad>,
 }
 
 /// `col ← [col[order[0]], col[order[1]], ...]` through `scratch` (which then holds the old column).
@@ -121,6 +126,9 @@ impl Spheres {
         self.fixed.reserve(n);
         self.slot.reserve(n);
         self.body.reserve(n);
+        if !self.fluid.is_empty() {
+            self.fluid.reserve(n);
+        }
     }
 
     /// Adds a sphere and returns its id. Mass m = ρ (4/3) π r³, inertia I = (2/5) m r².
@@ -142,6 +150,9 @@ impl Spheres {
         self.slot.resize(id as usize, NO_SLOT);
         self.slot.push((self.id.len() - 1) as u32);
         self.body.push(NO_BODY);
+        if !self.fluid.is_empty() {
+            self.fluid.push(FluidLoad::default());
+        }
         id
     }
 
@@ -169,8 +180,19 @@ impl Spheres {
         compact(&mut self.material, keep);
         compact(&mut self.fixed, keep);
         compact(&mut self.body, keep);
+        compact(&mut self.fluid, keep);
         self.slot.fill(NO_SLOT);
         self.index_slots();
+    }
+
+    /// Gives every sphere a fluid load (zero) if the column is empty; the coupling calls it
+    /// before it writes loads. The column is either empty or one per sphere.
+    pub fn with_fluid_loads(&mut self) -> &mut [FluidLoad] {
+        if self.fluid.len() != self.len() {
+            debug_assert!(self.fluid.is_empty(), "fluid loads for only some spheres");
+            self.fluid.resize(self.len(), FluidLoad::default());
+        }
+        &mut self.fluid
     }
 
     /// True when slots i and j are members of the same rigid body (no contact between them).
@@ -200,6 +222,9 @@ impl Spheres {
         gather(&mut self.material, order, &mut sc.u16s);
         gather(&mut self.fixed, order, &mut sc.bools);
         gather(&mut self.body, order, &mut sc.u32s);
+        if !self.fluid.is_empty() {
+            gather(&mut self.fluid, order, &mut sc.loads);
+        }
         self.index_slots();
     }
 

@@ -237,6 +237,13 @@ impl Fluid {
         [&v[0], &v[1], &v[2]]
     }
 
+    /// Velocity (mutable) and ρ̄ at once: what the coupling's velocity correction [62] changes
+    /// and reads. Call [`Fluid::fill_ghosts`] afterwards; boundary faces must keep their values.
+    pub fn correction_fields(&mut self) -> (&mut [Vec<f64>; 3], &[f64]) {
+        let s = &mut self.state;
+        (&mut s.velocity, &s.mixture_density)
+    }
+
     /// Pressure less hydrostatic, cell centres, padded [Pa].
     pub fn pressure(&self) -> &[f64] {
         &self.state.pressure

@@ -19,7 +19,8 @@ use crate::rigid::bodies::RigidBodies;
 
 const MAGIC: &[u8; 8] = b"RIPRAPCK";
 /// 2: blocks and links; 3: the fluid state; 4: the storage order, the neighbour-build
-/// positions and the contact history by pair.
+/// positions, the contact history by pair, and the fluid's held load on each sphere
+/// (`Spheres::fluid`).
 const VERSION: u32 = 4;
 
 /// The saved state.

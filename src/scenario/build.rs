@@ -48,6 +48,8 @@ pub struct Derived {
     pub block_lines: Vec<String>,
     /// The flow, if the scenario has one.
     pub fluid: Option<FluidDerived>,
+    /// The coupling's line of the report, if the scenario couples spheres and water.
+    pub coupling: Option<String>,
 }
 
 impl Derived {
@@ -60,6 +62,9 @@ impl Derived {
         };
         if let Some(f) = &self.fluid {
             s.push_str(&f.report());
+        }
+        if let Some(c) = &self.coupling {
+            s.push_str(c);
         }
         s
     }
@@ -552,6 +557,7 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     };
     let radii: Vec<f64> = kinds.iter().map(|k| k.1).collect();
     let fluid = build_fluid(src, &domain, gravity, dt, &radii)?;
+    let coupling = super::coupling::coupling_parameters(src, fluid.is_some())?;
     spheres.reserve(n_fed);
     let dem = Dem {
         spheres,
@@ -585,10 +591,19 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         at_step,
         block_lines,
         fluid: fluid.as_ref().map(|f| f.1.clone()),
+        coupling: coupling.map(|c| {
+            let cells = fluid.as_ref().and_then(|f| f.1.cells_per_diameter());
+            super::coupling::report(&c, cells)
+        }),
     };
     let mut simulation = Simulation::with_bodies(dem, feeders, rigid, min_period);
     if let Some((f, _)) = fluid {
+        let d_max = 2.0 * radii.iter().fold(0.0f64, |a, &r| a.max(r));
+        let coupled = coupling.map(|c| crate::coupling::Coupling::new(c, &f, d_max));
         simulation = simulation.with_fluid(f);
+        if let Some(c) = coupled {
+            simulation = simulation.with_coupling(c);
+        }
     }
     Ok(Built {
         simulation,

@@ -4,6 +4,7 @@
 
 mod blocks;
 mod build;
+pub mod coupling;
 pub mod default;
 pub mod fluid;
 pub mod schema;

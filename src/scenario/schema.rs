@@ -43,6 +43,8 @@ pub struct Scenario {
     pub output: OutputSection,
     /// The water (`scenario::fluid`).
     pub fluid: Option<super::fluid::FluidSection>,
+    /// The coupling of spheres and water (`scenario::coupling`).
+    pub coupling: Option<super::coupling::CouplingSection>,
 }
 
 /// `[run]`

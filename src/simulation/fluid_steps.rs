@@ -6,12 +6,22 @@
 //! without spheres:  Δt_f = Δt_adaptive (the last two steps split evenly to land on the end)
 //! ```
 //!
-//! Δt is the DEM step of [22]. The fluid advances first (tⁿ → tⁿ + Δt_f), then the DEM takes
-//! its k steps; afterwards the simulated time is the fluid's, so both clocks agree exactly at
-//! every step boundary, checkpoints included. Everything depends on the state only, so a run
+//! Δt is the DEM step of [22]. With the coupling (`crate::coupling`) one step is:
+//!
+//! 1. the provisional fluid step tⁿ → tⁿ + Δt_f with ρ̄ⁿ and Fⁿ [51] (`Fluid::step`);
+//! 2. the fluid's load on each sphere from that flow [59] [61] (drag [5] for unresolved
+//!    spheres), held over the sub-steps;
+//! 3. the k DEM sub-steps, each adding the held load in its force evaluation;
+//! 4. φ and ρ̄ⁿ⁺¹ at the new positions [53], the velocity correction [62], the interaction
+//!    force Fⁿ⁺¹ [63] for the next step, and the drag impulse of unresolved spheres returned
+//!    to the water.
+//!
+//! Afterwards the simulated time is the fluid's, so both clocks agree exactly at every step
+//! boundary, checkpoints included. Everything depends on the state only, so a run
 //! is deterministic and a restart continues bit for bit. Nothing here allocates.
 
 use super::{Instability, Simulation};
+use crate::coupling::Coupling;
 use crate::fluid::Fluid;
 
 /// Relative tolerance on the end time of a run paced by the fluid alone: its last step lands
@@ -23,6 +33,19 @@ impl Simulation {
     /// one restored from the same checkpoint).
     pub fn with_fluid(mut self, fluid: Fluid) -> Self {
         self.fluid = Some(fluid);
+        self
+    }
+
+    /// Couples the spheres to the water (after [`Simulation::with_fluid`]). At t = 0 the
+    /// mixture density [53] is set from the spheres and the water in them moves with them; a
+    /// restored simulation keeps the saved flow.
+    pub fn with_coupling(mut self, mut coupling: Coupling) -> Self {
+        if let Some(f) = &mut self.fluid {
+            if f.steps() == 0 {
+                coupling.initialise(f, &mut self.dem.spheres);
+            }
+        }
+        self.coupling = Some(coupling);
         self
     }
 
@@ -86,8 +109,14 @@ impl Simulation {
         fluid.step(k * dt);
         let t_fluid = fluid.time();
         self.check_fluid()?;
+        if let (Some(c), Some(f)) = (&mut self.coupling, &self.fluid) {
+            c.fluid_forces(f, &mut self.dem.spheres, dt); // [59] [61], held
+        }
         for _ in 0..k as u64 {
             self.dem_step()?;
+        }
+        if let (Some(c), Some(f)) = (&mut self.coupling, &mut self.fluid) {
+            c.correct(f, &mut self.dem.spheres, k * dt, dt); // [53] [62] [63]
         }
         self.time = t_fluid;
         Ok(())

@@ -1,0 +1,6 @@
+//! The coupling's validation cases (METHOD.md §5), run by `riprap validate`: each a
+//! directory with its README (source, set-up, compared quantity, tolerance, run cost).
+
+pub mod block_settling;
+pub mod cylinder_strouhal;
+pub mod sphere_drag;
