@@ -28,7 +28,7 @@ pub struct BlockSample {
     pub height: f64,
     /// Vertical velocity of the centre [m s⁻¹] (negative: down).
     pub vertical_velocity: f64,
-    /// Angle of the rod's axis above the horizontal [degrees].
+    /// Angle of the rod's axis above the horizontal, signed (axis taken towards +x) [degrees].
     pub tilt: f64,
 }
 
@@ -84,9 +84,11 @@ pub fn run_block_settling(quick: bool) -> anyhow::Result<BlockSettlingResult> {
             v += s.mass[i] * s.velocity[i];
         }
         let (x, v) = (x / m, v / m);
-        // Members are in id order: the axis runs from the first to the last.
+        // Members are in id order: the axis runs from the first to the last, taken pointing
+        // to +x so that the tilt changes sign when the rod swings through the horizontal.
         let axis = s.position[s.len() - 1] - s.position[0];
-        let tilt = (axis.z.abs() / axis.length()).asin().to_degrees();
+        let axis = if axis.x < 0.0 { -axis } else { axis };
+        let tilt = (axis.z / axis.length()).asin().to_degrees();
         samples.push(BlockSample {
             time: sim.time,
             height: x.z,
