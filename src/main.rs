@@ -168,7 +168,7 @@ fn source(path: &Option<PathBuf>) -> Result<Source, riprap::scenario::ScenarioEr
         Some(p) => Source::from_file(p),
         None => Source::from_str(
             DEFAULT_SCENARIO,
-            "<built-in armour_on_slope.toml>",
+            "<built-in hopper_cloud.toml>",
             PathBuf::from("."),
         ),
     }

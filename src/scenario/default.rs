@@ -1,4 +1,5 @@
-//! The built-in default scenario: gravel and armour stones poured onto a rubble-mound slope.
+//! The built-in default scenario: a cloud of spheres fed from a hopper near the surface of a
+//! small tank of still water, falling through it (a small version of METHOD.md §5, case 4).
 
-/// TOML text of the default scenario (`examples/armour_on_slope.toml`).
-pub const DEFAULT_SCENARIO: &str = include_str!("../../examples/armour_on_slope.toml");
+/// TOML text of the default scenario (`examples/hopper_cloud.toml`).
+pub const DEFAULT_SCENARIO: &str = include_str!("../../examples/hopper_cloud.toml");

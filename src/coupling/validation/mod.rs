@@ -3,4 +3,5 @@
 
 pub mod block_settling;
 pub mod cylinder_strouhal;
+pub mod hopper_cloud;
 pub mod sphere_drag;
