@@ -92,7 +92,7 @@ enum BenchCase {
 }
 
 fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
-    use riprap::bench::{b1_lattice, peak_memory, run_b1};
+    use riprap::bench::{b1_lattice, run_b1};
     let lattice = b1_lattice(n);
     let threads = rayon::current_num_threads();
     println!("B1 box-settle: lattice {lattice:?}, {steps} steps, {threads} thread(s)");
@@ -107,25 +107,38 @@ fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
             row.step, row.kinetic, row.rotational, row.mean_z, row.max_z, row.contacts_per_sphere
         );
     }
-    let rate = r.n as f64 * r.steps as f64 / r.loop_seconds;
     println!("spheres: {}", r.n);
-    println!("loop time: {:.2} s", r.loop_seconds);
-    println!("neighbour rebuilds: {}", r.rebuilds);
+    print_loop_summary(r.n, r.steps, r.loop_seconds, 2, r.rebuilds, threads);
+    Ok(())
+}
+
+/// The figures the peers report after a run: loop time (with `decimals`), rebuilds,
+/// particle-steps per second in all and per thread, and the peak memory.
+fn print_loop_summary(
+    n: usize,
+    steps: u64,
+    loop_seconds: f64,
+    decimals: usize,
+    rebuilds: impl std::fmt::Display,
+    threads: usize,
+) {
+    let rate = n as f64 * steps as f64 / loop_seconds;
+    println!("loop time: {loop_seconds:.decimals$} s");
+    println!("neighbour rebuilds: {rebuilds}");
     println!("particle-steps/s: {rate:.4e}");
     println!("particle-steps/s per thread: {:.4e}", rate / threads as f64);
-    if let Some(m) = peak_memory() {
+    if let Some(m) = riprap::bench::peak_memory() {
         println!(
             "peak memory: {:.1} MB ({:.0} bytes per sphere)",
             m as f64 / 1e6,
-            m as f64 / r.n as f64
+            m as f64 / n as f64
         );
     }
-    Ok(())
 }
 
 fn bench_b2(data: &std::path::Path, steps: u64, every: u64) -> anyhow::Result<()> {
     use anyhow::Context;
-    use riprap::bench::{b2_simulation, peak_memory, read_lammps_data, run_b2};
+    use riprap::bench::{b2_simulation, read_lammps_data, run_b2};
     let text = std::fs::read_to_string(data)
         .with_context(|| format!("cannot read the LAMMPS data file {}", data.display()))?;
     let lammps = read_lammps_data(&text).map_err(|e| anyhow::anyhow!("{}: {e}", data.display()))?;
@@ -147,19 +160,8 @@ fn bench_b2(data: &std::path::Path, steps: u64, every: u64) -> anyhow::Result<()
             row.step, row.atoms, row.kinetic, row.rotational
         );
     }
-    let n = sim.dem.spheres.len() as f64;
-    let rate = n * steps as f64 / r.loop_seconds;
-    println!("loop time: {:.3} s", r.loop_seconds);
-    println!("neighbour rebuilds: {}", r.rebuilds);
-    println!("particle-steps/s: {rate:.4e}");
-    println!("particle-steps/s per thread: {:.4e}", rate / threads as f64);
-    if let Some(m) = peak_memory() {
-        println!(
-            "peak memory: {:.1} MB ({:.0} bytes per sphere)",
-            m as f64 / 1e6,
-            m as f64 / n
-        );
-    }
+    let n = sim.dem.spheres.len();
+    print_loop_summary(n, steps, r.loop_seconds, 3, r.rebuilds, threads);
     Ok(())
 }
 

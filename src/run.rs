@@ -23,7 +23,7 @@ use crate::io::checkpoint::Checkpoint;
 use crate::io::csv::{read_csv, CsvSeries};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
 use crate::io::pvd::PvdSeries;
-use crate::io::vtk::{write_points, write_surface, Array, Values};
+use crate::io::vtk::{write_points, write_surface, Array};
 use crate::scenario::{build, Source};
 use crate::simulation::Simulation;
 use flow::FlowOutput;
@@ -452,34 +452,13 @@ fn write_spheres(sim: &Simulation, path: &Path) -> std::io::Result<()> {
         path,
         &s.position,
         &[
-            Array {
-                name: "id",
-                values: Values::Ints(&id),
-            },
-            Array {
-                name: "diameter",
-                values: Values::Scalars(&diameter),
-            },
-            Array {
-                name: "velocity",
-                values: Values::Vectors(&s.velocity),
-            },
-            Array {
-                name: "angular_velocity",
-                values: Values::Vectors(&s.angular_velocity),
-            },
-            Array {
-                name: "force",
-                values: Values::Vectors(&s.force),
-            },
-            Array {
-                name: "material",
-                values: Values::Ints(&material),
-            },
-            Array {
-                name: "body",
-                values: Values::Ints(&body),
-            },
+            Array::ints("id", &id),
+            Array::scalars("diameter", &diameter),
+            Array::vectors("velocity", &s.velocity),
+            Array::vectors("angular_velocity", &s.angular_velocity),
+            Array::vectors("force", &s.force),
+            Array::ints("material", &material),
+            Array::ints("body", &body),
         ],
     )
 }
@@ -499,15 +478,7 @@ fn snapshot(
         let (v, tri) = wall.surface(sim.time, d.min, d.max);
         let name = format!("walls_{k:06}_{w}.vtp");
         let id = vec![w as i64; tri.len()];
-        write_surface(
-            &out.join(&name),
-            &v,
-            &tri,
-            &[Array {
-                name: "wall",
-                values: Values::Ints(&id),
-            }],
-        )?;
+        write_surface(&out.join(&name), &v, &tri, &[Array::ints("wall", &id)])?;
         walls.add(sim.time, &name, w)?;
     }
     Ok(())

@@ -231,8 +231,9 @@ impl Simulation {
         }
     }
 
-    /// Removes the spheres whose centre left the domain along a non-periodic axis; true if any
-    /// was removed. A sphere that leaves at an absurd speed (or with a non-finite state) is
+    /// Removes the spheres whose centre left the domain along a non-periodic axis; called only
+    /// when the opening counted such an outflow (same criterion), so something is removed and
+    /// it returns true. A sphere that leaves at an absurd speed (or with a non-finite state) is
     /// kept, so that the stability check reports it instead of the run quietly losing it.
     fn remove_outside(&mut self) -> bool {
         let d = &mut self.dem;
@@ -242,12 +243,6 @@ impl Simulation {
         let stays = |x: Vec3, v: Vec3| {
             domain.contains(x) || !is_finite(x) || v.length().is_nan() || v.length() > v_max
         };
-        let lost = (0..s.len())
-            .filter(|&i| !stays(s.position[i], s.velocity[i]))
-            .count();
-        if lost == 0 {
-            return false; // The common case allocates nothing.
-        }
         let mut keep: Vec<bool> = (0..s.len())
             .map(|i| stays(s.position[i], s.velocity[i]))
             .collect();

@@ -16,7 +16,7 @@ use crate::math::Vec3;
 use crate::rigid::bodies::{LinkKind, RigidBodies};
 
 use super::csv::CsvSeries;
-use super::vtk::{write_points, Array, Values};
+use super::vtk::{write_points, Array};
 
 /// Columns of `blocks.csv`.
 pub const BLOCK_COLUMNS: [&str; 11] = [
@@ -45,46 +45,16 @@ pub fn write_block_points(r: &RigidBodies, path: &Path) -> std::io::Result<()> {
         path,
         &b.centre,
         &[
-            Array {
-                name: "id",
-                values: Values::Ints(&id),
-            },
-            Array {
-                name: "template",
-                values: Values::Ints(&template),
-            },
-            Array {
-                name: "mass",
-                values: Values::Scalars(&b.mass),
-            },
-            Array {
-                name: "velocity",
-                values: Values::Vectors(&b.velocity),
-            },
-            Array {
-                name: "angular_velocity",
-                values: Values::Vectors(&b.angular_velocity),
-            },
-            Array {
-                name: "displacement",
-                values: Values::Vectors(&b.displacement),
-            },
-            Array {
-                name: "rotation_angle",
-                values: Values::Scalars(&angle),
-            },
-            Array {
-                name: "axis_1",
-                values: Values::Vectors(&a1),
-            },
-            Array {
-                name: "axis_2",
-                values: Values::Vectors(&a2),
-            },
-            Array {
-                name: "axis_3",
-                values: Values::Vectors(&a3),
-            },
+            Array::ints("id", &id),
+            Array::ints("template", &template),
+            Array::scalars("mass", &b.mass),
+            Array::vectors("velocity", &b.velocity),
+            Array::vectors("angular_velocity", &b.angular_velocity),
+            Array::vectors("displacement", &b.displacement),
+            Array::scalars("rotation_angle", &angle),
+            Array::vectors("axis_1", &a1),
+            Array::vectors("axis_2", &a2),
+            Array::vectors("axis_3", &a3),
         ],
     )
 }
