@@ -89,6 +89,9 @@ enum BenchCase {
     /// The flow solver: time step and pressure solve per grid size and thread count, or
     /// (with --cavity) the lid-driven cube that bench/openfoam/compare_cavity.sh compares.
     Fluid(riprap::bench::fluid::FluidBenchArgs),
+    /// A coupled run (default: the sheet flow of validation case 5): wall time per simulated
+    /// second and per oscillation period, split into fluid, pressure, coupling and DEM.
+    Coupled(riprap::bench::coupled::CoupledBenchArgs),
 }
 
 fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
@@ -220,6 +223,20 @@ fn main() -> ExitCode {
                 s.spheres,
                 s.output_dir.display()
             );
+            if s.fluid_cells > 0 {
+                let t = s.phase_times;
+                let pc = |x: f64| 100.0 * x / s.wall_seconds.max(1e-9);
+                eprintln!(
+                    "time: fluid {:.0} % (pressure {:.0} %), fluid loads {:.0} %, DEM {:.0} %, \
+                     correction {:.0} %, output and rest {:.0} %",
+                    pc(t.fluid),
+                    pc(s.pressure_seconds),
+                    pc(t.fluid_loads),
+                    pc(t.dem),
+                    pc(t.correction),
+                    pc(s.wall_seconds - t.total()),
+                );
+            }
             if s.spheres_lost > 0 {
                 eprintln!(
                     "note: {} sphere(s) left the domain and were removed (an outflow, or a \
@@ -243,6 +260,9 @@ fn main() -> ExitCode {
         Command::Bench {
             case: BenchCase::Fluid(args),
         } => riprap::bench::fluid::run_cli(&args),
+        Command::Bench {
+            case: BenchCase::Coupled(args),
+        } => riprap::bench::coupled::run_cli(&args),
         Command::Validate {
             quick,
             output,

@@ -60,6 +60,10 @@ pub struct RunSummary {
     pub spheres_lost: usize,
     /// Cells of the fluid grid (0 without a fluid).
     pub fluid_cells: usize,
+    /// Wall-clock time per phase of the fluid steps [s] (zero without a fluid).
+    pub phase_times: crate::simulation::timing::PhaseTimes,
+    /// Of `phase_times.fluid`, the pressure projection [s].
+    pub pressure_seconds: f64,
 }
 
 /// Columns of `series.csv`.
@@ -258,6 +262,8 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         spheres: sim.dem.spheres.len(),
         spheres_lost: sim.dem.stats.spheres_lost,
         fluid_cells: sim.fluid.as_ref().map_or(0, |f| f.grid().cell_count()),
+        phase_times: sim.times,
+        pressure_seconds: sim.fluid.as_ref().map_or(0.0, |f| f.pressure_seconds()),
     })
 }
 

@@ -27,6 +27,7 @@
 //! ARCHITECTURE.md repeats this order; keep the two in step.
 
 mod fluid_steps;
+pub mod timing;
 
 use crate::coupling::Coupling;
 use crate::dem::contacts::SavedContact;
@@ -73,6 +74,11 @@ pub struct Simulation {
     pub fluid: Option<Fluid>,
     /// The coupling of spheres and water ([53], [59]-[63]), with a fluid.
     pub coupling: Option<Coupling>,
+    /// Wall-clock time per phase of the fluid steps taken (not state: never saved).
+    pub times: timing::PhaseTimes,
+    /// Largest |∇·u| of the projected flow of the last coupled fluid step, before the
+    /// correction [62] blends in the spheres' velocities [s⁻¹] (not state: never saved).
+    pub projected_divergence: f64,
 }
 
 impl Simulation {
@@ -115,6 +121,8 @@ impl Simulation {
             min_period,
             fluid: None,
             coupling: None,
+            times: Default::default(),
+            projected_divergence: 0.0,
         };
         sim.dem.rebuild_lists(sim.time);
         start_forces(&mut sim.dem.spheres, sim.dem.gravity);
@@ -150,6 +158,8 @@ impl Simulation {
             min_period,
             fluid: None,
             coupling: None,
+            times: Default::default(),
+            projected_divergence: 0.0,
         }
     }
 

@@ -109,6 +109,9 @@ pub struct Fluid {
     /// pⁿ⁺¹ being computed [Pa].
     pub(super) next_pressure: Vec<f64>,
     pub(super) projection: Projection,
+    /// Wall-clock time spent in the projection so far [s]: a measurement for `riprap bench`,
+    /// not part of the state (not saved, not compared).
+    pub(super) pressure_seconds: f64,
 }
 
 /// Cell-centred copies of the fields for output (compact, nx·ny·nz, i fastest: the order of
@@ -173,9 +176,15 @@ impl Fluid {
             tendency: zero3(),
             next_pressure: grid.field(),
             projection: Projection::new(&grid, &boundaries),
+            pressure_seconds: 0.0,
         };
         fluid.fill_ghosts();
         Ok(fluid)
+    }
+
+    /// Wall-clock time spent in the pressure projection since the fluid was made [s].
+    pub fn pressure_seconds(&self) -> f64 {
+        self.pressure_seconds
     }
 
     /// The grid.

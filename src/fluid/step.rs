@@ -138,6 +138,7 @@ impl Fluid {
         };
         fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
         advance_outflow(&grid, &bcs, &mut state.velocity, dt);
+        let clock = std::time::Instant::now();
         self.projection.project(
             &grid,
             &bcs,
@@ -153,6 +154,7 @@ impl Fluid {
             r,
             passes,
         );
+        self.pressure_seconds += clock.elapsed().as_secs_f64();
         fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
 
         // Rotate: pⁿ⁻¹ ← pⁿ ← pⁿ⁺¹, Hⁿ⁻¹ ← Hⁿ. After the first step p⁰ is no pressure of the

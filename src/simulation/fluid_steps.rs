@@ -20,6 +20,9 @@
 //! boundary, checkpoints included. Everything depends on the state only, so a run
 //! is deterministic and a restart continues bit for bit. Nothing here allocates.
 
+use std::time::Instant;
+
+use super::timing::lap;
 use super::{Instability, Simulation};
 use crate::coupling::Coupling;
 use crate::fluid::Fluid;
@@ -90,8 +93,10 @@ impl Simulation {
             } else {
                 f64::INFINITY
             };
+            let clock = Instant::now();
             fluid.step_adaptive(target);
             self.time = fluid.time();
+            lap(clock, &mut self.times.fluid);
             return self.check_fluid();
         }
         if stable < dt {
@@ -106,17 +111,23 @@ impl Simulation {
         if left.is_finite() {
             k = k.min(left.max(1.0));
         }
+        let clock = Instant::now();
         fluid.step(k * dt);
         let t_fluid = fluid.time();
+        let mut clock = lap(clock, &mut self.times.fluid);
         self.check_fluid()?;
         if let (Some(c), Some(f)) = (&mut self.coupling, &self.fluid) {
+            self.projected_divergence = f.max_divergence();
             c.fluid_forces(f, &mut self.dem.spheres, dt); // [59] [61], held
+            clock = lap(clock, &mut self.times.fluid_loads);
         }
         for _ in 0..k as u64 {
             self.dem_step()?;
         }
+        clock = lap(clock, &mut self.times.dem);
         if let (Some(c), Some(f)) = (&mut self.coupling, &mut self.fluid) {
             c.correct(f, &mut self.dem.spheres, k * dt, dt); // [53] [62] [63]
+            lap(clock, &mut self.times.correction);
         }
         self.time = t_fluid;
         Ok(())
