@@ -121,6 +121,10 @@ pub struct Coupling {
     b: usize,
     boxes: Vec<CellBox>,
     phi: Vec<f64>,
+    /// The spheres and parameters `boxes` and `phi` were computed for (positions and radii by
+    /// slot): the fluid load of a step reuses the fractions of the last correction, whose
+    /// spheres have not moved since.
+    phi_of: (Vec<DVec3>, Vec<f64>, Option<CouplingParameters>),
     /// Σ_i w_i and Σ_i w_i (v_i + ω_i × r)_a on the faces of each component (correction [62]).
     weight: [Vec<f64>; 3],
     weighted_velocity: [Vec<f64>; 3],
@@ -152,6 +156,7 @@ impl Coupling {
             b: box_size(&grid, d_max),
             boxes: Vec::new(),
             phi: Vec::new(),
+            phi_of: (Vec::new(), Vec::new(), None),
             weight: std::array::from_fn(|_| field()),
             weighted_velocity: std::array::from_fn(|_| field()),
             cell_phi: field(),
@@ -211,8 +216,9 @@ impl Coupling {
     /// replaces the last one in the forces the next half kick uses. `dt` is the DEM step [s].
     pub fn fluid_forces(&mut self, fluid: &Fluid, spheres: &mut Spheres, dt: f64) {
         spheres.with_fluid_loads();
-        self.compute_fractions(spheres);
-        self.accumulate_weights(spheres);
+        if self.compute_fractions(spheres) {
+            self.accumulate_weights(spheres);
+        } // else φ and the face weights are those of the last correction, for these spheres.
         let this = &*self;
         let b3 = this.b * this.b * this.b;
         let u = fluid.velocity();
@@ -305,8 +311,22 @@ impl Coupling {
     }
 
     /// φ of every resolved sphere into its box (in parallel; unresolved: an empty box).
-    fn compute_fractions(&mut self, spheres: &Spheres) {
+    /// Returns false, computing nothing, when the spheres (positions and radii, by slot) and
+    /// the parameters are those of the last call.
+    fn compute_fractions(&mut self, spheres: &Spheres) -> bool {
         let n = spheres.len();
+        let (x_of, r_of, par_of) = &mut self.phi_of;
+        if *par_of == Some(self.parameters)
+            && x_of[..] == spheres.position[..]
+            && r_of[..] == spheres.radius[..]
+        {
+            return false;
+        }
+        x_of.clear();
+        x_of.extend_from_slice(&spheres.position);
+        r_of.clear();
+        r_of.extend_from_slice(&spheres.radius);
+        *par_of = Some(self.parameters);
         let b = self.b;
         let b3 = b * b * b;
         if self.boxes.len() < n {
@@ -335,6 +355,7 @@ impl Coupling {
                 sphere_fractions(&grid, cells, x, r, m, b, phi);
                 normalise(&grid, r, phi);
             });
+        true
     }
 
     /// ρ̄ = ρ_w (1 − φ) + Σ_i φ_ic ρ_i on every interior cell [53].

@@ -520,7 +520,11 @@ mod tests {
     fn damping_shortcut_changes_no_bit() {
         for k in 0..2000 {
             let x = -30.0 - 0.01 * k as f64;
-            assert_eq!(damping_of_exponent(x).to_bits(), (1.0 - x.exp()).to_bits(), "{x}");
+            assert_eq!(
+                damping_of_exponent(x).to_bits(),
+                (1.0 - x.exp()).to_bits(),
+                "{x}"
+            );
         }
     }
 }
