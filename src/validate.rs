@@ -78,12 +78,13 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 5] = [
+pub const CASES: [&str; 6] = [
     "cavity",
     "channel",
     "sphere_drag",
     "cylinder_strouhal",
     "block_settling",
+    "hopper_cloud",
 ];
 
 /// As [`run_validation`], only the case named `only` (one of [`CASES`]) when given.
@@ -116,6 +117,9 @@ pub fn run_validation_cases(
     }
     if run("block_settling") {
         all &= block_settling_section(out, quick, &mut md)?;
+    }
+    if run("hopper_cloud") {
+        all &= crate::coupling::validation::hopper_cloud::report::section(out, quick, &mut md)?;
     }
     std::fs::write(out.join("report.md"), &md)?;
     Ok((md, all))
