@@ -30,7 +30,9 @@
 //!
 //! Storage: each sphere owns a box of B × B × B cells (B = ⌊d_max/Δ_min⌋ + 2 covers every
 //! sphere) starting at its lowest cell, so spheres are filled in parallel, each writing only
-//! its own box: the result does not depend on the thread count.
+//! its own box: the result does not depend on the thread count. Only the sphere's extent (its
+//! [`CellBox`]) within the box is written and read: a small grain in a mixture with large
+//! ones touches its own few cells, not B³.
 
 use glam::DVec3;
 
@@ -67,8 +69,8 @@ pub fn box_size(grid: &StaggeredGrid, d_max: f64) -> usize {
 }
 
 /// Writes φ of the cells of `cells` for the sphere (`x`, `r`) into `phi` (B³ values, local
-/// index i + B (j + B k); entries outside the extent are zero). `m` sub-samples per axis in
-/// cut cells. Returns Σ φ ΔV [m³].
+/// index i + B (j + B k); entries outside the extent are left as they were and are never
+/// read). `m` sub-samples per axis in cut cells. Returns Σ φ ΔV [m³].
 pub fn sphere_fractions(
     grid: &StaggeredGrid,
     cells: &CellBox,
@@ -78,7 +80,6 @@ pub fn sphere_fractions(
     b: usize,
     phi: &mut [f64],
 ) -> f64 {
-    phi.fill(0.0);
     let h = grid.spacing;
     let r2 = r * r;
     let inv_m = 1.0 / m as f64;
@@ -134,14 +135,23 @@ pub fn sphere_fractions(
     (full + cut) * grid.cell_volume()
 }
 
-/// Scales the cut cells of one sphere's `phi` so that Σ φ ΔV is the sphere volume (4/3) π r³
-/// (values clamped at 1; see the module docs).
-pub fn normalise(grid: &StaggeredGrid, r: f64, phi: &mut [f64]) {
+/// The local indices i + B (j + B k) of the cells of `cells` in a box of side `b`, in a fixed
+/// order (k, then j, then i).
+pub fn local_cells(cells: &CellBox, b: usize) -> impl Iterator<Item = usize> {
+    let e = cells.extent;
+    (0..e[2])
+        .flat_map(move |k| (0..e[1]).flat_map(move |j| (0..e[0]).map(move |i| i + b * (j + b * k))))
+}
+
+/// Scales the cut cells of one sphere's `phi` (the cells of `cells` in a box of side `b`) so
+/// that Σ φ ΔV is the sphere volume (4/3) π r³ (values clamped at 1; see the module docs).
+pub fn normalise(grid: &StaggeredGrid, r: f64, cells: &CellBox, b: usize, phi: &mut [f64]) {
     let target = 4.0 / 3.0 * std::f64::consts::PI * r.powi(3) / grid.cell_volume();
     // A few passes: cells the scaling pushes to 1 are clamped and the rest scaled again.
     for _ in 0..4 {
         let (mut full, mut cut) = (0.0, 0.0);
-        for &v in phi.iter() {
+        for c in local_cells(cells, b) {
+            let v = phi[c];
             if v >= 1.0 {
                 full += 1.0;
             } else {
@@ -152,7 +162,8 @@ pub fn normalise(grid: &StaggeredGrid, r: f64, phi: &mut [f64]) {
             return;
         }
         let scale = (target - full) / cut;
-        for v in phi.iter_mut() {
+        for c in local_cells(cells, b) {
+            let v = &mut phi[c];
             if *v < 1.0 {
                 *v = (*v * scale).min(1.0);
             }
@@ -181,12 +192,12 @@ mod tests {
             let cells = CellBox::of_sphere(&grid, x, r);
             let mut v = sphere_fractions(&grid, &cells, x, r, m, b, &mut phi);
             if normalised {
-                normalise(&grid, r, &mut phi);
-                v = phi.iter().sum::<f64>() * grid.cell_volume();
+                normalise(&grid, r, &cells, b, &mut phi);
+                v = local_cells(&cells, b).map(|c| phi[c]).sum::<f64>() * grid.cell_volume();
             }
             let exact = 4.0 / 3.0 * std::f64::consts::PI * r.powi(3);
             worst = worst.max((v / exact - 1.0).abs());
-            assert!(phi.iter().all(|&p| (0.0..=1.0).contains(&p)));
+            assert!(local_cells(&cells, b).all(|c| (0.0..=1.0).contains(&phi[c])));
         }
         worst
     }

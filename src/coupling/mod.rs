@@ -353,7 +353,7 @@ impl Coupling {
                 }
                 *cells = CellBox::of_sphere(&grid, x, r);
                 sphere_fractions(&grid, cells, x, r, m, b, phi);
-                normalise(&grid, r, phi);
+                normalise(&grid, r, cells, b, phi);
             });
         true
     }
