@@ -163,6 +163,9 @@ pub struct SheetSample {
     /// Turbulence-energy production P(z) on the mid-plane y = L_y/2, one value per row of
     /// cells [m² s⁻³] ([`measure::production_profile`]).
     pub production: Vec<f64>,
+    /// ⟨u⟩(z), the streamwise velocity averaged along x on the mid-plane, per row of cells
+    /// [m s⁻¹].
+    pub mean_velocity: Vec<f64>,
     /// Contacts in layers of d1 from [`CONTACT_BELOW`] d1 below the bed surface.
     pub contacts: ContactLayers,
     /// Largest displacement of a fixed sphere since the start [m].
@@ -294,6 +297,10 @@ fn sample(
     let (surface, packing) = bed_surface(&z, &phi, (0.015, 0.035));
     mid_plane(fluid, u, w);
     let production = measure::production_profile(u, w, g.n[0], g.spacing.z);
+    let mean_velocity = u
+        .chunks(g.n[0])
+        .map(|row| row.iter().sum::<f64>() / g.n[0] as f64)
+        .collect();
     let vel = fluid.velocity();
     let (mut top, kt) = (0.0, g.n[2] - 1);
     for j in 0..g.n[1] {
@@ -339,6 +346,7 @@ fn sample(
         packing,
         top_velocity: top,
         production,
+        mean_velocity,
         contacts: layers,
         fixed_moved,
         max_speed: s.velocity.iter().map(|v| v.length()).fold(0.0, f64::max),
