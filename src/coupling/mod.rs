@@ -140,6 +140,26 @@ pub struct Coupling {
     interaction: [Vec<f64>; 3],
 }
 
+/// The driving pressure gradient −∇P_drive [N m⁻³] of the fluid step just taken, at its
+/// midpoint tⁿ + Δt_f/2 (the time the flow step evaluated it at, `fluid::step`).
+///
+/// p̄ of [59] excludes it (it is a body force of [51], uniform in space), so without it a
+/// sphere would not feel the pressure gradient that accelerates the water around it. Each
+/// sphere gets the Froude-Krylov force of the uniform gradient over its volume:
+///
+/// ```text
+/// F_FK = V (−∇P_drive) ,  V = (4/3) π r³                       [N]
+/// oscillatory drive: −∇P_drive = ρ_w dU_∞/dt = ρ_w U_max (2π/T) cos(2π t/T)
+/// ```
+///
+/// so that a neutrally buoyant sphere follows the free stream U_∞(t). Held over the sub-steps
+/// like the rest of the load; it is zero without a driving gradient.
+fn driving_force_density(fluid: &Fluid) -> DVec3 {
+    let p = fluid.parameters();
+    let t_mid = fluid.time() - 0.5 * fluid.state().previous_dt;
+    p.driving_pressure_gradient.force_density(t_mid, p.density)
+}
+
 impl Coupling {
     /// The coupling of `fluid` with spheres of diameter up to `d_max` [m].
     pub fn new(parameters: CouplingParameters, fluid: &Fluid, d_max: f64) -> Coupling {
@@ -211,8 +231,10 @@ impl Coupling {
         }
     }
 
-    /// After the provisional fluid step: the held load of every sphere (resolved: [59] [61]
-    /// and buoyancy; unresolved: the fluid velocity at its centre and buoyancy), which
+    /// After the provisional fluid step: the held load of every sphere (resolved: [59] [61],
+    /// buoyancy and the Froude-Krylov force of the driving gradient
+    /// ([`driving_force_density`]); unresolved: the fluid velocity at its centre, buoyancy and
+    /// the Froude-Krylov force), which
     /// replaces the last one in the forces the next half kick uses. `dt` is the DEM step [s].
     pub fn fluid_forces(&mut self, fluid: &Fluid, spheres: &mut Spheres, dt: f64) {
         spheres.with_fluid_loads();
@@ -221,6 +243,7 @@ impl Coupling {
         } // else φ and the face weights are those of the last correction, for these spheres.
         let this = &*self;
         let b3 = this.b * this.b * this.b;
+        let drive = driving_force_density(fluid);
         let u = fluid.velocity();
         let st = resolved::FlowView::new(fluid);
         let s = &mut *spheres;
@@ -234,7 +257,9 @@ impl Coupling {
             .for_each(|(i, ((load, f), t))| {
                 let (x, r) = (s.position[i], s.radius[i]);
                 let volume = 4.0 / 3.0 * PI * r.powi(3);
-                let buoyancy = -this.rho_w * volume * this.gravity;
+                // Buoyancy and the Froude-Krylov force of the driving gradient:
+                // V (−ρ_w g) + V (−∇P_drive).
+                let buoyancy = volume * (drive - this.rho_w * this.gravity);
                 load.unresolved = !this.is_resolved(r);
                 if load.unresolved {
                     load.fluid_velocity = interpolate::velocity_at(&this.grid, &this.bcs, u, x);
@@ -491,6 +516,62 @@ impl Coupling {
                 }
             }
             load.impulse = DVec3::ZERO;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dem::spheres::NewSphere;
+    use crate::fluid::{DrivingPressureGradient, FluidParameters};
+    use std::f64::consts::TAU;
+
+    /// A neutrally buoyant sphere at rest in water driven by an oscillatory gradient, all
+    /// periodic: the flow stays uniform (no pressure gradient, no shear), so [59] gives nothing
+    /// and the held load is the Froude-Krylov force ρ_w V dU_∞/dt at the step's midpoint,
+    /// dU_∞/dt = U_max (2π/T) cos(2π t/T). Without it the sphere would stay behind the water.
+    #[test]
+    fn a_neutral_sphere_in_an_oscillating_flow_receives_rho_v_du_dt() {
+        let (rho, d, h) = (1000.0, 0.01, 0.01 / 5.0);
+        let grid = StaggeredGrid::new([16, 16, 16], DVec3::splat(16.0 * h), DVec3::ZERO);
+        let (u_max, period) = (0.85, 5.0);
+        let mut par = FluidParameters::laminar(rho, 1.0e-6);
+        par.driving_pressure_gradient = DrivingPressureGradient::Oscillatory {
+            velocity_amplitude: DVec3::X * u_max,
+            period,
+        };
+        let mut fluid = Fluid::new(grid, Boundaries::periodic(), par).expect("valid set-up");
+        let mut spheres = Spheres::default();
+        spheres.push(NewSphere {
+            position: DVec3::splat(8.0 * h),
+            velocity: DVec3::ZERO,
+            angular_velocity: DVec3::ZERO,
+            radius: 0.5 * d,
+            material: 0,
+            density: rho,
+            fixed: false,
+        });
+        let params = CouplingParameters {
+            mode: CouplingMode::Resolved,
+            ..CouplingParameters::default()
+        };
+        let mut coupling = Coupling::new(params, &fluid, d);
+        coupling.initialise(&mut fluid, &mut spheres);
+        let volume = PI / 6.0 * d * d * d;
+        let dt = 2.0e-3;
+        for _ in 0..3 {
+            fluid.step(dt);
+            coupling.fluid_forces(&fluid, &mut spheres, dt);
+            let t_mid = fluid.time() - 0.5 * dt;
+            let expected = rho * volume * u_max * TAU / period * (TAU * t_mid / period).cos();
+            let f = spheres.fluid[0].force;
+            assert!((f.x / expected - 1.0).abs() < 1e-6, "{} vs {expected}", f.x);
+            assert!(
+                f.y.abs() < 1e-9 * expected && f.z.abs() < 1e-9 * expected,
+                "{f}"
+            );
+            coupling.correct(&mut fluid, &mut spheres, dt, dt);
         }
     }
 }

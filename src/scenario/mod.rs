@@ -288,6 +288,7 @@ fn payload_error(what: &str, node: &Spanned<DeValue<'_>>) -> Option<toml::de::Er
         ("spheres", "lattice") => check::<schema::LatticeSet>(de()),
         ("spheres", "random") => check::<schema::RandomSet>(de()),
         ("spheres", "feed") => check::<schema::FeedSet>(de()),
+        ("spheres", "file") => check::<schema::FileSet>(de()),
         ("blocks", "list") => check::<schema::ListBlocks>(de()),
         ("blocks", "lattice") => check::<schema::LatticeBlocks>(de()),
         ("blocks", "random") => check::<schema::RandomBlocks>(de()),

@@ -393,6 +393,9 @@ pub enum SphereSet {
     Random(RandomSet),
     /// Continuous feeding through an opening: spheres appear in the box [min, max] at `rate`.
     Feed(FeedSet),
+    /// Spheres read from a CSV file `x,y,z,diameter[,fixed]` (e.g. a bed settled by an
+    /// earlier run).
+    File(FileSet),
 }
 
 impl SphereSet {
@@ -403,6 +406,7 @@ impl SphereSet {
             SphereSet::Lattice(_) => "lattice",
             SphereSet::Random(_) => "random",
             SphereSet::Feed(_) => "feed",
+            SphereSet::File(_) => "file",
         }
     }
 }
@@ -483,6 +487,26 @@ pub struct FeedSet {
     /// Initial velocity [m s⁻¹].
     #[serde(default)]
     pub velocity: [f64; 3],
+}
+
+/// `kind = "file"`: one sphere per line of a CSV file, `x,y,z,diameter[,fixed]` in SI units
+/// (centre [m], diameter [m], `fixed` 0 or 1, default 0); a header line and blank lines are
+/// allowed.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FileSet {
+    /// Material of every sphere of the file.
+    pub material: String,
+    /// The CSV file, relative to the scenario file.
+    pub file: String,
+    /// Largest overlap δ = (d_i + d_j)/2 − |x_i − x_j| of two spheres accepted, relative to
+    /// the smaller diameter [–] (default 0.05: a settled bed holds small contact overlaps).
+    #[serde(default = "file_overlap_ratio")]
+    pub max_overlap_ratio: f64,
+}
+
+fn file_overlap_ratio() -> f64 {
+    0.05
 }
 
 /// `[output]`

@@ -3,7 +3,7 @@
 
 use super::build::{finite, material_of, material_or_default, non_negative, positive};
 use super::schema::{
-    v3, FeedSet, LatticeSet, ListSet, RandomSet, SizeSection, SphereSet, WallSection,
+    v3, FeedSet, FileSet, LatticeSet, ListSet, RandomSet, SizeSection, SphereSet, WallSection,
 };
 use super::{ScenarioError, Source};
 use crate::dem::domain::Domain;
@@ -340,10 +340,172 @@ pub(super) fn build_spheres(
                     rng: Rng(*seed),
                 });
             }
+            SphereSet::File(FileSet {
+                material,
+                file,
+                max_overlap_ratio,
+            }) => {
+                let m = material_of(src, names, &format!("{key}.material"), Some(material))?;
+                non_negative(src, &format!("{key}.max_overlap_ratio"), *max_overlap_ratio)?;
+                let path = src.dir.join(file);
+                let rows = read_sphere_csv(&path, domain)
+                    .map_err(|e| src.invalid(&format!("{key}.file"), e))?;
+                for (line, row) in rows {
+                    spheres.push(NewSphere {
+                        position: row.position,
+                        velocity: Vec3::ZERO,
+                        angular_velocity: Vec3::ZERO,
+                        radius: 0.5 * row.diameter,
+                        material: m,
+                        density: materials[m as usize].density,
+                        fixed: row.fixed,
+                    });
+                    origin.push(format!("{key} ({}:{line})", path.display()));
+                }
+                let ratio = *max_overlap_ratio;
+                check_file_overlaps(src, &spheres, first, domain, &origin, &key, ratio)?;
+                continue;
+            }
         }
         check_overlaps(src, &spheres, first, domain, &origin)?;
     }
     Ok((spheres, feeders, origin))
+}
+
+/// One sphere of a CSV file.
+struct CsvSphere {
+    position: Vec3,
+    diameter: f64,
+    fixed: bool,
+}
+
+/// Reads `x,y,z,diameter[,fixed]` rows [m] from `path`, with the 1-based line of each. A
+/// first line that does not start with a number is a header; blank lines and lines starting
+/// with `#` are skipped. Errors name the file, the line and the reason.
+fn read_sphere_csv(
+    path: &std::path::Path,
+    domain: &Domain,
+) -> Result<Vec<(usize, CsvSphere)>, String> {
+    let file = path.display();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read the sphere file {file}: {e}"))?;
+    let axis = ["x", "y", "z"];
+    let mut rows = Vec::new();
+    let mut first = true;
+    for (n, raw) in text.lines().enumerate() {
+        let line = n + 1;
+        let l = raw.trim();
+        if l.is_empty() || l.starts_with('#') {
+            continue;
+        }
+        let cols: Vec<&str> = l.split(',').map(str::trim).collect();
+        let header = first && cols[0].parse::<f64>().is_err();
+        first = false;
+        if header {
+            continue;
+        }
+        if cols.len() < 4 || cols.len() > 5 {
+            return Err(format!(
+                "{file}:{line}: expected 4 or 5 columns `x,y,z,diameter[,fixed]`, found {}",
+                cols.len()
+            ));
+        }
+        let names = ["x", "y", "z", "diameter", "fixed"];
+        let mut v = [0.0; 5];
+        for (c, text) in cols.iter().enumerate() {
+            v[c] = text
+                .parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| {
+                    format!(
+                        "{file}:{line}: column {} (`{}`) is not a finite number: `{text}`",
+                        c + 1,
+                        names[c]
+                    )
+                })?;
+        }
+        if v[3] <= 0.0 {
+            return Err(format!(
+                "{file}:{line}: the diameter must be positive, got {}",
+                v[3]
+            ));
+        }
+        let fixed = match cols.len() {
+            5 if v[4] == 0.0 => false,
+            5 if v[4] == 1.0 => true,
+            5 => {
+                return Err(format!(
+                    "{file}:{line}: `fixed` must be 0 or 1, got {}",
+                    cols[4]
+                ))
+            }
+            _ => false,
+        };
+        let x = Vec3::new(v[0], v[1], v[2]);
+        if let Some(a) = (0..3).find(|&a| x[a] < domain.min[a] || x[a] > domain.max[a]) {
+            return Err(format!(
+                "{file}:{line}: the sphere lies outside the domain: {} = {} is not within [{}, {}]",
+                axis[a], x[a], domain.min[a], domain.max[a]
+            ));
+        }
+        rows.push((
+            line,
+            CsvSphere {
+                position: x,
+                diameter: v[3],
+                fixed,
+            },
+        ));
+    }
+    if rows.is_empty() {
+        return Err(format!("the sphere file {file} holds no sphere"));
+    }
+    Ok(rows)
+}
+
+/// Refuses spheres of a file set (from `first` on, against all earlier ones) that overlap by
+/// more than `ratio` of the smaller diameter.
+fn check_file_overlaps(
+    src: &Source,
+    s: &Spheres,
+    first: usize,
+    domain: &Domain,
+    origin: &[String],
+    key: &str,
+    ratio: f64,
+) -> Result<(), ScenarioError> {
+    let mut worst: Option<(usize, usize, f64)> = None;
+    for &(i, j) in &close_pairs(s, domain, 0.0) {
+        let (i, j) = if i < j {
+            (i as usize, j as usize)
+        } else {
+            (j as usize, i as usize)
+        };
+        if j < first {
+            continue;
+        }
+        let d = domain.minimum_image(s.position[j] - s.position[i]).length();
+        let r = (s.radius[i] + s.radius[j] - d) / (2.0 * s.radius[i].min(s.radius[j]));
+        if r > ratio && worst.is_none_or(|w| r > w.2) {
+            worst = Some((i, j, r));
+        }
+    }
+    if let Some((i, j, r)) = worst {
+        return Err(src.invalid(
+            &format!("{key}.file"),
+            format!(
+                "spheres overlap by more than max_overlap_ratio = {ratio}: {} and {} (d = {} m \
+                 and {} m) overlap by {:.3} of the smaller diameter",
+                origin[i],
+                origin[j],
+                2.0 * s.radius[i],
+                2.0 * s.radius[j],
+                r
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// Refuses initial spheres that overlap (spheres from `first` on against all earlier ones).

@@ -4,4 +4,5 @@
 pub mod block_settling;
 pub mod cylinder_strouhal;
 pub mod hopper_cloud;
+pub mod sheet_flow;
 pub mod sphere_drag;
