@@ -57,6 +57,7 @@ pub mod drag;
 pub mod fraction;
 pub mod interpolate;
 pub mod resolved;
+pub mod slabs;
 pub mod validation;
 
 use glam::DVec3;
@@ -68,6 +69,7 @@ use crate::dem::spheres::Spheres;
 use crate::fluid::{Boundaries, Fluid, StaggeredGrid};
 pub use drag::DragLaw;
 use fraction::{box_size, normalise, sphere_fractions, CellBox};
+use slabs::{planes, Slabs};
 
 /// Which spheres the grid resolves.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -133,6 +135,8 @@ pub struct Coupling {
     cell_phi_rho: Vec<f64>,
     /// A fixed solid given by its cell fractions (padded), or empty.
     obstacle: Vec<f64>,
+    /// The slabs of the grid that the sums over spheres are split into.
+    slabs: Slabs,
     /// Force of the water on the fixed solid at the last step [N] ([59]).
     pub obstacle_force: DVec3,
     /// The interaction force F [63] of the last correction on the faces [N m⁻³] (for output:
@@ -182,6 +186,7 @@ impl Coupling {
             cell_phi: field(),
             cell_phi_rho: field(),
             obstacle: Vec::new(),
+            slabs: Slabs::default(),
             obstacle_force: DVec3::ZERO,
             interaction: std::array::from_fn(|_| field()),
         }
@@ -387,33 +392,52 @@ impl Coupling {
     fn set_mixture_density(&mut self, fluid: &mut Fluid, spheres: &Spheres) {
         let (b, grid, bcs) = (self.b, self.grid, self.bcs);
         let b3 = b * b * b;
-        self.cell_phi.fill(0.0);
-        self.cell_phi_rho.fill(0.0);
-        for i in 0..spheres.len() {
-            let cells = &self.boxes[i];
-            let r = spheres.radius[i];
-            let rho_i = spheres.mass[i] / (4.0 / 3.0 * PI * r.powi(3));
-            let phi = &self.phi[i * b3..(i + 1) * b3];
-            for k in 0..cells.extent[2] {
-                for j in 0..cells.extent[1] {
-                    for l in 0..cells.extent[0] {
-                        let v = phi[l + b * (j + b * k)];
-                        if v == 0.0 {
-                            continue;
-                        }
-                        let g = [
-                            cells.low[0] + l as i64,
-                            cells.low[1] + j as i64,
-                            cells.low[2] + k as i64,
-                        ];
-                        if let Some(c) = resolved::storage(&grid, &bcs, None, g) {
-                            self.cell_phi[c] += v;
-                            self.cell_phi_rho[c] += v * rho_i;
+        let plane = grid.strides()[2];
+        let n = spheres.len();
+        let (boxes, phi) = (&self.boxes[..n], &self.phi);
+        self.slabs
+            .cut(&grid, &bcs, boxes, rayon::current_num_threads());
+        self.slabs.for_each(
+            &grid,
+            [&mut self.cell_phi[..], &mut self.cell_phi_rho[..]],
+            &|first, end, [cell_phi, cell_phi_rho]| {
+                cell_phi.fill(0.0);
+                cell_phi_rho.fill(0.0);
+                let offset = first * plane;
+                for (i, cells) in boxes.iter().enumerate() {
+                    if !planes(&grid, &bcs, cells).any(|p| (first..end).contains(&p)) {
+                        continue;
+                    }
+                    let r = spheres.radius[i];
+                    let rho_i = spheres.mass[i] / (4.0 / 3.0 * PI * r.powi(3));
+                    let phi = &phi[i * b3..(i + 1) * b3];
+                    for k in 0..cells.extent[2] {
+                        for j in 0..cells.extent[1] {
+                            for l in 0..cells.extent[0] {
+                                let v = phi[l + b * (j + b * k)];
+                                if v == 0.0 {
+                                    continue;
+                                }
+                                let g = [
+                                    cells.low[0] + l as i64,
+                                    cells.low[1] + j as i64,
+                                    cells.low[2] + k as i64,
+                                ];
+                                let Some(c) = resolved::storage(&grid, &bcs, None, g) else {
+                                    continue;
+                                };
+                                if let Some(c) =
+                                    c.checked_sub(offset).filter(|&c| c < cell_phi.len())
+                                {
+                                    cell_phi[c] += v;
+                                    cell_phi_rho[c] += v * rho_i;
+                                }
+                            }
                         }
                     }
                 }
-            }
-        }
+            },
+        );
         let rho_w = self.rho_w;
         let rho = fluid.mixture_density_mut();
         for k in 0..grid.n[2] {
@@ -473,19 +497,46 @@ impl Coupling {
     fn accumulate_weights(&mut self, spheres: &Spheres) {
         let (b, grid, bcs) = (self.b, self.grid, self.bcs);
         let b3 = b * b * b;
-        for a in 0..3 {
-            self.weight[a].fill(0.0);
-            self.weighted_velocity[a].fill(0.0);
-        }
-        for i in 0..spheres.len() {
-            let phi = &self.phi[i * b3..(i + 1) * b3];
-            resolved::for_each_face(&grid, &bcs, &self.boxes[i], b, phi, |a, c, w, x_face| {
-                let rigid = spheres.velocity[i]
-                    + spheres.angular_velocity[i].cross(x_face - spheres.position[i]);
-                self.weight[a][c] += w;
-                self.weighted_velocity[a][c] += w * rigid[a];
-            });
-        }
+        let plane = grid.strides()[2];
+        let n = spheres.len();
+        let (boxes, phi) = (&self.boxes[..n], &self.phi);
+        self.slabs
+            .cut(&grid, &bcs, boxes, rayon::current_num_threads());
+        let [w0, w1, w2] = &mut self.weight;
+        let [v0, v1, v2] = &mut self.weighted_velocity;
+        self.slabs.for_each(
+            &grid,
+            [
+                &mut w0[..],
+                &mut w1[..],
+                &mut w2[..],
+                &mut v0[..],
+                &mut v1[..],
+                &mut v2[..],
+            ],
+            &|first, end, [w0, w1, w2, v0, v1, v2]| {
+                let (mut w, mut wv) = ([w0, w1, w2], [v0, v1, v2]);
+                for f in w.iter_mut().chain(wv.iter_mut()) {
+                    f.fill(0.0);
+                }
+                let (offset, len) = (first * plane, w[0].len());
+                for (i, cells) in boxes.iter().enumerate() {
+                    if !planes(&grid, &bcs, cells).any(|p| (first..end).contains(&p)) {
+                        continue;
+                    }
+                    let phi = &phi[i * b3..(i + 1) * b3];
+                    resolved::for_each_face(&grid, &bcs, cells, b, phi, |a, c, wt, x_face| {
+                        let Some(c) = c.checked_sub(offset).filter(|&c| c < len) else {
+                            return;
+                        };
+                        let rigid = spheres.velocity[i]
+                            + spheres.angular_velocity[i].cross(x_face - spheres.position[i]);
+                        w[a][c] += wt;
+                        wv[a][c] += wt * rigid[a];
+                    });
+                }
+            },
+        );
         if !self.obstacle.is_empty() {
             resolved::obstacle_faces(&grid, &bcs, &self.obstacle, |a, c, w| {
                 self.weight[a][c] += w;
