@@ -11,7 +11,9 @@
 //!   its tolerances and their justification are in
 //!   `src/fluid/validation/channel180/README.md`; the quick level runs a small box briefly.
 //!
-//! The DEM's checks against theory are fast enough to live in `cargo test`.
+//! It also holds the coupling's cases 1, 2, 3 and 5 of METHOD.md §5 (each with its README in
+//! `src/coupling/validation/`; case 5's sensitivity runs only when named). The DEM's checks against theory are fast enough to live in
+//! `cargo test`.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -21,6 +23,7 @@ use crate::coupling::validation::block_settling::{
     estimates as block_estimates, run_block_settling, tolerance_band, BlockSample,
 };
 use crate::coupling::validation::cylinder_strouhal::{cylinder_level, roshko_1954, run_cylinder};
+use crate::coupling::validation::sheet_flow::{self, run_sheet_flow, Level};
 use crate::coupling::validation::sphere_drag::{
     run_sphere_drag, sphere_drag_level, standard_drag_curve,
 };
@@ -78,13 +81,15 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 6] = [
+pub const CASES: [&str; 8] = [
     "cavity",
     "channel",
     "sphere_drag",
     "cylinder_strouhal",
     "block_settling",
     "hopper_cloud",
+    "sheet_flow",
+    "sheet_flow_sensitivity",
 ];
 
 /// As [`run_validation`], only the case named `only` (one of [`CASES`]) when given.
@@ -121,8 +126,68 @@ pub fn run_validation_cases(
     if run("hopper_cloud") {
         all &= crate::coupling::validation::hopper_cloud::report::section(out, quick, &mut md)?;
     }
+    if run("sheet_flow") {
+        all &= sheet_flow_section(out, quick, &mut md)?;
+    }
+    // Long (three runs of half a period): only when named.
+    if only == Some("sheet_flow_sensitivity") {
+        sheet_flow_sensitivity_section(out, quick, &mut md)?;
+    }
     std::fs::write(out.join("report.md"), &md)?;
     Ok((md, all))
+}
+
+/// Case 5 of the coupling: mixed-size oscillatory sheet flow; quick: 0.02 s of the base
+/// case (the flow starts, the bed holds); full: one period (about 80 minutes on 2 cores),
+/// its samples saved to `sheet_flow_full.bin` beside the report.
+fn sheet_flow_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
+    let level = if quick { Level::QUICK } else { Level::FULL };
+    md.push_str(
+        "\n## Coupling case 5: mixed-size oscillatory sheet flow (source figures 13, 14)\n\n",
+    );
+    let save = out.join(format!("sheet_flow_{}.bin", level.name));
+    let run = run_sheet_flow(&level, &out.join("sheet_flow_work"), Some(&save))?;
+    let (text, ok) = sheet_flow::report::write_report(out, "sheet_flow", &run)?;
+    md.push_str(&text);
+    eprintln!(
+        "sheet flow ({}): {} samples in {:.0} s -> {}",
+        level.name,
+        run.samples.len(),
+        run.seconds,
+        if ok { "pass" } else { "FAIL" }
+    );
+    Ok(ok)
+}
+
+/// Sensitivity of case 5 (run only when named): the first half period on the coarser grid
+/// Δ = d1/3 and with springs 4 times stiffer, against the base; reported, no verdict. The
+/// quick level runs the three variants for 0.02 s.
+fn sheet_flow_sensitivity_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<()> {
+    md.push_str("\n## Coupling case 5, sensitivity: grid and spring stiffness\n\n");
+    md.push_str(
+        "Centroid curves of the first half period on Δ = d1/3 and with E × 4 (Δt = 2e-5 s) \
+         against the base (Δ = d1/4, E = 1e7 Pa); reported, no criterion.\n\n",
+    );
+    let mut runs = Vec::new();
+    for level in [Level::HALF, Level::COARSE_GRID, Level::STIFF] {
+        let level = if quick {
+            Level {
+                end_time: Level::QUICK.end_time,
+                sample_interval: Level::QUICK.sample_interval,
+                ..level
+            }
+        } else {
+            level
+        };
+        let save = out.join(format!("sheet_flow_{}.bin", level.name));
+        runs.push(run_sheet_flow(
+            &level,
+            &out.join("sheet_flow_work"),
+            Some(&save),
+        )?);
+    }
+    md.push_str(&sheet_flow::report::write_sensitivity(out, &runs)?);
+    Ok(())
 }
 
 /// Case 1 of the coupling (METHOD.md §5): C_D of a fixed sphere against the standard curve.

@@ -75,6 +75,7 @@ fn check_passes_on_every_example_and_prints_the_derived_quantities() {
         "single_impact.toml",
         "oscillatory_flow.toml",
         "hopper_cloud.toml",
+        "sheet_flow.toml",
     ] {
         assert!(
             names.iter().any(|n| n == expected),

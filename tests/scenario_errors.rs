@@ -835,3 +835,84 @@ fn bad_motions_and_geometry() {
         &["do not fit in the feed region"],
     );
 }
+
+/// `kind = "file"`: a CSV of spheres `x,y,z,diameter[,fixed]`, relative to the scenario's
+/// folder; each fault is refused naming the scenario line of `file`, the CSV file, its line
+/// and the reason.
+#[test]
+fn sphere_files_missing_or_malformed() {
+    let dir = temp_dir("sphere_csv");
+    let set = |file: &str, extra: &str| {
+        format!(
+            "{BASE}\n[[spheres]]\nkind = \"file\"\nmaterial = \"rock\"\nfile = \"{file}\"\n{extra}"
+        )
+    };
+    let line = line_with(&set("x", ""), "file =");
+    let check = |file: &str, csv: Option<&str>, extra: &str, reasons: &[&str]| {
+        if let Some(csv) = csv {
+            std::fs::write(dir.join(file), csv).unwrap();
+        }
+        let msg = error_in(&set(file, extra), &dir);
+        assert!(msg.starts_with(&format!("case.toml:{line}:")), "{msg}");
+        assert!(
+            msg.contains("key `spheres[0].file`:") && msg.contains(file),
+            "{msg}"
+        );
+        for r in reasons {
+            assert!(msg.contains(r), "expected `{r}` in\n{msg}");
+        }
+    };
+    check("no_such_bed.csv", None, "", &["cannot read"]);
+    let header = "x,y,z,diameter,fixed\n";
+    check(
+        "bad_number.csv",
+        Some(&format!("{header}0.5,0.5,0.5,0.1,0\n0.2,0.2,abc,0.1,0\n")),
+        "",
+        &["bad_number.csv:3:", "`z`", "abc"],
+    );
+    check(
+        "negative.csv",
+        Some("0.5,0.5,0.5,-0.1\n"),
+        "",
+        &["negative.csv:1:", "diameter must be positive"],
+    );
+    check(
+        "outside.csv",
+        Some(&format!("{header}0.5,0.5,0.5,0.1\n0.5,1.5,0.5,0.1\n")),
+        "",
+        &["outside.csv:3:", "outside the domain", "y = 1.5"],
+    );
+    check(
+        "columns.csv",
+        Some(&format!("{header}0.5,0.5,0.5\n")),
+        "",
+        &["columns.csv:2:", "4 or 5 columns"],
+    );
+    check(
+        "fixed.csv",
+        Some(&format!("{header}0.5,0.5,0.5,0.1,2\n")),
+        "",
+        &["fixed.csv:2:", "`fixed` must be 0 or 1"],
+    );
+    check("empty.csv", Some(header), "", &["holds no sphere"]);
+    // Overlap: 0.01 of the smaller diameter (0.1) passes the default 0.05, 0.1 does not.
+    let overlapping = format!(
+        "{header}0.3,0.5,0.5,0.1\n0.399,0.5,0.5,0.1\n0.7,0.5,0.5,0.1,1\n0.79,0.5,0.5,0.1\n"
+    );
+    check(
+        "overlap.csv",
+        Some(&overlapping),
+        "",
+        &[
+            "overlap.csv:4",
+            "overlap.csv:5",
+            "max_overlap_ratio = 0.05",
+            "0.100 of the smaller diameter",
+        ],
+    );
+    let built = accepted(&set("overlap.csv", "max_overlap_ratio = 0.2\n"), &dir);
+    let s = &built.simulation.dem.spheres;
+    assert_eq!(s.len(), 4);
+    assert_eq!(s.fixed.iter().filter(|&&f| f).count(), 1);
+    assert!((s.radius[0] - 0.05).abs() < 1e-15);
+}

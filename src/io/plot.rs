@@ -1,4 +1,4 @@
-//! Line plots as PNG or SVG, for run summaries and validation figures.
+//! Line plots and heat maps as PNG or SVG, for run summaries and validation figures.
 //!
 //! The DejaVu Sans font is compiled in and registered with plotters once, so
 //! plotting needs no system font library (fontconfig, FreeType) at run time.
@@ -126,6 +126,181 @@ pub fn line_plot(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), Plot
             super::sync_parent_dir(path);
         }
         _ => return Err(PlotError::UnsupportedFormat(path.to_path_buf())),
+    }
+    Ok(())
+}
+
+/// A field on a regular grid for [`heat_map`]: `values[i + x.len() j]` at the cell centred
+/// on (`x[i]`, `y[j]`); both centre lists ascending, equally spaced.
+#[derive(Debug, Clone, Copy)]
+pub struct Field<'a> {
+    /// Column centres, in the horizontal axis' units.
+    pub x: &'a [f64],
+    /// Row centres, in the vertical axis' units.
+    pub y: &'a [f64],
+    /// The values, row after row; non-finite values are left blank.
+    pub values: &'a [f64],
+}
+
+/// Draws `field` as coloured cells at `path` (PNG or SVG by the extension), the colour
+/// running from white (the smallest value, or 0 when all are positive) through yellow and
+/// red to dark red (the largest), with `series` drawn over it. The title should state what
+/// the colours mean; the range of values is appended to it.
+pub fn heat_map(
+    path: &Path,
+    axes: &Axes,
+    field: &Field,
+    series: &[Series],
+) -> Result<(), PlotError> {
+    register_font()?;
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match ext.as_deref() {
+        Some("svg") => {
+            let mut svg = String::new();
+            {
+                let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
+                draw_field(&root, axes, field, series)?;
+                root.present().map_err(drawing)?;
+            }
+            super::write_replacing(path, svg.as_bytes())?;
+        }
+        Some("png") => {
+            let tmp = super::tmp_path(path, ".tmp.png");
+            let result = (|| -> Result<(), PlotError> {
+                let root = BitMapBackend::new(&tmp, SIZE).into_drawing_area();
+                draw_field(&root, axes, field, series)?;
+                root.present().map_err(drawing)?;
+                drop(root);
+                std::fs::rename(&tmp, path)?;
+                Ok(())
+            })();
+            if result.is_err() {
+                let _ = std::fs::remove_file(&tmp);
+            }
+            result?;
+            super::sync_parent_dir(path);
+        }
+        _ => return Err(PlotError::UnsupportedFormat(path.to_path_buf())),
+    }
+    Ok(())
+}
+
+/// The colour of `t` in [0, 1]: white → yellow → red → dark red.
+fn ramp(t: f64) -> RGBColor {
+    let t = if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let stops = [
+        (255.0, 255.0, 255.0),
+        (255.0, 220.0, 60.0),
+        (220.0, 30.0, 20.0),
+        (90.0, 0.0, 0.0),
+    ];
+    let s = t * 3.0;
+    let k = (s.floor() as usize).min(2);
+    let f = s - k as f64;
+    let (a, b) = (stops[k], stops[k + 1]);
+    let mix = |p: f64, q: f64| (p + (q - p) * f).round() as u8;
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// The half step of equally spaced centres (0.5 for a single one).
+fn half_step(c: &[f64]) -> f64 {
+    if c.len() > 1 {
+        0.5 * (c[c.len() - 1] - c[0]) / (c.len() - 1) as f64
+    } else {
+        0.5
+    }
+}
+
+fn draw_field<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    axes: &Axes,
+    field: &Field,
+    series: &[Series],
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    root.fill(&WHITE).map_err(drawing)?;
+    let (hx, hy) = (half_step(field.x), half_step(field.y));
+    let finite = || field.values.iter().copied().filter(|v| v.is_finite());
+    let (lo, hi) = min_max(finite()).unwrap_or((0.0, 1.0));
+    let lo = lo.min(0.0);
+    let span = if hi > lo { hi - lo } else { 1.0 };
+    let x = match (field.x.first(), field.x.last()) {
+        (Some(a), Some(b)) => a - hx..b + hx,
+        _ => 0.0..1.0,
+    };
+    let y = match (field.y.first(), field.y.last()) {
+        (Some(a), Some(b)) => a - hy..b + hy,
+        _ => 0.0..1.0,
+    };
+    let title = format!(
+        "{} (colour {} to {})",
+        axes.title,
+        tick(lo, None),
+        tick(hi, None)
+    );
+    let mut chart = ChartBuilder::on(root)
+        .caption(title, (FONT, 24))
+        .margin(20)
+        .x_label_area_size(60)
+        .y_label_area_size(90)
+        .build_cartesian_2d(x.clone(), y.clone())
+        .map_err(drawing)?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc(axes.x_label)
+        .y_desc(axes.y_label)
+        .axis_desc_style((FONT, 20))
+        .label_style((FONT, 16))
+        .x_label_formatter(&|v| tick(*v, Some(&x)))
+        .y_label_formatter(&|v| tick(*v, Some(&y)))
+        .draw()
+        .map_err(drawing)?;
+    let nx = field.x.len();
+    let cells = field.values.iter().enumerate().filter_map(|(c, &v)| {
+        let (i, j) = (c % nx.max(1), c / nx.max(1));
+        let (&xc, &yc) = (field.x.get(i)?, field.y.get(j)?);
+        v.is_finite().then(|| {
+            Rectangle::new(
+                [(xc - hx, yc - hy), (xc + hx, yc + hy)],
+                ramp((v - lo) / span).filled(),
+            )
+        })
+    });
+    chart.draw_series(cells).map_err(drawing)?;
+    for (i, s) in series.iter().enumerate() {
+        let c = PALETTE[i % PALETTE.len()];
+        let color = RGBColor((c >> 16) as u8, (c >> 8) as u8, c as u8);
+        let style = color.stroke_width(2);
+        let inside = |p: &&(f64, f64)| x.contains(&p.0) && y.contains(&p.1);
+        let pts = s.points.iter().filter(inside).copied();
+        match s.style {
+            LineStyle::Markers => chart.draw_series(pts.map(|p| Circle::new(p, 4, color.filled()))),
+            LineStyle::Line => chart.draw_series(LineSeries::new(pts, style)),
+            LineStyle::Dashed => chart.draw_series(DashedLineSeries::new(pts, 12, 7, style)),
+        }
+        .map_err(drawing)?
+        .label(s.label)
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+    }
+    if !series.is_empty() {
+        chart
+            .configure_series_labels()
+            .label_font((FONT, 16))
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()
+            .map_err(drawing)?;
     }
     Ok(())
 }
@@ -450,6 +625,32 @@ mod tests {
             &AXES,
             &[Series::new("s", &[(5e-324, 5e-324)], Line)],
         );
+    }
+
+    #[test]
+    fn heat_map_png_and_svg() {
+        let dir = test_dir("plot_heat");
+        let x: Vec<f64> = (0..20).map(|i| i as f64 * 0.1).collect();
+        let y: Vec<f64> = (0..10).map(|j| j as f64).collect();
+        let mut v: Vec<f64> = (0..200)
+            .map(|c| ((c % 20) as f64 * (c / 20) as f64).sin())
+            .collect();
+        v[7] = f64::NAN;
+        let line = [(0.0, 2.0), (1.9, 7.0)];
+        let field = Field {
+            x: &x,
+            y: &y,
+            values: &v,
+        };
+        let series = [Series::new("bed", &line, Dashed)];
+        heat_map(&dir.join("p.png"), &AXES, &field, &series).unwrap();
+        let bytes = std::fs::read(dir.join("p.png")).unwrap();
+        assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+        heat_map(&dir.join("p.svg"), &AXES, &field, &[]).unwrap();
+        let svg = std::fs::read_to_string(dir.join("p.svg")).unwrap();
+        assert!(svg.contains("Wave gauge 3 (colour"), "title with the range");
+        assert_eq!(ramp(0.0), RGBColor(255, 255, 255));
+        assert_eq!(ramp(1.0), RGBColor(90, 0, 0));
     }
 
     #[test]
