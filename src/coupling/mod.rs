@@ -39,7 +39,9 @@
 //! In [59] the source writes the weight as Σ φ Δ³ (ρ̄ − ρ_w) g over the cells; with partly
 //! covered cells that sum is Σ φ_ic φ_c (ρ_p − ρ_w) Δ³ g, less than the true excess weight
 //! (ρ_p − ρ_w) V g. riprap uses the exact weight and buoyancy instead (the same in fully
-//! covered cells).
+//! covered cells). A driving pressure gradient of the water (a body force of [51], not part
+//! of p̄) acts on the spheres too, as the Froude-Krylov force V (−∇P_drive)
+//! ([`driving_force_density`]), so that grains feel the gradient that accelerates the water.
 //!
 //! **Sub-cycling.** The fluid force is *held* over the k DEM sub-steps of a fluid step: the
 //! provisional flow gives one sample per fluid step, holding it gives the sphere exactly the
@@ -571,7 +573,10 @@ mod tests {
             let expected = rho * volume * du_dt;
             let f = spheres.fluid[0].force;
             assert!((f.x / expected - 1.0).abs() < 1e-6, "{} vs {expected}", f.x);
-            assert!(f.y.abs() < 1e-6 * expected && f.z.abs() < 1e-6 * expected, "{f}");
+            assert!(
+                f.y.abs() < 1e-6 * expected && f.z.abs() < 1e-6 * expected,
+                "{f}"
+            );
             u_water += dt * du_dt;
             spheres.velocity[0] = DVec3::X * u_water;
             coupling.correct(&mut fluid, &mut spheres, dt, dt);

@@ -588,7 +588,10 @@ mod tests {
         let work = std::env::temp_dir().join(format!("riprap_sheet_w_{}", std::process::id()));
         std::fs::create_dir_all(&work).unwrap();
         std::fs::write(work.join("bed.csv"), BED).unwrap();
-        let text = scenario(&Level { end_time: 0.004, ..Level::QUICK });
+        let text = scenario(&Level {
+            end_time: 0.004,
+            ..Level::QUICK
+        });
         let src = Source::from_str(&text, "scenario.toml", work.clone()).unwrap();
         let mut sim = build(&src).unwrap().simulation;
         while sim.time < 0.004 - 1e-9 {
