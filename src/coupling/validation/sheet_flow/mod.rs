@@ -577,6 +577,50 @@ mod tests {
         }
     }
 
+    /// How much of the grains' submerged weight the water's pressure p̄ carries in the
+    /// resting bed: after 0.004 s of the base case (the flow has barely started), the mean of
+    /// the vertical [59] force (the held load less buoyancy) over the spheres whose centre lies
+    /// 1.5 to 3.5 cm up, in units of their submerged weight (ρ_p − ρ_w) V g. Printed:
+    /// `cargo test --release --lib sheet_flow::tests::bed_weight -- --ignored --nocapture`.
+    #[test]
+    #[ignore = "a measurement for the README"]
+    fn bed_weight_carried_by_the_pressure() {
+        let work = std::env::temp_dir().join(format!("riprap_sheet_w_{}", std::process::id()));
+        std::fs::create_dir_all(&work).unwrap();
+        std::fs::write(work.join("bed.csv"), BED).unwrap();
+        let text = scenario(&Level {
+            end_time: 0.004,
+            ..Level::QUICK
+        });
+        let src = Source::from_str(&text, "scenario.toml", work.clone()).unwrap();
+        let mut sim = build(&src).unwrap().simulation;
+        while sim.time < 0.004 - 1e-9 {
+            sim.step_towards(0.004).unwrap();
+        }
+        let s = &sim.dem.spheres;
+        let (rho_w, g) = (1000.0, 9.81);
+        let mut by_class = [(0.0, 0); 3];
+        for i in 0..s.len() {
+            let z = s.position[i].z;
+            if !(0.015..=0.035).contains(&z) {
+                continue;
+            }
+            let v = 4.0 / 3.0 * std::f64::consts::PI * s.radius[i].powi(3);
+            let submerged = (s.mass[i] / v - rho_w) * v * g;
+            let lift = s.fluid[i].force.z - rho_w * v * g;
+            let c = class_of(s.radius[i]);
+            by_class[c].0 += lift / submerged;
+            by_class[c].1 += 1;
+        }
+        let _ = std::fs::remove_dir_all(&work);
+        for (c, (sum, n)) in by_class.iter().enumerate() {
+            eprintln!(
+                "class {c}: {n} spheres, mean vertical [59] force {:.3} of the submerged weight",
+                sum / *n as f64
+            );
+        }
+    }
+
     /// Writes `bed.csv` from `settle.toml`:
     /// `cargo test --release --lib sheet_flow::tests::settle -- --ignored --nocapture`.
     #[test]
