@@ -344,21 +344,16 @@ impl Coupling {
 
     /// φ of every resolved sphere into its box (in parallel; unresolved: an empty box).
     /// Returns false, computing nothing, when the spheres (positions and radii, by slot) and
-    /// the parameters are those of the last call.
+    /// the parameters are those of the last call; otherwise recomputes the slots whose sphere
+    /// changed (a fixed sphere, or one at rest, keeps its fractions: the same bits).
     fn compute_fractions(&mut self, spheres: &Spheres) -> bool {
         let n = spheres.len();
+        let this_mode = (self.parameters, self.cell_size());
         let (x_of, r_of, par_of) = &mut self.phi_of;
-        if *par_of == Some(self.parameters)
-            && x_of[..] == spheres.position[..]
-            && r_of[..] == spheres.radius[..]
-        {
+        let same_parameters = *par_of == Some(self.parameters);
+        if same_parameters && x_of[..] == spheres.position[..] && r_of[..] == spheres.radius[..] {
             return false;
         }
-        x_of.clear();
-        x_of.extend_from_slice(&spheres.position);
-        r_of.clear();
-        r_of.extend_from_slice(&spheres.radius);
-        *par_of = Some(self.parameters);
         let b = self.b;
         let b3 = b * b * b;
         if self.boxes.len() < n {
@@ -367,18 +362,21 @@ impl Coupling {
         }
         let grid = self.grid;
         let m = self.parameters.subsamples;
-        let this_mode = (self.parameters, self.cell_size());
         let resolved = |r: f64| match this_mode.0.mode {
             CouplingMode::Resolved => true,
             CouplingMode::Unresolved => false,
             CouplingMode::Auto => 2.0 * r >= this_mode.0.resolved_cells_per_diameter * this_mode.1,
         };
+        let (old_x, old_r) = (&x_of[..], &r_of[..]);
         self.boxes[..n]
             .par_iter_mut()
             .zip(self.phi[..n * b3].par_chunks_mut(b3))
             .enumerate()
             .for_each(|(i, (cells, phi))| {
                 let (x, r) = (spheres.position[i], spheres.radius[i]);
+                if same_parameters && old_x.get(i) == Some(&x) && old_r.get(i) == Some(&r) {
+                    return;
+                }
                 if !resolved(r) {
                     *cells = CellBox::default();
                     return;
@@ -387,6 +385,11 @@ impl Coupling {
                 sphere_fractions(&grid, cells, x, r, m, b, phi);
                 normalise(&grid, r, cells, b, phi);
             });
+        x_of.clear();
+        x_of.extend_from_slice(&spheres.position);
+        r_of.clear();
+        r_of.extend_from_slice(&spheres.radius);
+        *par_of = Some(self.parameters);
         true
     }
 
