@@ -577,6 +577,36 @@ mod tests {
         }
     }
 
+    /// The sensitivity report from saved runs: `output/sheet_flow_full.bin` (or `_half`) as
+    /// the base, `_coarse_grid` and `_stiff` as far as they got, compared over their common
+    /// time span: `cargo test --release --lib sheet_flow::tests::sensitivity_saved -- --ignored --nocapture`.
+    #[test]
+    #[ignore = "needs saved runs"]
+    fn sensitivity_saved() {
+        let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("output");
+        let base = load_run(&out.join("sheet_flow_full.bin"))
+            .or_else(|_| load_run(&out.join("sheet_flow_half.bin")))
+            .unwrap();
+        let mut runs = vec![base];
+        for name in ["coarse_grid", "stiff"] {
+            if let Ok(r) = load_run(&out.join(format!("sheet_flow_{name}.bin"))) {
+                runs.push(r);
+            }
+        }
+        let dir = out.join("sheet_flow_sensitivity_report");
+        std::fs::create_dir_all(&dir).unwrap();
+        let md = report::write_sensitivity(&dir, &runs).unwrap();
+        std::fs::write(dir.join("report.md"), &md).unwrap();
+        for r in &runs {
+            eprintln!(
+                "{}: to t = {:.3} s",
+                r.level,
+                r.samples.last().unwrap().time
+            );
+        }
+        eprintln!("{md}");
+    }
+
     /// How much of the grains' submerged weight the water's pressure p̄ carries in the
     /// resting bed: after 0.004 s of the base case (the flow has barely started), the mean of
     /// the vertical [59] force (the held load less buoyancy) over the spheres whose centre lies
