@@ -143,9 +143,10 @@ pub struct Field<'a> {
 }
 
 /// Draws `field` as coloured cells at `path` (PNG or SVG by the extension), the colour
-/// running from white (the smallest value, or 0 when all are positive) through yellow and
-/// red to dark red (the largest), with `series` drawn over it. The title should state what
-/// the colours mean; the range of values is appended to it.
+/// running from white (0, and every value below it) through yellow and red to dark red (the
+/// largest value; a field without positive values is drawn from its smallest value), with
+/// `series` drawn over it in dark colours. The title should state what the colours mean; the
+/// range of the colours is appended to it.
 pub fn heat_map(
     path: &Path,
     axes: &Axes,
@@ -231,7 +232,7 @@ where
     let (hx, hy) = (half_step(field.x), half_step(field.y));
     let finite = || field.values.iter().copied().filter(|v| v.is_finite());
     let (lo, hi) = min_max(finite()).unwrap_or((0.0, 1.0));
-    let lo = lo.min(0.0);
+    let lo = if hi > 0.0 { 0.0 } else { lo };
     let span = if hi > lo { hi - lo } else { 1.0 };
     let x = match (field.x.first(), field.x.last()) {
         (Some(a), Some(b)) => a - hx..b + hx,
@@ -277,20 +278,38 @@ where
         })
     });
     chart.draw_series(cells).map_err(drawing)?;
+    // Dark colours that stand out on white, yellow and red.
+    const DARK: [u32; 4] = [0x1f77b4, 0x000000, 0x2ca02c, 0x9467bd];
     for (i, s) in series.iter().enumerate() {
-        let c = PALETTE[i % PALETTE.len()];
+        let c = DARK[i % DARK.len()];
         let color = RGBColor((c >> 16) as u8, (c >> 8) as u8, c as u8);
         let style = color.stroke_width(2);
         let inside = |p: &&(f64, f64)| x.contains(&p.0) && y.contains(&p.1);
         let pts = s.points.iter().filter(inside).copied();
+        let line = move |(x, y): (i32, i32)| PathElement::new(vec![(x, y), (x + 20, y)], style);
         match s.style {
-            LineStyle::Markers => chart.draw_series(pts.map(|p| Circle::new(p, 4, color.filled()))),
-            LineStyle::Line => chart.draw_series(LineSeries::new(pts, style)),
-            LineStyle::Dashed => chart.draw_series(DashedLineSeries::new(pts, 12, 7, style)),
+            LineStyle::Markers => {
+                chart
+                    .draw_series(pts.map(|p| Circle::new(p, 6, color.filled())))
+                    .map_err(drawing)?
+                    .label(s.label)
+                    .legend(move |(x, y)| Circle::new((x + 10, y), 6, color.filled()));
+            }
+            LineStyle::Line => {
+                chart
+                    .draw_series(LineSeries::new(pts, style))
+                    .map_err(drawing)?
+                    .label(s.label)
+                    .legend(line);
+            }
+            LineStyle::Dashed => {
+                chart
+                    .draw_series(DashedLineSeries::new(pts, 12, 7, style))
+                    .map_err(drawing)?
+                    .label(s.label)
+                    .legend(line);
+            }
         }
-        .map_err(drawing)?
-        .label(s.label)
-        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
     }
     if !series.is_empty() {
         chart

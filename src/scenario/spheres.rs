@@ -350,7 +350,8 @@ pub(super) fn build_spheres(
                 let path = src.dir.join(file);
                 let rows = read_sphere_csv(&path, domain)
                     .map_err(|e| src.invalid(&format!("{key}.file"), e))?;
-                for (line, row) in rows {
+                let lines: Vec<usize> = rows.iter().map(|r| r.0).collect();
+                for (_, row) in rows {
                     spheres.push(NewSphere {
                         position: row.position,
                         velocity: Vec3::ZERO,
@@ -360,10 +361,15 @@ pub(super) fn build_spheres(
                         density: materials[m as usize].density,
                         fixed: row.fixed,
                     });
-                    origin.push(format!("{key} ({}:{line})", path.display()));
+                    origin.push(format!("{key}.file"));
                 }
+                let csv = CsvLines {
+                    path: &path,
+                    lines: &lines,
+                    first,
+                };
                 let ratio = *max_overlap_ratio;
-                check_file_overlaps(src, &spheres, first, domain, &origin, &key, ratio)?;
+                check_file_overlaps(src, &spheres, domain, &origin, &csv, ratio)?;
                 continue;
             }
         }
@@ -464,17 +470,32 @@ fn read_sphere_csv(
     Ok(rows)
 }
 
-/// Refuses spheres of a file set (from `first` on, against all earlier ones) that overlap by
-/// more than `ratio` of the smaller diameter.
+/// Where the spheres of a file set come from: the file, and the line of each sphere from slot
+/// `first` on.
+struct CsvLines<'a> {
+    path: &'a std::path::Path,
+    lines: &'a [usize],
+    first: usize,
+}
+
+/// Refuses spheres of a file set (from `csv.first` on, against all earlier ones) that overlap
+/// by more than `ratio` of the smaller diameter, naming the file and lines.
 fn check_file_overlaps(
     src: &Source,
     s: &Spheres,
-    first: usize,
     domain: &Domain,
     origin: &[String],
-    key: &str,
+    csv: &CsvLines,
     ratio: f64,
 ) -> Result<(), ScenarioError> {
+    let first = csv.first;
+    let at = |k: usize| {
+        if k >= first {
+            format!("{}:{}", csv.path.display(), csv.lines[k - first])
+        } else {
+            origin[k].clone()
+        }
+    };
     let mut worst: Option<(usize, usize, f64)> = None;
     for &(i, j) in &close_pairs(s, domain, 0.0) {
         let (i, j) = if i < j {
@@ -493,12 +514,12 @@ fn check_file_overlaps(
     }
     if let Some((i, j, r)) = worst {
         return Err(src.invalid(
-            &format!("{key}.file"),
+            &origin[j],
             format!(
                 "spheres overlap by more than max_overlap_ratio = {ratio}: {} and {} (d = {} m \
                  and {} m) overlap by {:.3} of the smaller diameter",
-                origin[i],
-                origin[j],
+                at(i),
+                at(j),
                 2.0 * s.radius[i],
                 2.0 * s.radius[j],
                 r

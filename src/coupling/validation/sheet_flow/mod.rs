@@ -75,7 +75,7 @@ pub struct Level {
 }
 
 impl Level {
-    /// The base case: one period on Δ = d1/4, E = 1e7 Pa (about 80 minutes on 2 cores).
+    /// The base case: one period on Δ = d1/4, E = 1e7 Pa (55 minutes on 2 shared cores).
     pub const FULL: Level = Level {
         name: "full",
         end_time: PERIOD,
@@ -97,13 +97,15 @@ impl Level {
         sample_interval: 0.005,
         ..Level::FULL
     };
-    /// Sensitivity: the coarser grid Δ = d1/3 (60 × 27 × 54 cells), first half period.
+    /// Sensitivity: the coarser grid Δ = d1/3 (60 × 27 × 54 cells), first half period
+    /// (10 minutes).
     pub const COARSE_GRID: Level = Level {
         name: "coarse_grid",
         cell_size: D[0] / 3.0,
         ..Level::HALF
     };
-    /// Sensitivity: springs 4 times stiffer (E = 4e7 Pa, Δt = 2e-5 s), first half period.
+    /// Sensitivity: springs 4 times stiffer (E = 4e7 Pa, Δt = 2e-5 s), first half period
+    /// (20 minutes).
     pub const STIFF: Level = Level {
         name: "stiff",
         young_modulus: 4.0e7,
@@ -424,6 +426,14 @@ pub fn load_run(path: &Path) -> anyhow::Result<SheetFlowRun> {
     Ok(postcard::from_bytes(&std::fs::read(path)?)?)
 }
 
+/// Reads the saved run `sheet_flow_<name>.bin` from `output/`, or else the one measured for
+/// README.md (`measured/<name>.bin` in the case directory).
+pub fn load_saved(name: &str) -> anyhow::Result<SheetFlowRun> {
+    let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("output");
+    load_run(&out.join(format!("sheet_flow_{name}.bin")))
+        .or_else(|_| load_run(&case_dir().join("measured").join(format!("{name}.bin"))))
+}
+
 /// The values of a run at one phase φ = k π/4.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PhaseRow {
@@ -577,6 +587,34 @@ mod tests {
         }
     }
 
+    /// The sensitivity report from saved runs (`output/`, or else `measured/`): `full` (or
+    /// `half`) as the base, `coarse_grid` and `stiff` as far as they got, compared over their
+    /// common time span: `cargo test --release --lib sheet_flow::tests::sensitivity_saved -- --ignored --nocapture`.
+    #[test]
+    #[ignore = "needs saved runs"]
+    fn sensitivity_saved() {
+        let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("output");
+        let base = load_saved("full").or_else(|_| load_saved("half")).unwrap();
+        let mut runs = vec![base];
+        for name in ["coarse_grid", "stiff"] {
+            if let Ok(r) = load_saved(name) {
+                runs.push(r);
+            }
+        }
+        let dir = out.join("sheet_flow_sensitivity_report");
+        std::fs::create_dir_all(&dir).unwrap();
+        let md = report::write_sensitivity(&dir, &runs).unwrap();
+        std::fs::write(dir.join("report.md"), &md).unwrap();
+        for r in &runs {
+            eprintln!(
+                "{}: to t = {:.3} s",
+                r.level,
+                r.samples.last().unwrap().time
+            );
+        }
+        eprintln!("{md}");
+    }
+
     /// How much of the grains' submerged weight the water's pressure p̄ carries in the
     /// resting bed: after 0.004 s of the base case (the flow has barely started), the mean of
     /// the vertical [59] force (the held load less buoyancy) over the spheres whose centre lies
@@ -634,7 +672,7 @@ mod tests {
     /// `output/sheet_flow_<level>.bin` after each sample:
     /// `SHEET_FLOW_LEVEL=half cargo test --release --lib sheet_flow::tests::run_saved -- --ignored --nocapture`.
     #[test]
-    #[ignore = "a long run: ~40 minutes for half a period on 2 cores"]
+    #[ignore = "a long run: 28 minutes for half a period, 55 for one, on 2 cores"]
     fn run_saved() {
         let name = std::env::var("SHEET_FLOW_LEVEL").unwrap_or_else(|_| "half".into());
         let level = Level::named(&name).expect("a level name");
@@ -645,14 +683,16 @@ mod tests {
         eprintln!("{:#?}", summarise(&run));
     }
 
-    /// Prints the summary of a saved run (SHEET_FLOW_LEVEL, default `half`):
+    /// Writes the report of a saved run (SHEET_FLOW_LEVEL, default `half`; from `output/`, or
+    /// else the runs measured for README.md in `measured/`) into
+    /// `output/sheet_flow_<level>_report/`:
     /// `cargo test --release --lib sheet_flow::tests::report_saved -- --ignored --nocapture`.
     #[test]
     #[ignore = "needs a saved run"]
     fn report_saved() {
         let name = std::env::var("SHEET_FLOW_LEVEL").unwrap_or_else(|_| "half".into());
         let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("output");
-        let run = load_run(&out.join(format!("sheet_flow_{name}.bin"))).unwrap();
+        let run = load_saved(&name).unwrap();
         let dir = out.join(format!("sheet_flow_{name}_report"));
         std::fs::create_dir_all(&dir).unwrap();
         let (md, ok) = report::write_report(&dir, "sheet_flow", &run).unwrap();

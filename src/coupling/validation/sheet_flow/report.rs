@@ -323,7 +323,7 @@ pub fn centroid_difference(base: &SheetFlowRun, other: &SheetFlowRun) -> [f64; 3
 /// in one plot, and the largest difference of each from the base.
 pub fn write_sensitivity(out: &Path, runs: &[SheetFlowRun]) -> anyhow::Result<String> {
     let mut md = String::from(
-        "| run | Δ [mm] | fluid steps | wall-clock [s] | max |Δz_c| small [d1] | medium [d1] | large [d1] |\n\
+        "| run | Δ [mm] | fluid steps | wall-clock [s] | largest Δz_c small [d1] | medium [d1] | large [d1] |\n\
          |---|---:|---:|---:|---:|---:|---:|\n",
     );
     for r in runs {
