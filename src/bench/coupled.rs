@@ -45,9 +45,6 @@ pub struct CoupledBench {
     pub pressure: f64,
     /// Period of the oscillatory drive [s], if any.
     pub period: Option<f64>,
-    /// The fluid step at the scenario's velocity scale (for a drive, U_max), rounded down to
-    /// whole DEM steps, as `riprap check` prints it [s].
-    pub planned_step: Option<f64>,
 }
 
 impl CoupledBench {
@@ -64,12 +61,7 @@ pub fn run_coupled_bench(src: &Source, end_time: Option<f64>) -> anyhow::Result<
         t_end > 0.0 && t_end.is_finite(),
         "--end-time must be positive"
     );
-    let built = build(src)?;
-    let planned_step = built.derived.fluid.as_ref().map(|f| match f.dem_step {
-        Some(dt) => dt * f.dem_steps_per_fluid_step().unwrap_or(1).max(1) as f64,
-        None => f.fluid_step,
-    });
-    let mut sim = built.simulation;
+    let mut sim = build(src)?.simulation;
     let Some(fluid) = &sim.fluid else {
         anyhow::bail!("{}: the scenario has no [fluid]", src.file);
     };
@@ -102,7 +94,6 @@ pub fn run_coupled_bench(src: &Source, end_time: Option<f64>) -> anyhow::Result<
         phases: sim.times,
         pressure: fluid.pressure_seconds(),
         period,
-        planned_step,
     })
 }
 
@@ -139,16 +130,6 @@ pub fn describe(b: &CoupledBench) -> String {
             "one period T = {t} s: {:.1} min ({how})\n",
             b.wall_per_simulated_second() * t / 60.0
         ));
-        if let Some(dt) = b.planned_step.filter(|_| b.simulated < t * (1.0 - 1e-9)) {
-            let steps = (t / dt).ceil();
-            let per_step = b.wall / b.fluid_steps.max(1) as f64;
-            s.push_str(&format!(
-                "one period T = {t} s: {:.1} min (estimated: {:.1} ms per fluid step × {steps:.0} \
-                 steps of {dt:.3e} s, the step at U_max that `riprap check` plans)\n",
-                per_step * steps / 60.0,
-                1e3 * per_step
-            ));
-        }
     }
     s
 }
