@@ -92,6 +92,48 @@ pub enum PlotError {
 /// with `log_y`. A legend appears when there is more than one series. With
 /// no drawable points at all the frame is still drawn, over a unit range.
 pub fn line_plot(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), PlotError> {
+    save(path, &Lines { axes, series })
+}
+
+/// A chart that can draw itself on any plotters backend.
+trait Chart {
+    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), PlotError>
+    where
+        DB::ErrorType: 'static;
+}
+
+struct Lines<'a> {
+    axes: &'a Axes<'a>,
+    series: &'a [Series<'a>],
+}
+
+impl Chart for Lines<'_> {
+    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), PlotError>
+    where
+        DB::ErrorType: 'static,
+    {
+        draw(root, self.axes, self.series)
+    }
+}
+
+struct Heat<'a> {
+    axes: &'a Axes<'a>,
+    field: &'a Field<'a>,
+    series: &'a [Series<'a>],
+}
+
+impl Chart for Heat<'_> {
+    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), PlotError>
+    where
+        DB::ErrorType: 'static,
+    {
+        draw_field(root, self.axes, self.field, self.series)
+    }
+}
+
+/// Writes `chart` at `path`, a 1000x700 PNG or an SVG according to the extension, replacing
+/// any existing file atomically.
+fn save(path: &Path, chart: &impl Chart) -> Result<(), PlotError> {
     register_font()?;
     let ext = path
         .extension()
@@ -102,7 +144,7 @@ pub fn line_plot(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), Plot
             let mut svg = String::new();
             {
                 let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
-                draw(&root, axes, series)?;
+                chart.paint(&root)?;
                 root.present().map_err(drawing)?;
             }
             super::write_replacing(path, svg.as_bytes())?;
@@ -113,7 +155,7 @@ pub fn line_plot(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), Plot
             let tmp = super::tmp_path(path, ".tmp.png");
             let result = (|| -> Result<(), PlotError> {
                 let root = BitMapBackend::new(&tmp, SIZE).into_drawing_area();
-                draw(&root, axes, series)?;
+                chart.paint(&root)?;
                 root.present().map_err(drawing)?;
                 drop(root);
                 std::fs::rename(&tmp, path)?;
@@ -153,40 +195,14 @@ pub fn heat_map(
     field: &Field,
     series: &[Series],
 ) -> Result<(), PlotError> {
-    register_font()?;
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    match ext.as_deref() {
-        Some("svg") => {
-            let mut svg = String::new();
-            {
-                let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
-                draw_field(&root, axes, field, series)?;
-                root.present().map_err(drawing)?;
-            }
-            super::write_replacing(path, svg.as_bytes())?;
-        }
-        Some("png") => {
-            let tmp = super::tmp_path(path, ".tmp.png");
-            let result = (|| -> Result<(), PlotError> {
-                let root = BitMapBackend::new(&tmp, SIZE).into_drawing_area();
-                draw_field(&root, axes, field, series)?;
-                root.present().map_err(drawing)?;
-                drop(root);
-                std::fs::rename(&tmp, path)?;
-                Ok(())
-            })();
-            if result.is_err() {
-                let _ = std::fs::remove_file(&tmp);
-            }
-            result?;
-            super::sync_parent_dir(path);
-        }
-        _ => return Err(PlotError::UnsupportedFormat(path.to_path_buf())),
-    }
-    Ok(())
+    save(
+        path,
+        &Heat {
+            axes,
+            field,
+            series,
+        },
+    )
 }
 
 /// The colour of `t` in [0, 1]: white → yellow → red → dark red.
