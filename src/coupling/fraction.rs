@@ -62,6 +62,13 @@ impl CellBox {
     }
 }
 
+impl CellBox {
+    /// The (unwrapped) grid index of the cell at local index `l` of the box.
+    pub fn cell(&self, l: [usize; 3]) -> [i64; 3] {
+        std::array::from_fn(|a| self.low[a] + l[a] as i64)
+    }
+}
+
 /// B, the box size (cells per axis) that holds any sphere of diameter ≤ `d_max` [m].
 pub fn box_size(grid: &StaggeredGrid, d_max: f64) -> usize {
     let h = grid.spacing.x.min(grid.spacing.y).min(grid.spacing.z);

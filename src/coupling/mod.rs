@@ -137,7 +137,8 @@ pub struct Coupling {
     cell_phi_rho: Vec<f64>,
     /// A fixed solid given by its cell fractions (padded), or empty.
     obstacle: Vec<f64>,
-    /// The slabs of the grid that the sums over spheres are split into.
+    /// The slabs of the grid that the sums over spheres are split into (cut where the boxes
+    /// are set, in `compute_fractions`).
     slabs: Slabs,
     /// Force of the water on the fixed solid at the last step [N] ([59]).
     pub obstacle_force: DVec3,
@@ -385,6 +386,14 @@ impl Coupling {
                 sphere_fractions(&grid, cells, x, r, m, b, phi);
                 normalise(&grid, r, cells, b, phi);
             });
+        // The slabs of the sums over spheres follow the boxes.
+        self.slabs.cut(
+            &self.grid,
+            &self.bcs,
+            &self.boxes[..n],
+            rayon::current_num_threads(),
+        );
+        let (x_of, r_of, par_of) = &mut self.phi_of;
         x_of.clear();
         x_of.extend_from_slice(&spheres.position);
         r_of.clear();
@@ -400,8 +409,6 @@ impl Coupling {
         let plane = grid.strides()[2];
         let n = spheres.len();
         let (boxes, phi) = (&self.boxes[..n], &self.phi);
-        self.slabs
-            .cut(&grid, &bcs, boxes, rayon::current_num_threads());
         self.slabs.for_each(
             &grid,
             [&mut self.cell_phi[..], &mut self.cell_phi_rho[..]],
@@ -423,11 +430,7 @@ impl Coupling {
                                 if v == 0.0 {
                                     continue;
                                 }
-                                let g = [
-                                    cells.low[0] + l as i64,
-                                    cells.low[1] + j as i64,
-                                    cells.low[2] + k as i64,
-                                ];
+                                let g = cells.cell([l, j, k]);
                                 let Some(c) = resolved::storage(&grid, &bcs, None, g) else {
                                     continue;
                                 };
@@ -505,8 +508,6 @@ impl Coupling {
         let plane = grid.strides()[2];
         let n = spheres.len();
         let (boxes, phi) = (&self.boxes[..n], &self.phi);
-        self.slabs
-            .cut(&grid, &bcs, boxes, rayon::current_num_threads());
         let [w0, w1, w2] = &mut self.weight;
         let [v0, v1, v2] = &mut self.weighted_velocity;
         self.slabs.for_each(

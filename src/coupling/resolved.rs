@@ -88,11 +88,7 @@ pub fn for_each_face(
                     if w == 0.0 {
                         continue;
                     }
-                    let g = [
-                        cells.low[0] + i as i64,
-                        cells.low[1] + j as i64,
-                        cells.low[2] + k as i64,
-                    ];
+                    let g = cells.cell([i, j, k]);
                     let Some(c) = storage(grid, bcs, Some(a), g) else {
                         continue;
                     };

@@ -298,7 +298,7 @@ where
     const DARK: [u32; 4] = [0x1f77b4, 0x000000, 0x2ca02c, 0x9467bd];
     for (i, s) in series.iter().enumerate() {
         let c = DARK[i % DARK.len()];
-        let color = RGBColor((c >> 16) as u8, (c >> 8) as u8, c as u8);
+        let color = rgb(c);
         let style = color.stroke_width(2);
         let inside = |p: &&(f64, f64)| x.contains(&p.0) && y.contains(&p.1);
         let pts = s.points.iter().filter(inside).copied();
@@ -328,16 +328,31 @@ where
         }
     }
     if !series.is_empty() {
-        chart
-            .configure_series_labels()
-            .label_font((FONT, 16))
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(drawing)?;
+        draw_legend(&mut chart)?;
     }
     Ok(())
+}
+
+/// The colour 0xRRGGBB.
+fn rgb(c: u32) -> RGBColor {
+    RGBColor((c >> 16) as u8, (c >> 8) as u8, c as u8)
+}
+
+/// The legend box in the upper right corner.
+fn draw_legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
+    chart: &mut ChartContext<'a, DB, CT>,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    chart
+        .configure_series_labels()
+        .label_font((FONT, 16))
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::UpperRight)
+        .draw()
+        .map_err(drawing)
 }
 
 /// Registers the embedded font with plotters exactly once per process.
@@ -441,7 +456,7 @@ where
 
     for (i, s) in series.iter().enumerate() {
         let c = PALETTE[i % PALETTE.len()];
-        let color = RGBColor((c >> 16) as u8, (c >> 8) as u8, c as u8);
+        let color = rgb(c);
         let style = color.stroke_width(2);
         if series.len() > 1 {
             // An empty series carries the legend entry, drawn once however
@@ -477,14 +492,7 @@ where
         }
     }
     if series.len() > 1 {
-        chart
-            .configure_series_labels()
-            .label_font((FONT, 16))
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(drawing)?;
+        draw_legend(&mut chart)?;
     }
     Ok(())
 }

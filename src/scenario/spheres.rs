@@ -497,16 +497,7 @@ fn check_file_overlaps(
         }
     };
     let mut worst: Option<(usize, usize, f64)> = None;
-    for &(i, j) in &close_pairs(s, domain, 0.0) {
-        let (i, j) = if i < j {
-            (i as usize, j as usize)
-        } else {
-            (j as usize, i as usize)
-        };
-        if j < first {
-            continue;
-        }
-        let d = domain.minimum_image(s.position[j] - s.position[i]).length();
+    for (i, j, d) in new_pairs(s, domain, first) {
         let r = (s.radius[i] + s.radius[j] - d) / (2.0 * s.radius[i].min(s.radius[j]));
         if r > ratio && worst.is_none_or(|w| r > w.2) {
             worst = Some((i, j, r));
@@ -529,6 +520,27 @@ fn check_file_overlaps(
     Ok(())
 }
 
+/// The pairs (i < j, j ≥ `first`) of spheres that touch or overlap, with their centre distance
+/// [m] (minimum image on periodic axes).
+fn new_pairs<'a>(
+    s: &'a Spheres,
+    domain: &'a Domain,
+    first: usize,
+) -> impl Iterator<Item = (usize, usize, f64)> + 'a {
+    close_pairs(s, domain, 0.0)
+        .into_iter()
+        .filter_map(move |(i, j)| {
+            let (i, j) = (i.min(j) as usize, i.max(j) as usize);
+            (j >= first).then(|| {
+                (
+                    i,
+                    j,
+                    domain.minimum_image(s.position[j] - s.position[i]).length(),
+                )
+            })
+        })
+}
+
 /// Refuses initial spheres that overlap (spheres from `first` on against all earlier ones).
 fn check_overlaps(
     src: &Source,
@@ -538,16 +550,7 @@ fn check_overlaps(
     origin: &[String],
 ) -> Result<(), ScenarioError> {
     let mut worst: Option<(usize, usize, f64)> = None;
-    for &(i, j) in &close_pairs(s, domain, 0.0) {
-        let (i, j) = if i < j {
-            (i as usize, j as usize)
-        } else {
-            (j as usize, i as usize)
-        };
-        if j < first {
-            continue;
-        }
-        let d = domain.minimum_image(s.position[j] - s.position[i]).length();
+    for (i, j, d) in new_pairs(s, domain, first) {
         let overlap = s.radius[i] + s.radius[j] - d;
         if overlap > 1e-9 * (s.radius[i] + s.radius[j]) && worst.is_none_or(|w| (j, i) < (w.1, w.0))
         {
