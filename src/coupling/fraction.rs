@@ -69,6 +69,9 @@ impl CellBox {
     }
 }
 
+/// The most sub-samples per axis in a cut cell (the scenario key `subsamples` allows 1-16).
+pub const MAX_SUBSAMPLES: usize = 16;
+
 /// B, the box size (cells per axis) that holds any sphere of diameter ≤ `d_max` [m].
 pub fn box_size(grid: &StaggeredGrid, d_max: f64) -> usize {
     let h = grid.spacing.x.min(grid.spacing.y).min(grid.spacing.z);
@@ -90,6 +93,13 @@ pub fn sphere_fractions(
     let h = grid.spacing;
     let r2 = r * r;
     let inv_m = 1.0 / m as f64;
+    // The sub-cell midpoints relative to the cell's low corner, per axis [m].
+    assert!(
+        (1..=MAX_SUBSAMPLES).contains(&m),
+        "1 to {MAX_SUBSAMPLES} sub-samples"
+    );
+    let offsets: [[f64; MAX_SUBSAMPLES]; 3] =
+        std::array::from_fn(|a| std::array::from_fn(|s| (s as f64 + 0.5) * inv_m * h[a]));
     let (mut full, mut cut) = (0.0, 0.0);
     for k in 0..cells.extent[2] {
         for j in 0..cells.extent[1] {
@@ -120,13 +130,13 @@ pub fn sphere_fractions(
                     0.0
                 } else {
                     let mut inside = 0usize;
-                    for sk in 0..m {
-                        let z = lo[2] + (sk as f64 + 0.5) * inv_m * h[2];
-                        for sj in 0..m {
-                            let y = lo[1] + (sj as f64 + 0.5) * inv_m * h[1];
+                    for &oz in &offsets[2][..m] {
+                        let z = lo[2] + oz;
+                        for &oy in &offsets[1][..m] {
+                            let y = lo[1] + oy;
                             let yz = y * y + z * z;
-                            for si in 0..m {
-                                let xx = lo[0] + (si as f64 + 0.5) * inv_m * h[0];
+                            for &ox in &offsets[0][..m] {
+                                let xx = lo[0] + ox;
                                 inside += (xx * xx + yz <= r2) as usize;
                             }
                         }

@@ -39,7 +39,14 @@
 //! In [59] the source writes the weight as Σ φ Δ³ (ρ̄ − ρ_w) g over the cells; with partly
 //! covered cells that sum is Σ φ_ic φ_c (ρ_p − ρ_w) Δ³ g, less than the true excess weight
 //! (ρ_p − ρ_w) V g. riprap uses the exact weight and buoyancy instead (the same in fully
-//! covered cells). A driving pressure gradient of the water (a body force of [51], not part
+//! covered cells), and so the flow step leaves the mixture's excess weight (ρ̄ − ρ_w) g out
+//! of its body force [51] ([`Fluid::set_mixture_weight`]), as immersed-boundary methods do:
+//! the solids' weight reaches the water only through the correction [62] and the interaction
+//! force [63]. Keeping it would make the projection build a vertical gradient of p̄ that holds
+//! the solid up, which [59] hands back to spheres that already carry their exact weight: a
+//! resting bed would rest one third on the pressure (measured in case 5 before the change:
+//! 44 / 37 / 33 % of the submerged weight of the small / medium / large grains; after it
+//! 3.5 / 3.1 / 0.3 %). A driving pressure gradient of the water (a body force of [51], not part
 //! of p̄) acts on the spheres too, as the Froude-Krylov force V (−∇P_drive)
 //! ([`driving_force_density`]), so that grains feel the gradient that accelerates the water.
 //!
@@ -52,7 +59,8 @@
 //! State between steps: the held loads (a column of `Spheres`, checkpointed with it) and ρ̄ (in
 //! `FluidState`, checkpointed with it); `FluidState::body_force` stays zero. φ is recomputed from the positions when needed, so
 //! a restart continues bit for bit. Loops over spheres run in parallel, each writing only its
-//! own sphere's values; sums onto the grid run serially in slot order. Results do not depend on
+//! own sphere's values; sums onto the grid run in parallel by z-slabs, each point receiving its
+//! terms in slot order ([`slabs`]). Results do not depend on
 //! the number of threads. Nothing allocates in a step unless spheres were added.
 
 pub mod drag;
@@ -129,12 +137,14 @@ pub struct Coupling {
     /// slot): the fluid load of a step reuses the fractions of the last correction, whose
     /// spheres have not moved since.
     phi_of: (Vec<DVec3>, Vec<f64>, Option<CouplingParameters>),
-    /// Σ_i w_i and Σ_i w_i (v_i + ω_i × r)_a on the faces of each component (correction [62]).
-    weight: [Vec<f64>; 3],
-    weighted_velocity: [Vec<f64>; 3],
-    /// Σ_i φ_ic and Σ_i φ_ic ρ_i at the cells ([53]).
-    cell_phi: Vec<f64>,
-    cell_phi_rho: Vec<f64>,
+    /// (Σ_i w_i, Σ_i w_i (v_i + ω_i × r)_a) on the faces of each component (correction [62]).
+    /// Paired, so that a sum over a sphere's faces touches one cache line per face.
+    weight: [Vec<[f64; 2]>; 3],
+    /// (Σ_i w_i, f_a of [59]) on the faces that spheres or the obstacle cover, from the
+    /// provisional flow of the step (`resolved::FlowView::face_loads`).
+    face_loads: [Vec<[f64; 2]>; 3],
+    /// (Σ_i φ_ic, Σ_i φ_ic ρ_i) at the cells ([53]).
+    cell_phi: Vec<[f64; 2]>,
     /// A fixed solid given by its cell fractions (padded), or empty.
     obstacle: Vec<f64>,
     /// The slabs of the grid that the sums over spheres are split into (cut where the boxes
@@ -184,10 +194,9 @@ impl Coupling {
             boxes: Vec::new(),
             phi: Vec::new(),
             phi_of: (Vec::new(), Vec::new(), None),
-            weight: std::array::from_fn(|_| field()),
-            weighted_velocity: std::array::from_fn(|_| field()),
-            cell_phi: field(),
-            cell_phi_rho: field(),
+            weight: std::array::from_fn(|_| vec![[0.0; 2]; grid.len()]),
+            face_loads: std::array::from_fn(|_| vec![[0.0; 2]; grid.len()]),
+            cell_phi: vec![[0.0; 2]; grid.len()],
             obstacle: Vec::new(),
             slabs: Slabs::default(),
             obstacle_force: DVec3::ZERO,
@@ -226,9 +235,17 @@ impl Coupling {
         }
     }
 
+    /// Makes `fluid` leave the mixture's excess weight out of its body force: the DEM carries
+    /// the weight of the resolved spheres (module docs, "Gravity and buoyancy"). Called by
+    /// [`Coupling::initialise`], and for a restored flow by `Simulation::with_coupling`.
+    pub fn attach(&self, fluid: &mut Fluid) {
+        fluid.set_mixture_weight(false);
+    }
+
     /// At t = 0: ρ̄ [53] from the spheres and the water in them moving with them [62]
     /// (F stays zero).
     pub fn initialise(&mut self, fluid: &mut Fluid, spheres: &mut Spheres) {
+        self.attach(fluid);
         spheres.with_fluid_loads();
         self.compute_fractions(spheres);
         self.set_mixture_density(fluid, spheres);
@@ -249,11 +266,11 @@ impl Coupling {
         if self.compute_fractions(spheres) {
             self.accumulate_weights(spheres);
         } // else φ and the face weights are those of the last correction, for these spheres.
+        resolved::FlowView::new(fluid).face_loads(&self.weight, &mut self.face_loads);
         let this = &*self;
         let b3 = this.b * this.b * this.b;
         let drive = driving_force_density(fluid);
         let u = fluid.velocity();
-        let st = resolved::FlowView::new(fluid);
         let s = &mut *spheres;
         let phi = &this.phi;
         let boxes = &this.boxes;
@@ -275,7 +292,15 @@ impl Coupling {
                     load.torque = DVec3::ZERO;
                 } else {
                     let own = &phi[i * b3..(i + 1) * b3];
-                    let (fr, tr) = st.sphere_force(&boxes[i], this.b, own, x, &this.weight);
+                    let (fr, tr) = resolved::sphere_force(
+                        &this.grid,
+                        &this.bcs,
+                        &boxes[i],
+                        this.b,
+                        own,
+                        x,
+                        &this.face_loads,
+                    );
                     load.force = fr + buoyancy;
                     load.torque = tr;
                 }
@@ -292,7 +317,8 @@ impl Coupling {
                 load.impulse = 0.5 * dt * drag;
             });
         if !self.obstacle.is_empty() {
-            self.obstacle_force = st.obstacle_force(&self.obstacle, &self.weight);
+            self.obstacle_force =
+                resolved::obstacle_force(&self.grid, &self.bcs, &self.obstacle, &self.face_loads);
         }
     }
 
@@ -411,10 +437,9 @@ impl Coupling {
         let (boxes, phi) = (&self.boxes[..n], &self.phi);
         self.slabs.for_each(
             &grid,
-            [&mut self.cell_phi[..], &mut self.cell_phi_rho[..]],
-            &|first, end, [cell_phi, cell_phi_rho]| {
-                cell_phi.fill(0.0);
-                cell_phi_rho.fill(0.0);
+            [&mut self.cell_phi[..]],
+            &|first, end, [cell_phi]| {
+                cell_phi.fill([0.0; 2]);
                 let offset = first * plane;
                 for (i, cells) in boxes.iter().enumerate() {
                     if !planes(&grid, &bcs, cells).any(|p| (first..end).contains(&p)) {
@@ -437,8 +462,9 @@ impl Coupling {
                                 if let Some(c) =
                                     c.checked_sub(offset).filter(|&c| c < cell_phi.len())
                                 {
-                                    cell_phi[c] += v;
-                                    cell_phi_rho[c] += v * rho_i;
+                                    let sum = &mut cell_phi[c];
+                                    sum[0] += v;
+                                    sum[1] += v * rho_i;
                                 }
                             }
                         }
@@ -452,7 +478,7 @@ impl Coupling {
             for j in 0..grid.n[1] {
                 for i in 0..grid.n[0] {
                     let c = grid.cell(i, j, k);
-                    let (phi, phi_rho) = (self.cell_phi[c], self.cell_phi_rho[c]);
+                    let [phi, phi_rho] = self.cell_phi[c];
                     rho[c] = if phi <= 1.0 {
                         rho_w * (1.0 - phi) + phi_rho
                     } else {
@@ -472,18 +498,19 @@ impl Coupling {
         let st = grid.strides();
         let (u, density) = fluid.correction_fields();
         for a in 0..3 {
-            let (w, wu) = (&self.weight[a], &self.weighted_velocity[a]);
+            let weight = &self.weight[a];
             let sa = st[a];
             u[a].par_iter_mut()
                 .zip(self.interaction[a].par_iter_mut())
                 .enumerate()
                 .for_each(|(c, (u, f))| {
-                    if w[c] <= 0.0 {
+                    let [w, wu] = weight[c];
+                    if w <= 0.0 {
                         *f = 0.0;
                         return;
                     }
-                    let phi = w[c].min(1.0);
-                    let u_solid = wu[c] / w[c];
+                    let phi = w.min(1.0);
+                    let u_solid = wu / w;
                     let u_star = *u;
                     *u = u_star * (1.0 - phi) + u_solid * phi; // [62]
                     if let Some(dt_f) = dt_f {
@@ -509,21 +536,12 @@ impl Coupling {
         let n = spheres.len();
         let (boxes, phi) = (&self.boxes[..n], &self.phi);
         let [w0, w1, w2] = &mut self.weight;
-        let [v0, v1, v2] = &mut self.weighted_velocity;
         self.slabs.for_each(
             &grid,
-            [
-                &mut w0[..],
-                &mut w1[..],
-                &mut w2[..],
-                &mut v0[..],
-                &mut v1[..],
-                &mut v2[..],
-            ],
-            &|first, end, [w0, w1, w2, v0, v1, v2]| {
-                let (mut w, mut wv) = ([w0, w1, w2], [v0, v1, v2]);
-                for f in w.iter_mut().chain(wv.iter_mut()) {
-                    f.fill(0.0);
+            [&mut w0[..], &mut w1[..], &mut w2[..]],
+            &|first, end, mut w| {
+                for f in w.iter_mut() {
+                    f.fill([0.0; 2]);
                 }
                 let (offset, len) = (first * plane, w[0].len());
                 for (i, cells) in boxes.iter().enumerate() {
@@ -537,15 +555,16 @@ impl Coupling {
                         };
                         let rigid = spheres.velocity[i]
                             + spheres.angular_velocity[i].cross(x_face - spheres.position[i]);
-                        w[a][c] += wt;
-                        wv[a][c] += wt * rigid[a];
+                        let sum = &mut w[a][c];
+                        sum[0] += wt;
+                        sum[1] += wt * rigid[a];
                     });
                 }
             },
         );
         if !self.obstacle.is_empty() {
             resolved::obstacle_faces(&grid, &bcs, &self.obstacle, |a, c, w| {
-                self.weight[a][c] += w;
+                self.weight[a][c][0] += w;
             });
         }
     }

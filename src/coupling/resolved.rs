@@ -23,6 +23,7 @@
 //! the flow step moves count: boundary faces of walls carry no force density of their own.
 
 use glam::DVec3;
+use rayon::prelude::*;
 
 use super::fraction::CellBox;
 use crate::fluid::boundary::fill_scalar_ghosts;
@@ -56,9 +57,42 @@ pub fn storage(
     Some(grid.cell(idx[0], idx[1], idx[2]))
 }
 
+/// The storage coordinate along axis `q` of the unwrapped cell index `g` (low `face_axis`-face
+/// when `face_axis == q`), if the flow step moves it: one axis of [`storage`].
+#[inline(always)]
+fn axis_index(
+    grid: &StaggeredGrid,
+    bcs: &Boundaries,
+    face_axis: usize,
+    q: usize,
+    g: i64,
+) -> Option<usize> {
+    let n = grid.n[q] as i64;
+    if bcs.is_periodic(q) {
+        // A box reaches at most one period past either end (rem_euclid only in a domain
+        // smaller than a sphere).
+        let w = if g < 0 {
+            g + n
+        } else if g >= n {
+            g - n
+        } else {
+            g
+        };
+        Some(if (0..n).contains(&w) {
+            w
+        } else {
+            g.rem_euclid(n)
+        } as usize)
+    } else {
+        let lo = if face_axis == q { 1 } else { 0 };
+        (lo..n).contains(&g).then_some(g as usize)
+    }
+}
+
 /// Calls `f(a, c, w, x_face)` for every a-face c with weight w > 0 that the sphere of box
 /// `cells` and fractions `phi` (B³, B = `b`) covers; `x_face` is the face centre [m],
 /// unwrapped. The order is fixed (a, then k, j, i), so sums over it are deterministic.
+/// The storage index and the centre are built per axis (a row at a time), not per face.
 pub fn for_each_face(
     grid: &StaggeredGrid,
     bcs: &Boundaries,
@@ -68,36 +102,40 @@ pub fn for_each_face(
     mut f: impl FnMut(usize, usize, f64, DVec3),
 ) {
     let e = cells.extent;
-    let at = |l: [usize; 3]| phi[l[0] + b * (l[1] + b * l[2])];
+    let p = grid.padded();
+    let local = [1, b, b * b];
     for a in 0..3 {
         let mut ext = e;
         ext[a] += 1;
+        let shift = |q: usize| if q == a { 0.0 } else { 0.5 };
+        let centre = |q: usize, g: i64| grid.origin[q] + (g as f64 + shift(q)) * grid.spacing[q];
         for k in 0..ext[2] {
+            let gk = cells.low[2] + k as i64;
+            let Some(kk) = axis_index(grid, bcs, a, 2, gk) else {
+                continue;
+            };
+            let z = centre(2, gk);
             for j in 0..ext[1] {
+                let gj = cells.low[1] + j as i64;
+                let Some(jj) = axis_index(grid, bcs, a, 1, gj) else {
+                    continue;
+                };
+                let y = centre(1, gj);
+                let row = p[0] * (jj + 1 + p[1] * (kk + 1)) + 1;
                 for i in 0..ext[0] {
                     let l = [i, j, k];
-                    let hi = if l[a] < e[a] { at(l) } else { 0.0 };
-                    let lo = if l[a] > 0 {
-                        let mut m = l;
-                        m[a] -= 1;
-                        at(m)
-                    } else {
-                        0.0
-                    };
+                    let at = i + b * (j + b * k);
+                    let hi = if l[a] < e[a] { phi[at] } else { 0.0 };
+                    let lo = if l[a] > 0 { phi[at - local[a]] } else { 0.0 };
                     let w = 0.5 * (hi + lo);
                     if w == 0.0 {
                         continue;
                     }
-                    let g = cells.cell([i, j, k]);
-                    let Some(c) = storage(grid, bcs, Some(a), g) else {
+                    let gi = cells.low[0] + i as i64;
+                    let Some(ii) = axis_index(grid, bcs, a, 0, gi) else {
                         continue;
                     };
-                    let mut x = DVec3::ZERO;
-                    for q in 0..3 {
-                        let shift = if q == a { 0.0 } else { 0.5 };
-                        x[q] = grid.origin[q] + (g[q] as f64 + shift) * grid.spacing[q];
-                    }
-                    f(a, c, w, x);
+                    f(a, row + ii, w, DVec3::new(centre(0, gi), y, z));
                 }
             }
         }
@@ -138,7 +176,6 @@ pub fn fill_obstacle_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, phi: &mut [f
 /// The provisional flow as [59] reads it.
 pub struct FlowView<'a> {
     grid: StaggeredGrid,
-    bcs: Boundaries,
     st: Stencil,
     p: &'a [f64],
     u: [&'a [f64]; 3],
@@ -152,7 +189,6 @@ impl<'a> FlowView<'a> {
     pub fn new(fluid: &'a Fluid) -> FlowView<'a> {
         FlowView {
             grid: *fluid.grid(),
-            bcs: *fluid.boundaries(),
             st: Stencil::new(fluid.grid()),
             p: fluid.pressure(),
             u: fluid.velocity(),
@@ -174,39 +210,67 @@ impl<'a> FlowView<'a> {
         f
     }
 
-    /// Force [N] and torque about `x` [N m] on the sphere centred at `x` [59] [61], with box
-    /// `cells`, fractions `phi` (B³, B = `b`) and `total` Σ_j w_j on the faces.
-    pub fn sphere_force(
-        &self,
-        cells: &CellBox,
-        b: usize,
-        phi: &[f64],
-        x: DVec3,
-        total: &[Vec<f64>; 3],
-    ) -> (DVec3, DVec3) {
-        let (grid, bcs) = (&self.grid, &self.bcs);
-        let volume = grid.cell_volume();
-        let (mut force, mut torque) = (DVec3::ZERO, DVec3::ZERO);
-        for_each_face(grid, bcs, cells, b, phi, |a, c, w, x_face| {
-            let w = w / total[a][c].max(w);
-            let mut f = DVec3::ZERO;
-            f[a] = w * volume * self.force_density(a, c);
-            force += f;
-            torque += (x_face - x).cross(f);
-        });
-        (force, torque)
+    /// (Σ_j w_j, f_a) into `out[a][c]` on every face with Σ_j w_j = `total[a][c][0]` > 0, the
+    /// faces [59] reads (other entries are left as they were). Each face is evaluated once,
+    /// however many spheres share it, in parallel by z-planes (each writing its own plane: the
+    /// same bits on any number of threads). The pair sits in one cache line: the sums over a
+    /// sphere's faces wait on memory, not on arithmetic.
+    pub fn face_loads(&self, total: &[Vec<[f64; 2]>; 3], out: &mut [Vec<[f64; 2]>; 3]) {
+        let plane = self.grid.strides()[2];
+        for (a, (w, f)) in total.iter().zip(out.iter_mut()).enumerate() {
+            f.par_chunks_mut(plane)
+                .zip(w.par_chunks(plane))
+                .enumerate()
+                .for_each(|(k, (f, w))| {
+                    for (q, (f, &[w, _])) in f.iter_mut().zip(w).enumerate() {
+                        if w > 0.0 {
+                            *f = [w, self.force_density(a, k * plane + q)];
+                        }
+                    }
+                });
+        }
     }
+}
 
-    /// Force [N] on a fixed solid given by its cell fractions [59], each face counted with the
-    /// solid's share w / Σ_j w_j of it (`total` = Σ_j w_j on the faces).
-    pub fn obstacle_force(&self, phi: &[f64], total: &[Vec<f64>; 3]) -> DVec3 {
-        let (grid, bcs) = (&self.grid, &self.bcs);
-        let volume = grid.cell_volume();
-        let mut force = DVec3::ZERO;
-        obstacle_faces(grid, bcs, phi, |a, c, w| {
-            let share = w / total[a][c].max(w);
-            force[a] += share * volume * self.force_density(a, c);
-        });
-        force
-    }
+/// Force [N] and torque about `x` [N m] on the sphere centred at `x` [59] [61], with box
+/// `cells`, fractions `phi` (B³, B = `b`), and `loads` the pairs (Σ_j w_j, f_a) of
+/// [`FlowView::face_loads`] on the faces.
+pub fn sphere_force(
+    grid: &StaggeredGrid,
+    bcs: &Boundaries,
+    cells: &CellBox,
+    b: usize,
+    phi: &[f64],
+    x: DVec3,
+    loads: &[Vec<[f64; 2]>; 3],
+) -> (DVec3, DVec3) {
+    let volume = grid.cell_volume();
+    let (mut force, mut torque) = (DVec3::ZERO, DVec3::ZERO);
+    for_each_face(grid, bcs, cells, b, phi, |a, c, w, x_face| {
+        let [total, density] = loads[a][c];
+        let w = w / total.max(w);
+        let mut f = DVec3::ZERO;
+        f[a] = w * volume * density;
+        force += f;
+        torque += (x_face - x).cross(f);
+    });
+    (force, torque)
+}
+
+/// Force [N] on a fixed solid given by its cell fractions [59], each face counted with the
+/// solid's share w / Σ_j w_j of it (`loads` the pairs (Σ_j w_j, f_a) on the faces).
+pub fn obstacle_force(
+    grid: &StaggeredGrid,
+    bcs: &Boundaries,
+    phi: &[f64],
+    loads: &[Vec<[f64; 2]>; 3],
+) -> DVec3 {
+    let volume = grid.cell_volume();
+    let mut force = DVec3::ZERO;
+    obstacle_faces(grid, bcs, phi, |a, c, w| {
+        let [total, density] = loads[a][c];
+        let share = w / total.max(w);
+        force[a] += share * volume * density;
+    });
+    force
 }

@@ -66,24 +66,24 @@ impl Slabs {
 
     /// Calls `work(first_plane, last_plane + 1, fields)` on each slab in parallel, `fields`
     /// being the slab's parts of `fields` (each a padded field of `grid`).
-    pub fn for_each<const K: usize>(
+    pub fn for_each<T: Send, const K: usize>(
         &self,
         grid: &StaggeredGrid,
-        fields: [&mut [f64]; K],
-        work: &(impl Fn(usize, usize, [&mut [f64]; K]) + Sync),
+        fields: [&mut [T]; K],
+        work: &(impl Fn(usize, usize, [&mut [T]; K]) + Sync),
     ) {
         let plane = grid.strides()[2];
         split(&self.cuts, 0, grid.padded()[2], plane, fields, work);
     }
 }
 
-fn split<const K: usize>(
+fn split<T: Send, const K: usize>(
     cuts: &[usize],
     first: usize,
     end: usize,
     plane: usize,
-    fields: [&mut [f64]; K],
-    work: &(impl Fn(usize, usize, [&mut [f64]; K]) + Sync),
+    fields: [&mut [T]; K],
+    work: &(impl Fn(usize, usize, [&mut [T]; K]) + Sync),
 ) {
     if cuts.is_empty() {
         work(first, end, fields);
@@ -91,8 +91,8 @@ fn split<const K: usize>(
     }
     let m = cuts.len() / 2;
     let at = cuts[m];
-    let mut lo: [&mut [f64]; K] = std::array::from_fn(|_| &mut [][..]);
-    let mut hi: [&mut [f64]; K] = std::array::from_fn(|_| &mut [][..]);
+    let mut lo: [&mut [T]; K] = std::array::from_fn(|_| &mut [][..]);
+    let mut hi: [&mut [T]; K] = std::array::from_fn(|_| &mut [][..]);
     for (q, f) in fields.into_iter().enumerate() {
         let (l, h) = f.split_at_mut((at - first) * plane);
         lo[q] = l;

@@ -112,6 +112,10 @@ pub struct Fluid {
     /// Wall-clock time spent in the projection so far [s]: a measurement for `riprap bench`,
     /// not part of the state (not saved, not compared).
     pub(super) pressure_seconds: f64,
+    /// Whether the body force of [51] holds the excess weight (ρ̄ − ρ_w) g of the mixture.
+    /// True for a fluid of varying density; the coupling turns it off, since the DEM carries
+    /// the weight of the resolved solids that make ρ̄ differ from ρ_w ([`Fluid::set_mixture_weight`]).
+    pub(super) mixture_weight: bool,
 }
 
 /// Cell-centred copies of the fields for output (compact, nx·ny·nz, i fastest: the order of
@@ -177,9 +181,26 @@ impl Fluid {
             next_pressure: grid.field(),
             projection: Projection::new(&grid, &boundaries),
             pressure_seconds: 0.0,
+            mixture_weight: true,
         };
         fluid.fill_ghosts();
         Ok(fluid)
+    }
+
+    /// Whether the momentum equation [51] holds the excess weight (ρ̄ − ρ_w) g of the mixture
+    /// (default true: a fluid of varying density, e.g. a suspension modelled as one). The
+    /// coupling sets it false: there ρ̄ − ρ_w comes from resolved spheres whose weight and
+    /// buoyancy the DEM already applies, and the projection would otherwise build a pressure
+    /// gradient that holds that weight up a second time (through [59]), making a resting bed
+    /// light (`coupling` module docs, regression test
+    /// `a_resting_bed_rests_on_its_contacts_not_on_the_pressure`).
+    pub fn set_mixture_weight(&mut self, on: bool) {
+        self.mixture_weight = on;
+    }
+
+    /// See [`Fluid::set_mixture_weight`].
+    pub fn mixture_weight(&self) -> bool {
+        self.mixture_weight
     }
 
     /// Wall-clock time spent in the pressure projection since the fluid was made [s].

@@ -6,6 +6,7 @@
 //! ```text
 //! Hⁿ   = −A_a(uⁿ) + ( μ ∇²u_aⁿ + Σ_b δ_b(2 μ_SGS S_ab)ⁿ ) / ρ̄_f                [51][56]
 //! B    = ( −∂P/∂x_a(tⁿ + Δt/2) + (ρ̄_f − ρ_w) g_a + F_a ) / ρ̄_f                [51]
+//!        (the weight term only with `Fluid::set_mixture_weight(true)`, the default)
 //! u*   = uⁿ + Δt [ (1 + r/2) Hⁿ − (r/2) Hⁿ⁻¹ ] + Δt B ,   r = Δtⁿ / Δtⁿ⁻¹       (AB2)
 //! uⁿ⁺¹ = u* − Δt (1/ρ̄_f) G pⁿ⁺¹   with D uⁿ⁺¹ = 0                            (projection)
 //! ```
@@ -98,7 +99,13 @@ impl Fluid {
                 &state.previous_tendency[a],
                 &state.body_force[a],
             );
-            let g_a = par.gravity[a];
+            // Without the mixture's weight (coupled spheres carry their own) only the drive
+            // and F remain.
+            let g_a = if self.mixture_weight {
+                par.gravity[a]
+            } else {
+                0.0
+            };
             let sa = st.s[a] as isize;
             update_rows(
                 &grid,
