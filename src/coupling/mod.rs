@@ -448,27 +448,13 @@ impl Coupling {
                     let r = spheres.radius[i];
                     let rho_i = spheres.mass[i] / (4.0 / 3.0 * PI * r.powi(3));
                     let phi = &phi[i * b3..(i + 1) * b3];
-                    for k in 0..cells.extent[2] {
-                        for j in 0..cells.extent[1] {
-                            for l in 0..cells.extent[0] {
-                                let v = phi[l + b * (j + b * k)];
-                                if v == 0.0 {
-                                    continue;
-                                }
-                                let g = cells.cell([l, j, k]);
-                                let Some(c) = resolved::storage(&grid, &bcs, None, g) else {
-                                    continue;
-                                };
-                                if let Some(c) =
-                                    c.checked_sub(offset).filter(|&c| c < cell_phi.len())
-                                {
-                                    let sum = &mut cell_phi[c];
-                                    sum[0] += v;
-                                    sum[1] += v * rho_i;
-                                }
-                            }
+                    resolved::for_each_cell(&grid, &bcs, cells, b, phi, |c, v| {
+                        if let Some(c) = c.checked_sub(offset).filter(|&c| c < cell_phi.len()) {
+                            let sum = &mut cell_phi[c];
+                            sum[0] += v;
+                            sum[1] += v * rho_i;
                         }
-                    }
+                    });
                 }
             },
         );

@@ -41,24 +41,13 @@ pub fn storage(
     face_axis: Option<usize>,
     g: [i64; 3],
 ) -> Option<usize> {
-    let mut idx = [0usize; 3];
-    for b in 0..3 {
-        let n = grid.n[b] as i64;
-        idx[b] = if bcs.is_periodic(b) {
-            g[b].rem_euclid(n) as usize
-        } else {
-            let lo = if face_axis == Some(b) { 1 } else { 0 };
-            if g[b] < lo || g[b] > n - 1 {
-                return None;
-            }
-            g[b] as usize
-        };
-    }
-    Some(grid.cell(idx[0], idx[1], idx[2]))
+    let a = face_axis.unwrap_or(3);
+    let [i, j, k] = [0, 1, 2].map(|q| axis_index(grid, bcs, a, q, g[q]));
+    Some(grid.cell(i?, j?, k?))
 }
 
 /// The storage coordinate along axis `q` of the unwrapped cell index `g` (low `face_axis`-face
-/// when `face_axis == q`), if the flow step moves it: one axis of [`storage`].
+/// when `face_axis == q`; 3 for cells), if the flow step moves it: one axis of [`storage`].
 #[inline(always)]
 fn axis_index(
     grid: &StaggeredGrid,
@@ -136,6 +125,41 @@ pub fn for_each_face(
                         continue;
                     };
                     f(a, row + ii, w, DVec3::new(centre(0, gi), y, z));
+                }
+            }
+        }
+    }
+}
+
+/// Calls `f(c, φ)` for every interior cell c (padded storage index) with φ > 0 that the
+/// sphere of box `cells` and fractions `phi` (B³, B = `b`) covers, in a fixed order (k, j,
+/// i); the index is built a row at a time, as in [`for_each_face`].
+pub fn for_each_cell(
+    grid: &StaggeredGrid,
+    bcs: &Boundaries,
+    cells: &CellBox,
+    b: usize,
+    phi: &[f64],
+    mut f: impl FnMut(usize, f64),
+) {
+    let e = cells.extent;
+    let p = grid.padded();
+    for k in 0..e[2] {
+        let Some(kk) = axis_index(grid, bcs, 3, 2, cells.low[2] + k as i64) else {
+            continue;
+        };
+        for j in 0..e[1] {
+            let Some(jj) = axis_index(grid, bcs, 3, 1, cells.low[1] + j as i64) else {
+                continue;
+            };
+            let row = p[0] * (jj + 1 + p[1] * (kk + 1)) + 1;
+            for i in 0..e[0] {
+                let v = phi[i + b * (j + b * k)];
+                if v == 0.0 {
+                    continue;
+                }
+                if let Some(ii) = axis_index(grid, bcs, 3, 0, cells.low[0] + i as i64) {
+                    f(row + ii, v);
                 }
             }
         }
