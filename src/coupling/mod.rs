@@ -539,11 +539,17 @@ impl Coupling {
                         let Some(c) = c.checked_sub(offset).filter(|&c| c < len) else {
                             return;
                         };
-                        let rigid = spheres.velocity[i]
-                            + spheres.angular_velocity[i].cross(x_face - spheres.position[i]);
+                        // (v + ω × r)_a, the one component (as glam's cross writes it).
+                        let (v, o) = (spheres.velocity[i], spheres.angular_velocity[i]);
+                        let r = x_face - spheres.position[i];
+                        let rigid = match a {
+                            0 => v.x + (o.y * r.z - r.y * o.z),
+                            1 => v.y + (o.z * r.x - r.z * o.x),
+                            _ => v.z + (o.x * r.y - r.x * o.y),
+                        };
                         let sum = &mut w[a][c];
                         sum[0] += wt;
-                        sum[1] += wt * rigid[a];
+                        sum[1] += wt * rigid;
                     });
                 }
             },

@@ -273,10 +273,27 @@ pub fn sphere_force(
     for_each_face(grid, bcs, cells, b, phi, |a, c, w, x_face| {
         let [total, density] = loads[a][c];
         let w = w / total.max(w);
-        let mut f = DVec3::ZERO;
-        f[a] = w * volume * density;
-        force += f;
-        torque += (x_face - x).cross(f);
+        let f = w * volume * density;
+        // force += f e_a, torque += r × (f e_a), written out per component: a vector built
+        // in parts through memory stalls the load that reads it back.
+        let r = x_face - x;
+        match a {
+            0 => {
+                force.x += f;
+                torque.y += r.z * f;
+                torque.z -= f * r.y;
+            }
+            1 => {
+                force.y += f;
+                torque.x -= f * r.z;
+                torque.z += r.x * f;
+            }
+            _ => {
+                force.z += f;
+                torque.x += r.y * f;
+                torque.y -= f * r.x;
+            }
+        }
     });
     (force, torque)
 }
