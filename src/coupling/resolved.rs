@@ -315,3 +315,110 @@ pub fn obstacle_force(
     });
     force
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::coupling::fraction::{box_size, sphere_fractions};
+    use crate::fluid::Boundary;
+
+    /// [`storage`] written out on its own: wrapped by rem_euclid on periodic axes, else cells
+    /// 0..n and faces 1..n − 1.
+    fn reference_storage(
+        grid: &StaggeredGrid,
+        bcs: &Boundaries,
+        face_axis: Option<usize>,
+        g: [i64; 3],
+    ) -> Option<usize> {
+        let mut idx = [0; 3];
+        for q in 0..3 {
+            let n = grid.n[q] as i64;
+            let lo = if face_axis == Some(q) { 1 } else { 0 };
+            idx[q] = if bcs.is_periodic(q) {
+                g[q].rem_euclid(n) as usize
+            } else if (lo..n).contains(&g[q]) {
+                g[q] as usize
+            } else {
+                return None;
+            };
+        }
+        Some(grid.cell(idx[0], idx[1], idx[2]))
+    }
+
+    /// The faces and cells a sphere covers, enumerated a row at a time, are those of the
+    /// definition face by face (weight ½ (φ[c] + φ[c − s_a]) > 0, index as
+    /// [`reference_storage`], centre of the unwrapped face), in the same order: for spheres
+    /// across the periodic x and y boundaries (low and high side) and against the walls of z.
+    #[test]
+    fn row_enumeration_matches_the_face_by_face_definition() {
+        let grid = StaggeredGrid::new([10, 9, 8], DVec3::new(1.0, 0.9, 0.8), DVec3::ZERO);
+        let bcs = Boundaries::periodic().with(2, Boundary::WALL, Boundary::FreeSlip);
+        let r = 0.23;
+        let b = box_size(&grid, 2.0 * r);
+        let mut phi = vec![0.0; b * b * b];
+        for x in [
+            DVec3::new(0.05, 0.04, 0.1),
+            DVec3::new(0.97, 0.88, 0.75),
+            DVec3::new(0.5, 0.45, 0.4),
+        ] {
+            let cells = CellBox::of_sphere(&grid, x, r);
+            sphere_fractions(&grid, &cells, x, r, 4, b, &mut phi);
+            let mut rows = Vec::new();
+            for_each_face(&grid, &bcs, &cells, b, &phi, |a, c, w, xf| {
+                rows.push((a, c, w, xf))
+            });
+            let mut faces = Vec::new();
+            let at = |l: [i64; 3]| {
+                if (0..3).all(|q| (0..cells.extent[q] as i64).contains(&l[q])) {
+                    phi[l[0] as usize + b * (l[1] as usize + b * l[2] as usize)]
+                } else {
+                    0.0
+                }
+            };
+            for a in 0..3 {
+                let mut ext = cells.extent;
+                ext[a] += 1;
+                for k in 0..ext[2] as i64 {
+                    for j in 0..ext[1] as i64 {
+                        for i in 0..ext[0] as i64 {
+                            let mut lo = [i, j, k];
+                            lo[a] -= 1;
+                            let w = 0.5 * (at([i, j, k]) + at(lo));
+                            let g = cells.cell([i as usize, j as usize, k as usize]);
+                            let Some(c) = reference_storage(&grid, &bcs, Some(a), g) else {
+                                continue;
+                            };
+                            if w == 0.0 {
+                                continue;
+                            }
+                            let xf = DVec3::from_array(std::array::from_fn(|q| {
+                                let shift = if q == a { 0.0 } else { 0.5 };
+                                grid.origin[q] + (g[q] as f64 + shift) * grid.spacing[q]
+                            }));
+                            faces.push((a, c, w, xf));
+                        }
+                    }
+                }
+            }
+            assert!(!faces.is_empty());
+            assert_eq!(rows, faces, "sphere at {x}");
+            let mut cells_rows = Vec::new();
+            for_each_cell(&grid, &bcs, &cells, b, &phi, |c, v| cells_rows.push((c, v)));
+            let mut cells_def = Vec::new();
+            for k in 0..cells.extent[2] {
+                for j in 0..cells.extent[1] {
+                    for i in 0..cells.extent[0] {
+                        let v = phi[i + b * (j + b * k)];
+                        let g = cells.cell([i, j, k]);
+                        if let Some(c) = reference_storage(&grid, &bcs, None, g) {
+                            if v != 0.0 {
+                                cells_def.push((c, v));
+                            }
+                        }
+                    }
+                }
+            }
+            assert_eq!(cells_rows, cells_def, "sphere at {x}");
+        }
+    }
+}
