@@ -138,7 +138,7 @@ pub fn run_validation_cases(
 }
 
 /// Case 5 of the coupling: mixed-size oscillatory sheet flow; quick: 0.02 s of the base
-/// case (the flow starts, the bed holds); full: one period (55 minutes on 2 shared cores),
+/// case (the flow starts, the bed holds); full: one period (29 minutes on 2 idle cores),
 /// its samples saved to `sheet_flow_full.bin` beside the report.
 fn sheet_flow_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
     let level = if quick { Level::QUICK } else { Level::FULL };

@@ -75,7 +75,7 @@ pub struct Level {
 }
 
 impl Level {
-    /// The base case: one period on Δ = d1/4, E = 1e7 Pa (55 minutes on 2 shared cores).
+    /// The base case: one period on Δ = d1/4, E = 1e7 Pa (29 minutes on 2 idle cores).
     pub const FULL: Level = Level {
         name: "full",
         end_time: PERIOD,
@@ -672,7 +672,7 @@ mod tests {
     /// `output/sheet_flow_<level>.bin` after each sample:
     /// `SHEET_FLOW_LEVEL=half cargo test --release --lib sheet_flow::tests::run_saved -- --ignored --nocapture`.
     #[test]
-    #[ignore = "a long run: 28 minutes for half a period, 55 for one, on 2 cores"]
+    #[ignore = "a long run: about 15 minutes for half a period, 29 for one, on 2 cores"]
     fn run_saved() {
         let name = std::env::var("SHEET_FLOW_LEVEL").unwrap_or_else(|_| "half".into());
         let level = Level::named(&name).expect("a level name");
