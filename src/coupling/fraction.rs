@@ -69,7 +69,7 @@ impl CellBox {
     }
 }
 
-/// The most sub-samples per axis in a cut cell (the scenario key `subsamples` allows 1-16).
+/// The most sub-samples per axis in a cut cell (the bound of the scenario key `subsamples`).
 pub const MAX_SUBSAMPLES: usize = 16;
 
 /// B, the box size (cells per axis) that holds any sphere of diameter ≤ `d_max` [m].

@@ -535,21 +535,19 @@ impl Coupling {
                         continue;
                     }
                     let phi = &phi[i * b3..(i + 1) * b3];
+                    let (x, v, o) = (
+                        spheres.position[i],
+                        spheres.velocity[i],
+                        spheres.angular_velocity[i],
+                    );
                     resolved::for_each_face(&grid, &bcs, cells, b, phi, |a, c, wt, x_face| {
                         let Some(c) = c.checked_sub(offset).filter(|&c| c < len) else {
                             return;
                         };
-                        // (v + ω × r)_a, the one component (as glam's cross writes it).
-                        let (v, o) = (spheres.velocity[i], spheres.angular_velocity[i]);
-                        let r = x_face - spheres.position[i];
-                        let rigid = match a {
-                            0 => v.x + (o.y * r.z - r.y * o.z),
-                            1 => v.y + (o.z * r.x - r.z * o.x),
-                            _ => v.z + (o.x * r.y - r.x * o.y),
-                        };
+                        let rigid = v + o.cross(x_face - x);
                         let sum = &mut w[a][c];
                         sum[0] += wt;
-                        sum[1] += wt * rigid;
+                        sum[1] += wt * rigid[a];
                     });
                 }
             },

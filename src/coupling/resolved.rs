@@ -41,39 +41,26 @@ pub fn storage(
     face_axis: Option<usize>,
     g: [i64; 3],
 ) -> Option<usize> {
-    let a = face_axis.unwrap_or(3);
-    let [i, j, k] = [0, 1, 2].map(|q| axis_index(grid, bcs, a, q, g[q]));
+    let [i, j, k] = [0, 1, 2].map(|q| axis_index(grid, bcs, face_axis, q, g[q]));
     Some(grid.cell(i?, j?, k?))
 }
 
-/// The storage coordinate along axis `q` of the unwrapped cell index `g` (low `face_axis`-face
-/// when `face_axis == q`; 3 for cells), if the flow step moves it: one axis of [`storage`].
+/// The storage coordinate along axis `q` of the unwrapped cell index `g` (of the low
+/// `face_axis`-face when `face_axis == Some(q)`), if the flow step moves it: one axis of
+/// [`storage`].
 #[inline(always)]
 fn axis_index(
     grid: &StaggeredGrid,
     bcs: &Boundaries,
-    face_axis: usize,
+    face_axis: Option<usize>,
     q: usize,
     g: i64,
 ) -> Option<usize> {
     let n = grid.n[q] as i64;
     if bcs.is_periodic(q) {
-        // A box reaches at most one period past either end (rem_euclid only in a domain
-        // smaller than a sphere).
-        let w = if g < 0 {
-            g + n
-        } else if g >= n {
-            g - n
-        } else {
-            g
-        };
-        Some(if (0..n).contains(&w) {
-            w
-        } else {
-            g.rem_euclid(n)
-        } as usize)
+        Some(g.rem_euclid(n) as usize)
     } else {
-        let lo = if face_axis == q { 1 } else { 0 };
+        let lo = if face_axis == Some(q) { 1 } else { 0 };
         (lo..n).contains(&g).then_some(g as usize)
     }
 }
@@ -100,13 +87,13 @@ pub fn for_each_face(
         let centre = |q: usize, g: i64| grid.origin[q] + (g as f64 + shift(q)) * grid.spacing[q];
         for k in 0..ext[2] {
             let gk = cells.low[2] + k as i64;
-            let Some(kk) = axis_index(grid, bcs, a, 2, gk) else {
+            let Some(kk) = axis_index(grid, bcs, Some(a), 2, gk) else {
                 continue;
             };
             let z = centre(2, gk);
             for j in 0..ext[1] {
                 let gj = cells.low[1] + j as i64;
-                let Some(jj) = axis_index(grid, bcs, a, 1, gj) else {
+                let Some(jj) = axis_index(grid, bcs, Some(a), 1, gj) else {
                     continue;
                 };
                 let y = centre(1, gj);
@@ -121,7 +108,7 @@ pub fn for_each_face(
                         continue;
                     }
                     let gi = cells.low[0] + i as i64;
-                    let Some(ii) = axis_index(grid, bcs, a, 0, gi) else {
+                    let Some(ii) = axis_index(grid, bcs, Some(a), 0, gi) else {
                         continue;
                     };
                     f(a, row + ii, w, DVec3::new(centre(0, gi), y, z));
@@ -145,11 +132,11 @@ pub fn for_each_cell(
     let e = cells.extent;
     let p = grid.padded();
     for k in 0..e[2] {
-        let Some(kk) = axis_index(grid, bcs, 3, 2, cells.low[2] + k as i64) else {
+        let Some(kk) = axis_index(grid, bcs, None, 2, cells.low[2] + k as i64) else {
             continue;
         };
         for j in 0..e[1] {
-            let Some(jj) = axis_index(grid, bcs, 3, 1, cells.low[1] + j as i64) else {
+            let Some(jj) = axis_index(grid, bcs, None, 1, cells.low[1] + j as i64) else {
                 continue;
             };
             let row = p[0] * (jj + 1 + p[1] * (kk + 1)) + 1;
@@ -158,7 +145,7 @@ pub fn for_each_cell(
                 if v == 0.0 {
                     continue;
                 }
-                if let Some(ii) = axis_index(grid, bcs, 3, 0, cells.low[0] + i as i64) {
+                if let Some(ii) = axis_index(grid, bcs, None, 0, cells.low[0] + i as i64) {
                     f(row + ii, v);
                 }
             }
@@ -273,27 +260,10 @@ pub fn sphere_force(
     for_each_face(grid, bcs, cells, b, phi, |a, c, w, x_face| {
         let [total, density] = loads[a][c];
         let w = w / total.max(w);
-        let f = w * volume * density;
-        // force += f e_a, torque += r × (f e_a), written out per component: a vector built
-        // in parts through memory stalls the load that reads it back.
-        let r = x_face - x;
-        match a {
-            0 => {
-                force.x += f;
-                torque.y += r.z * f;
-                torque.z -= f * r.y;
-            }
-            1 => {
-                force.y += f;
-                torque.x -= f * r.z;
-                torque.z += r.x * f;
-            }
-            _ => {
-                force.z += f;
-                torque.x += r.y * f;
-                torque.y -= f * r.x;
-            }
-        }
+        let mut f = DVec3::ZERO;
+        f[a] = w * volume * density;
+        force += f;
+        torque += (x_face - x).cross(f);
     });
     (force, torque)
 }

@@ -6,8 +6,8 @@
 //! central differences, Adams-Bashforth (AB2) for advection ([`advection`]) and viscous and
 //! subgrid stresses ([`diffusion`], Smagorinsky with van Driest damping [56]-[58] in [`sgs`]),
 //! body forces (driving pressure gradient, buoyancy (ρ̄ − ρ_w) g unless the coupling carries
-//! it, external force F; [`forcing`]), then a projection ([`pressure`]) that makes the velocity divergence-free to
-//! round-off with variable density (Dodd & Ferrante 2014 splitting, FFT/DCT direct solver).
+//! it, external force F; [`forcing`]), then a projection ([`pressure`]) that makes the
+//! velocity divergence-free to round-off with variable density (Dodd & Ferrante 2014 splitting, FFT/DCT direct solver).
 //! Each face of the box is periodic, a no-slip wall (fixed or moving), free slip, an inflow
 //! (steady or oscillating) or an outflow ([`boundary`]). The time step adapts to CFL and
 //! viscous limits ([`timestep`]). [`diagnostics`] gives whole-flow numbers (kinetic energy,

@@ -112,9 +112,8 @@ pub struct Fluid {
     /// Wall-clock time spent in the projection so far [s]: a measurement for `riprap bench`,
     /// not part of the state (not saved, not compared).
     pub(super) pressure_seconds: f64,
-    /// Whether the body force of [51] holds the excess weight (ρ̄ − ρ_w) g of the mixture.
-    /// True for a fluid of varying density; the coupling turns it off, since the DEM carries
-    /// the weight of the resolved solids that make ρ̄ differ from ρ_w ([`Fluid::set_mixture_weight`]).
+    /// Whether the body force of [51] holds the excess weight (ρ̄ − ρ_w) g of the mixture
+    /// ([`Fluid::set_mixture_weight`]).
     pub(super) mixture_weight: bool,
 }
 
@@ -196,11 +195,6 @@ impl Fluid {
     /// `a_resting_bed_rests_on_its_contacts_not_on_the_pressure`).
     pub fn set_mixture_weight(&mut self, on: bool) {
         self.mixture_weight = on;
-    }
-
-    /// See [`Fluid::set_mixture_weight`].
-    pub fn mixture_weight(&self) -> bool {
-        self.mixture_weight
     }
 
     /// Wall-clock time spent in the pressure projection since the fluid was made [s].

@@ -52,10 +52,11 @@ pub(super) fn coupling_parameters(
             .unwrap_or(d.resolved_cells_per_diameter),
     )?;
     let subsamples = c.subsamples.unwrap_or(d.subsamples);
-    if !(1..=16).contains(&subsamples) {
+    let most = crate::coupling::fraction::MAX_SUBSAMPLES;
+    if !(1..=most).contains(&subsamples) {
         return Err(src.invalid(
             "coupling.subsamples",
-            format!("must be 1 to 16 (sub-samples per axis of a cut cell), got {subsamples}"),
+            format!("must be 1 to {most} (sub-samples per axis of a cut cell), got {subsamples}"),
         ));
     }
     Ok(Some(CouplingParameters {
