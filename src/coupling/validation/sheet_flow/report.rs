@@ -320,24 +320,29 @@ pub fn centroid_difference(base: &SheetFlowRun, other: &SheetFlowRun) -> [f64; 3
 }
 
 /// Writes the sensitivity report: the centroid curves of `runs` (the first is the base)
-/// in one plot, and the largest difference of each from the base.
+/// in one plot, and the largest difference of each from the base, with the small class's
+/// change over the two phase windows of criterion (a) (where the run reaches them).
 pub fn write_sensitivity(out: &Path, runs: &[SheetFlowRun]) -> anyhow::Result<String> {
     let mut md = String::from(
-        "| run | Δ [mm] | fluid steps | wall-clock [s] | largest Δz_c small [d1] | medium [d1] | large [d1] |\n\
-         |---|---:|---:|---:|---:|---:|---:|\n",
+        "| run | Δ [mm] | fluid steps | wall-clock [s] | largest Δz_c small [d1] | medium [d1] | large [d1] | (a) small 2π/8…5π/8 [d1] | 5π/8…π [d1] |\n\
+         |---|---:|---:|---:|---:|---:|---:|---:|---:|\n",
     );
+    let value = |v: Option<f64>| v.map_or("–".to_string(), |v| format!("{v:+.3}"));
     for r in runs {
         let d = centroid_difference(&runs[0], r);
+        let s = summarise(r);
         let _ = writeln!(
             md,
-            "| {} | {:.4} | {} | {:.0} | {:.3} | {:.3} | {:.3} |",
+            "| {} | {:.4} | {} | {:.0} | {:.3} | {:.3} | {:.3} | {} | {} |",
             r.level,
             r.cell_size * 1e3,
             r.steps,
             r.seconds,
             d[0],
             d[1],
-            d[2]
+            d[2],
+            value(s.small_fall),
+            value(s.small_after)
         );
     }
     let curves: Vec<(String, Vec<(f64, f64)>)> = runs
