@@ -113,8 +113,9 @@ impl Level {
         time_step: 2.0e-5,
         ..Level::HALF
     };
-    /// Sensitivity: springs 16 times softer (E = 1e7 Pa, Δt = 4e-5 s, the base before
-    /// 2026-12-02), first half period.
+    /// Sensitivity: springs 16 times softer (E = 1e7 Pa, Δt = 4e-5 s), first half period.
+    /// Its saved run, `measured/softer.bin`, is the whole period it ran as the base before
+    /// 2026-12-02.
     pub const SOFTER: Level = Level {
         name: "softer",
         young_modulus: 1.0e7,
@@ -598,8 +599,9 @@ mod tests {
     }
 
     /// The sensitivity report from saved runs (`output/`, or else `measured/`): `full` (or
-    /// `half`) as the base, `coarse_grid`, `soft` and `softer` as far as they got, compared over their
-    /// common time span: `cargo test --release --lib sheet_flow::tests::sensitivity_saved -- --ignored --nocapture`.
+    /// `half`) as the base, `coarse_grid`, `soft` and `softer` as far as they got, compared
+    /// over their common time span:
+    /// `cargo test --release --lib sheet_flow::tests::sensitivity_saved -- --ignored --nocapture`.
     #[test]
     #[ignore = "needs saved runs"]
     fn sensitivity_saved() {
