@@ -75,6 +75,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
+use crate::dem::par::MIN_SPHERES_PER_TASK;
 use crate::dem::spheres::Spheres;
 use crate::fluid::{Boundaries, Fluid, StaggeredGrid};
 pub use drag::DragLaw;
@@ -140,9 +141,9 @@ pub struct Coupling {
     /// (Σ_i w_i, Σ_i w_i (v_i + ω_i × r)_a) on the faces of each component (correction [62]).
     /// Paired, so that a sum over a sphere's faces touches one cache line per face.
     weight: [Vec<[f64; 2]>; 3],
-    /// (Σ_i w_i, f_a of [59]) on the faces that spheres or the obstacle cover, from the
-    /// provisional flow of the step (`resolved::FlowView::face_loads`).
-    face_loads: [Vec<[f64; 2]>; 3],
+    /// The face loads g_a = ΔV f_a / Σ_i w_i [N] of [59] on the faces that spheres or the
+    /// obstacle cover, from the provisional flow of the step (`resolved::FlowView::face_loads`).
+    face_loads: [Vec<f64>; 3],
     /// (Σ_i φ_ic, Σ_i φ_ic ρ_i) at the cells ([53]).
     cell_phi: Vec<[f64; 2]>,
     /// A fixed solid given by its cell fractions (padded), or empty.
@@ -195,7 +196,7 @@ impl Coupling {
             phi: Vec::new(),
             phi_of: (Vec::new(), Vec::new(), None),
             weight: std::array::from_fn(|_| vec![[0.0; 2]; grid.len()]),
-            face_loads: std::array::from_fn(|_| vec![[0.0; 2]; grid.len()]),
+            face_loads: std::array::from_fn(|_| field()),
             cell_phi: vec![[0.0; 2]; grid.len()],
             obstacle: Vec::new(),
             slabs: Slabs::default(),
@@ -343,6 +344,7 @@ impl Coupling {
             .zip(s.force.par_iter_mut())
             .zip(s.torque.par_iter_mut())
             .enumerate()
+            .with_min_len(MIN_SPHERES_PER_TASK)
             .for_each(|(i, ((load, f), t))| {
                 let mut total = load.force;
                 if load.unresolved {
@@ -460,19 +462,24 @@ impl Coupling {
         );
         let rho_w = self.rho_w;
         let rho = fluid.mixture_density_mut();
-        for k in 0..grid.n[2] {
-            for j in 0..grid.n[1] {
-                for i in 0..grid.n[0] {
-                    let c = grid.cell(i, j, k);
-                    let [phi, phi_rho] = self.cell_phi[c];
-                    rho[c] = if phi <= 1.0 {
-                        rho_w * (1.0 - phi) + phi_rho
-                    } else {
-                        phi_rho / phi
-                    };
+        // By storage planes in parallel, interior cells only (the ghosts are filled after).
+        rho.par_chunks_mut(plane)
+            .zip(self.cell_phi.par_chunks(plane))
+            .enumerate()
+            .filter(|(kk, _)| (1..=grid.n[2]).contains(kk))
+            .for_each(|(kk, (rho, cell_phi))| {
+                for j in 0..grid.n[1] {
+                    for i in 0..grid.n[0] {
+                        let c = grid.cell(i, j, kk - 1) - kk * plane;
+                        let [phi, phi_rho] = cell_phi[c];
+                        rho[c] = if phi <= 1.0 {
+                            rho_w * (1.0 - phi) + phi_rho
+                        } else {
+                            phi_rho / phi
+                        };
+                    }
                 }
-            }
-        }
+            });
         fluid.fill_ghosts();
     }
 

@@ -13,7 +13,9 @@
 //! ```
 //!
 //! s_i is sphere i's share of the solid on the face (1 for a lone sphere; the source writes
-//! φ, see [`super`] for why the share).
+//! φ, see [`super`] for why the share). The sums are taken as Σ_c w_i(c) g_a(c) with the
+//! face load g_a(c) = ΔV f_a(c) / Σ_j w_j(c) [N], evaluated once per face
+//! ([`FlowView::face_loads`]): the per-sphere sums then read one number per face.
 //!
 //! evaluated with the provisional flow n+1* (velocity and pressure after the projection of
 //! the fluid step, μ_SGS of that step). ΔV = Δx Δy Δz [m³]; x_c the face centre, unwrapped
@@ -221,13 +223,14 @@ impl<'a> FlowView<'a> {
         f
     }
 
-    /// (Σ_j w_j, f_a) into `out[a][c]` on every face with Σ_j w_j = `total[a][c][0]` > 0, the
-    /// faces [59] reads (other entries are left as they were). Each face is evaluated once,
-    /// however many spheres share it, in parallel by z-planes (each writing its own plane: the
-    /// same bits on any number of threads). The pair sits in one cache line: the sums over a
-    /// sphere's faces wait on memory, not on arithmetic.
-    pub fn face_loads(&self, total: &[Vec<[f64; 2]>; 3], out: &mut [Vec<[f64; 2]>; 3]) {
+    /// The face load g_a(c) = ΔV f_a(c) / Σ_j w_j [N] into `out[a][c]` on every face with
+    /// Σ_j w_j = `total[a][c][0]` > 0, the faces [59] reads (other entries are left as they
+    /// were). Each face is evaluated once, however many spheres share it, in parallel by
+    /// z-planes (each writing its own plane: the same bits on any number of threads). One
+    /// number a face: the sums over a sphere's faces wait on memory, not on arithmetic.
+    pub fn face_loads(&self, total: &[Vec<[f64; 2]>; 3], out: &mut [Vec<f64>; 3]) {
         let plane = self.grid.strides()[2];
+        let volume = self.grid.cell_volume();
         for (a, (w, f)) in total.iter().zip(out.iter_mut()).enumerate() {
             f.par_chunks_mut(plane)
                 .zip(w.par_chunks(plane))
@@ -235,7 +238,7 @@ impl<'a> FlowView<'a> {
                 .for_each(|(k, (f, w))| {
                     for (q, (f, &[w, _])) in f.iter_mut().zip(w).enumerate() {
                         if w > 0.0 {
-                            *f = [w, self.force_density(a, k * plane + q)];
+                            *f = volume * self.force_density(a, k * plane + q) / w;
                         }
                     }
                 });
@@ -244,8 +247,8 @@ impl<'a> FlowView<'a> {
 }
 
 /// Force [N] and torque about `x` [N m] on the sphere centred at `x` [59] [61], with box
-/// `cells`, fractions `phi` (B³, B = `b`), and `loads` the pairs (Σ_j w_j, f_a) of
-/// [`FlowView::face_loads`] on the faces.
+/// `cells`, fractions `phi` (B³, B = `b`), and `loads` the face loads g_a of
+/// [`FlowView::face_loads`]: F_a = Σ_c w(c) g_a(c).
 pub fn sphere_force(
     grid: &StaggeredGrid,
     bcs: &Boundaries,
@@ -253,15 +256,12 @@ pub fn sphere_force(
     b: usize,
     phi: &[f64],
     x: DVec3,
-    loads: &[Vec<[f64; 2]>; 3],
+    loads: &[Vec<f64>; 3],
 ) -> (DVec3, DVec3) {
-    let volume = grid.cell_volume();
     let (mut force, mut torque) = (DVec3::ZERO, DVec3::ZERO);
     for_each_face(grid, bcs, cells, b, phi, |a, c, w, x_face| {
-        let [total, density] = loads[a][c];
-        let w = w / total.max(w);
         let mut f = DVec3::ZERO;
-        f[a] = w * volume * density;
+        f[a] = w * loads[a][c];
         force += f;
         torque += (x_face - x).cross(f);
     });
@@ -269,19 +269,16 @@ pub fn sphere_force(
 }
 
 /// Force [N] on a fixed solid given by its cell fractions [59], each face counted with the
-/// solid's share w / Σ_j w_j of it (`loads` the pairs (Σ_j w_j, f_a) on the faces).
+/// solid's share w / Σ_j w_j of it (`loads` the face loads g_a = ΔV f_a / Σ_j w_j).
 pub fn obstacle_force(
     grid: &StaggeredGrid,
     bcs: &Boundaries,
     phi: &[f64],
-    loads: &[Vec<[f64; 2]>; 3],
+    loads: &[Vec<f64>; 3],
 ) -> DVec3 {
-    let volume = grid.cell_volume();
     let mut force = DVec3::ZERO;
     obstacle_faces(grid, bcs, phi, |a, c, w| {
-        let [total, density] = loads[a][c];
-        let share = w / total.max(w);
-        force[a] += share * volume * density;
+        force[a] += w * loads[a][c];
     });
     force
 }

@@ -21,7 +21,7 @@ use rayon::prelude::*;
 
 use super::contact::{contact_force, hertz_mindlin, hooke, Pair, Reaction};
 use super::material::{LawKind, PairLaw};
-use super::par::for_chunks;
+use super::par::{for_chunks, MIN_SPHERES_PER_TASK};
 use super::spheres::Spheres;
 use super::wall_contacts::{WallEntry, CHUNK};
 use super::walls::{match_history, Hits, WALL_SLOTS};
@@ -45,6 +45,7 @@ pub fn start_forces(s: &mut Spheres, gravity: Vec3) {
         .par_iter_mut()
         .zip(s.torque.par_iter_mut())
         .enumerate()
+        .with_min_len(MIN_SPHERES_PER_TASK)
         .for_each(|(i, (f, t))| {
             *f = if fixed[i] {
                 Vec3::ZERO

@@ -11,7 +11,7 @@
 use rayon::prelude::*;
 
 use super::domain::Domain;
-use super::par::for_chunks;
+use super::par::{for_chunks, MIN_SPHERES_PER_TASK};
 use super::spheres::Spheres;
 use crate::math::{is_finite, Vec3};
 
@@ -22,6 +22,7 @@ pub fn half_kick(s: &mut Spheres, dt: f64) {
         .par_iter_mut()
         .zip(s.angular_velocity.par_iter_mut())
         .enumerate()
+        .with_min_len(MIN_SPHERES_PER_TASK)
         .for_each(|(i, (v, w))| {
             if !s.fixed[i] {
                 *v += h / s.mass[i] * s.force[i];
@@ -36,6 +37,7 @@ pub fn drift(s: &mut Spheres, dt: f64) {
         .par_iter_mut()
         .zip(s.velocity.par_iter())
         .zip(s.fixed.par_iter())
+        .with_min_len(MIN_SPHERES_PER_TASK)
         .for_each(|((x, v), &fixed)| {
             if !fixed {
                 *x += dt * *v;

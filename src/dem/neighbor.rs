@@ -17,6 +17,7 @@
 use rayon::prelude::*;
 
 use super::domain::Domain;
+use super::par::MIN_SPHERES_PER_TASK;
 use super::spheres::{PermuteScratch, SphereId, Spheres, NO_BODY};
 use crate::math::Vec3;
 
@@ -275,6 +276,7 @@ impl NeighborList {
             .position
             .par_iter()
             .zip(self.reference.par_iter())
+            .with_min_len(MIN_SPHERES_PER_TASK)
             .any(|(&x, &x0)| domain.minimum_image(x - x0).length_squared() > limit2)
     }
 

@@ -7,6 +7,12 @@
 //! only on the number of chunks, so the order in which `combine` merges the chunks' results does
 //! too.
 
+/// The fewest spheres a worker takes in a cheap per-sphere loop (a kick, a drift, zeroing the
+/// forces): below it a loop runs on one thread, since handing the other half to another
+/// worker costs more than the loop (measured: the DEM sub-steps of case 5's 900 spheres took
+/// longer on 2 threads than on 1 before this bound).
+pub const MIN_SPHERES_PER_TASK: usize = 4096;
+
 /// Something that can be cut in two at an index: a mutable slice, or a tuple of them (cut at
 /// the same index), or `()`.
 pub trait Split: Sized + Send {
