@@ -341,6 +341,10 @@ impl PairContext<'_> {
                         (false, true) => (mass[i], 1.0),
                     };
                     batch.push(i, j, p, d, d2, (ri, rad[j]), (m_num, m_den));
+                    // Stage 3 reads this contact's history and the partner's velocities
+                    // when the batch is full: ask for them now (the history, one of the
+                    // largest arrays, missed the cache in 17 % of B2's pair loop).
+                    prefetch(&hist[p]);
                     if batch.len == BATCH {
                         self.batch::<K>(&mut batch, &mut own, out, hist, touch, &mut tally);
                     }
@@ -425,6 +429,19 @@ impl PairContext<'_> {
             }
         }
     }
+}
+
+/// Asks the processor to bring `x` into the cache; changes nothing else.
+#[inline(always)]
+fn prefetch<T>(x: &T) {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: a prefetch reads nothing the program sees and cannot fault; `x` is valid anyway.
+    unsafe {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        _mm_prefetch::<_MM_HINT_T0>((x as *const T).cast::<i8>());
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = x;
 }
 
 /// Contacts per batch of the pair loop: enough for the processor to overlap many contacts'
