@@ -20,8 +20,8 @@
 //! Threads: the parallel loops run on rayon's global pool, and their results do not depend on
 //! its size. Drive a simulation from a thread of that pool, as the `riprap` binary does
 //! (`rayon::scope(|_| ...)` around the run): a parallel loop started from any other thread
-//! hands its work over and sleeps until it is done, a trip through the kernel per loop, which
-//! costs a coupled run with short DEM sub-steps about a fifth of its time.
+//! hands its work over and sleeps until it is done, a trip through the kernel per loop (case 5
+//! of the coupling on 1 thread: 116 ms per fluid step that way, 68 ms from a pool thread).
 
 #![warn(missing_docs)]
 
