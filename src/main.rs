@@ -52,9 +52,8 @@ enum Command {
         /// Output folder for the report.
         #[arg(long, default_value = "output/validation")]
         output: PathBuf,
-        /// Only this case: cavity, channel, sphere_drag, cylinder_strouhal, block_settling,
-        /// hopper_cloud, sheet_flow, or sheet_flow_sensitivity (only on request).
-        #[arg(long)]
+        /// Only this case (sheet_flow_sensitivity runs only when named).
+        #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(riprap::validate::CASES))]
         only: Option<String>,
     },
     /// Validate a scenario and print the derived quantities (contact time, time step, ...).

@@ -341,9 +341,9 @@ impl PairContext<'_> {
                         (false, true) => (mass[i], 1.0),
                     };
                     batch.push(i, j, p, d, d2, (ri, rad[j]), (m_num, m_den));
-                    // Stage 3 reads this contact's history and the partner's velocities
-                    // when the batch is full: ask for them now (the history, one of the
-                    // largest arrays, missed the cache in 17 % of B2's pair loop).
+                    // Stage 3 reads this contact's history when the batch is full: ask for
+                    // it now (the history, one of the largest arrays, missed the cache in
+                    // 17 % of B2's pair loop).
                     prefetch(&hist[p]);
                     if batch.len == BATCH {
                         self.batch::<K>(&mut batch, &mut own, out, hist, touch, &mut tally);
