@@ -19,7 +19,8 @@
 
 use rayon::prelude::*;
 
-use super::contact::{contact_force, hertz_mindlin, hooke, Pair, Reaction};
+use super::contact::lanes::{self, Lanes};
+use super::contact::{contact_force, hertz_mindlin, Pair};
 use super::material::{LawKind, PairLaw};
 use super::par::{for_chunks, MIN_SPHERES_PER_TASK};
 use super::spheres::Spheres;
@@ -315,8 +316,9 @@ impl PairContext<'_> {
         let im = self.domain.images();
         let n = self.pos.len();
         let (pos, rad) = (self.pos, &self.rad[..n]);
-        let (mass, fixed) = (&self.mass[..n], &self.fixed[..n]);
         let mut batch = Batch::default();
+        // The batch's length, held apart so that it stays in a register in the filter.
+        let mut len = 0;
         let mut own = Owner {
             i: usize::MAX,
             f: Vec3::ZERO,
@@ -332,28 +334,25 @@ impl PairContext<'_> {
                     d = im.nearest(d);
                 }
                 let r_sum = ri + rad[j];
-                let d2 = d.length_squared();
-                if d2 < r_sum * r_sum {
-                    // m* = m_num / m_den; a fixed sphere counts as infinitely heavy.
-                    let (m_num, m_den) = match (fixed[i], fixed[j]) {
-                        (false, false) => (mass[i] * mass[j], mass[i] + mass[j]),
-                        (true, _) => (mass[j], 1.0),
-                        (false, true) => (mass[i], 1.0),
-                    };
-                    batch.push(i, j, p, d, d2, (ri, rad[j]), (m_num, m_den));
-                    // Stage 3 reads this contact's history when the batch is full: ask for
-                    // it now (the history, one of the largest arrays, missed the cache in
-                    // 17 % of B2's pair loop).
-                    prefetch(&hist[p]);
-                    if batch.len == BATCH {
-                        self.batch::<K>(&mut batch, &mut own, out, hist, touch, &mut tally);
-                    }
-                } else {
-                    touch[p] = 0;
+                // Every candidate is written to the batch's next place, which only a close
+                // one keeps: no branch on the distance, which the processor could not
+                // predict (contacts and near misses are interleaved).
+                let close = d.length_squared() < r_sum * r_sum;
+                len = batch.offer(len, i, j, p, touch[p], close);
+                touch[p] = 0;
+                // Stage 3 reads this contact's history when the batch is full: ask for it
+                // now (the history, one of the largest arrays, missed the cache in 17 % of
+                // B2's pair loop).
+                prefetch(&hist[p]);
+                if len == BATCH {
+                    batch.len = len;
+                    self.batch::<PERIODIC, K>(&mut batch, &mut own, out, hist, touch, &mut tally);
+                    len = 0;
                 }
             }
         }
-        self.batch::<K>(&mut batch, &mut own, out, hist, touch, &mut tally);
+        batch.len = len;
+        self.batch::<PERIODIC, K>(&mut batch, &mut own, out, hist, touch, &mut tally);
         if own.i != usize::MAX {
             out.add(own.i, own.f, own.t);
         }
@@ -363,7 +362,7 @@ impl PairContext<'_> {
     /// Stages 2 and 3 of `run_with` for the contacts in `batch`, which it empties; `own` holds
     /// the sums of the owner whose contacts are under way.
     #[inline(always)]
-    fn batch<K: Kernel>(
+    fn batch<const PERIODIC: bool, K: Kernel>(
         &self,
         b: &mut Batch,
         own: &mut Owner,
@@ -372,20 +371,77 @@ impl PairContext<'_> {
         touch: &mut [u8],
         tally: &mut Tally,
     ) {
-        let len = b.len;
+        let len = b.len.min(BATCH);
         b.len = 0;
         // Columns cut to one length n, so that a single test j < n covers every access below.
         let n = self.pos.len();
-        let (rad, vel, ang) = (&self.rad[..n], &self.vel[..n], &self.ang[..n]);
-        let material = &self.material[..n];
+        let (pos, rad, vel, ang) = (
+            &self.pos[..n],
+            &self.rad[..n],
+            &self.vel[..n],
+            &self.ang[..n],
+        );
+        let (mass, fixed, material) = (&self.mass[..n], &self.fixed[..n], &self.material[..n]);
+        // Stage 2a: gather the close pairs' separations, radii and masses.
+        let im = self.domain.images();
+        let l = &mut b.lanes;
+        for k in 0..len {
+            let (i, j) = (b.i[k] as usize, b.j[k] as usize);
+            assert!(i < n && j < n);
+            let mut d = pos[j] - pos[i];
+            if PERIODIC {
+                d = im.nearest(d);
+            }
+            (l.n[0][k], l.n[1][k], l.n[2][k]) = (d.x, d.y, d.z);
+            b.d2[k] = d.length_squared();
+            (l.r_i[k], l.r_j[k]) = (rad[i], rad[j]);
+            // m* = m_num / m_den; a fixed sphere counts as infinitely heavy.
+            (b.m_num[k], b.m_den[k]) = match (fixed[i], fixed[j]) {
+                (false, false) => (mass[i] * mass[j], mass[i] + mass[j]),
+                (true, _) => (mass[j], 1.0),
+                (false, true) => (mass[i], 1.0),
+            };
+        }
         geometry::<K>(b, len);
-        // Stage 3: forces, in pair order.
+        // Stage 3a: gather each contact's state and history into the lanes.
+        let l = &mut b.lanes;
         for k in 0..len {
             let (i, j, p) = (b.i[k] as usize, b.j[k] as usize, b.p[k] as usize);
             assert!(i < n && j < n);
-            let flags = touch[p];
+            let h = if b.touched[k] & 1 == 0 {
+                Vec3::ZERO
+            } else {
+                hist[p]
+            };
+            let law = material[i] as usize * self.n_mat + material[j] as usize;
+            for (c, (dv, (wi, (wj, hc)))) in
+                l.dv.iter_mut()
+                    .zip(
+                        l.w_i
+                            .iter_mut()
+                            .zip(l.w_j.iter_mut().zip(l.hist.iter_mut())),
+                    )
+                    .enumerate()
+            {
+                dv[k] = vel[i][c] - vel[j][c];
+                wi[k] = ang[i][c];
+                wj[k] = ang[j][c];
+                hc[k] = h[c];
+            }
+            l.law[k] = law as u32;
+            for (c, v) in K::params(&self.laws[law]).into_iter().enumerate() {
+                l.params[c][k] = v;
+            }
+        }
+        // Stage 3b: the law, on all lanes at once.
+        K::lanes(l, self.laws, len, self.dt);
+        // Stage 3c: the scatter, in pair order.
+        let l = &b.lanes;
+        let at = |v: &lanes::VecColumn, k: usize| Vec3::new(v[0][k], v[1][k], v[2][k]);
+        for k in 0..len {
+            let (i, j, p) = (b.i[k] as usize, b.j[k] as usize, b.p[k] as usize);
+            let delta = l.delta[k];
             touch[p] = 0;
-            let delta = b.delta[k];
             if delta <= 0.0 || b.d2[k] == 0.0 {
                 continue;
             }
@@ -399,31 +455,15 @@ impl PairContext<'_> {
                     t: Vec3::ZERO,
                 };
             }
-            let (ri, rj) = (rad[i], rad[j]);
-            let pair = Pair {
-                n: b.d[k] * b.inv_dist[k],
-                delta,
-                dv: vel[i] - vel[j],
-                w_i: ang[i],
-                w_j: ang[j],
-                r_i: ri,
-                r_j: rj,
-                r_star: b.r_star[k],
-                m_star: b.m_star[k],
-            };
-            let h = &mut hist[p];
-            if flags & 1 == 0 {
-                *h = Vec3::ZERO;
-            }
-            let law = &self.laws[material[i] as usize * self.n_mat + material[j] as usize];
-            let r = K::force(law, &pair, [b.root_a[k], b.root_b[k]], h, self.dt);
+            hist[p] = at(&l.hist, k);
             touch[p] = 1;
-            own.f += r.force;
-            own.t += r.torque_i;
-            out.add(j, -r.force, r.torque_j);
+            let force = at(&l.force, k);
+            own.f += force;
+            own.t += at(&l.torque_i, k);
+            out.add(j, -force, at(&l.torque_j, k));
             tally.contacts += 1;
             // Overlap ratio δ / min(r_i, r_j), divided out only when it may be the largest.
-            let r_min = ri.min(rj);
+            let r_min = l.r_i[k].min(l.r_j[k]);
             if delta >= tally.worst.0 * r_min {
                 tally.worst = larger(tally.worst, (delta / r_min, i));
             }
@@ -444,34 +484,26 @@ fn prefetch<T>(x: &T) {
     let _ = x;
 }
 
-/// Contacts per batch of the pair loop: enough for the processor to overlap many contacts'
-/// square roots, few enough to stay in the L1 cache.
-const BATCH: usize = 64;
+/// Contacts per batch of the pair loop (`lanes::LANES`).
+const BATCH: usize = lanes::LANES;
 
-/// The close pairs waiting for stages 2 and 3 of the pair loop, as columns (so that stage 2
-/// runs on several contacts per instruction).
+/// The close pairs waiting for stages 2 and 3 of the pair loop, as columns (so that stages 2
+/// and 3b run on several contacts per instruction).
 struct Batch {
     len: usize,
     /// Owner i, partner j, pair index p (from the task's first pair).
     i: [u32; BATCH],
     j: [u32; BATCH],
     p: [u32; BATCH],
-    /// Separation d = x_j - x_i [m] and |d|² [m²].
-    d: [Vec3; BATCH],
+    /// The pair's touch flag before this evaluation.
+    touched: [u8; BATCH],
+    /// |x_j - x_i|² [m²].
     d2: [f64; BATCH],
-    /// Radii r_i, r_j [m].
-    r_i: [f64; BATCH],
-    r_j: [f64; BATCH],
     /// m* = m_num / m_den [kg] (m_i m_j / (m_i + m_j), or the free sphere's mass over 1).
     m_num: [f64; BATCH],
     m_den: [f64; BATCH],
-    /// Stage 2: 1/|d| [m⁻¹], δ [m], R* [m], m* [kg], the law's square roots.
-    inv_dist: [f64; BATCH],
-    delta: [f64; BATCH],
-    r_star: [f64; BATCH],
-    m_star: [f64; BATCH],
-    root_a: [f64; BATCH],
-    root_b: [f64; BATCH],
+    /// The contacts as the law sees them (`lanes.n` holds x_j - x_i until stage 2).
+    lanes: Lanes,
 }
 
 impl Default for Batch {
@@ -482,53 +514,33 @@ impl Default for Batch {
             i: [0; BATCH],
             j: [0; BATCH],
             p: [0; BATCH],
-            d: [Vec3::ONE; BATCH],
+            touched: [0; BATCH],
             d2: one,
-            r_i: one,
-            r_j: one,
             m_num: one,
             m_den: one,
-            inv_dist: one,
-            delta: one,
-            r_star: one,
-            m_star: one,
-            root_a: one,
-            root_b: one,
+            lanes: Lanes::default(),
         }
     }
 }
 
 impl Batch {
-    #[allow(clippy::too_many_arguments)]
+    /// Writes the candidate (i, j) (pair index p, touch flag `touched`) to place k < `BATCH`
+    /// and returns the length of the batch: k + 1 if `close` (the batch keeps it), else k.
     #[inline(always)]
-    fn push(
-        &mut self,
-        i: usize,
-        j: usize,
-        p: usize,
-        d: Vec3,
-        d2: f64,
-        (r_i, r_j): (f64, f64),
-        (m_num, m_den): (f64, f64),
-    ) {
-        let k = self.len;
+    fn offer(&mut self, k: usize, i: usize, j: usize, p: usize, touched: u8, close: bool) -> usize {
+        let k = k.min(BATCH - 1);
         self.i[k] = i as u32;
         self.j[k] = j as u32;
         self.p[k] = p as u32;
-        self.d[k] = d;
-        self.d2[k] = d2;
-        self.r_i[k] = r_i;
-        self.r_j[k] = r_j;
-        self.m_num[k] = m_num;
-        self.m_den[k] = m_den;
-        self.len = k + 1;
+        self.touched[k] = touched;
+        k + usize::from(close)
     }
 }
 
 /// Stage 2 of the pair loop for the first `len` contacts of `b`:
 ///
-/// |d| = √(d²), δ = r_i + r_j - |d|, R* = r_i r_j / (r_i + r_j), m* = m_num / m_den,
-/// and the law's square roots (`Kernel::roots`, from δ clamped at 0).
+/// |d| = √(d²), n = d / |d|, δ = r_i + r_j - |d|, R* = r_i r_j / (r_i + r_j),
+/// m* = m_num / m_den, and the law's square roots (`Kernel::roots`, from δ clamped at 0).
 ///
 /// The contacts are independent: the loop runs on whole vectors of them (two per SSE2
 /// instruction, four with AVX, chosen at run time; the results are the same to the bit, as
@@ -555,11 +567,13 @@ fn geometry_avx<K: Kernel>(b: &mut Batch, len: usize) {
 #[inline(always)]
 fn geometry_columns<K: Kernel>(b: &mut Batch, len: usize) {
     let len = len.min(BATCH);
-    let (d2, r_i, r_j) = (&b.d2[..len], &b.r_i[..len], &b.r_j[..len]);
-    let (m_num, m_den) = (&b.m_num[..len], &b.m_den[..len]);
-    let (inv_dist, delta) = (&mut b.inv_dist[..len], &mut b.delta[..len]);
-    let (r_star, m_star) = (&mut b.r_star[..len], &mut b.m_star[..len]);
-    let (root_a, root_b) = (&mut b.root_a[..len], &mut b.root_b[..len]);
+    let (d2, m_num, m_den) = (&b.d2[..len], &b.m_num[..len], &b.m_den[..len]);
+    let l = &mut b.lanes;
+    let [nx, ny, nz] = &mut l.n;
+    let (nx, ny, nz) = (&mut nx[..len], &mut ny[..len], &mut nz[..len]);
+    let (r_i, r_j, delta) = (&l.r_i[..len], &l.r_j[..len], &mut l.delta[..len]);
+    let (r_star, m_star) = (&mut l.r_star[..len], &mut l.m_star[..len]);
+    let (root_a, root_b) = (&mut l.root_a[..len], &mut l.root_b[..len]);
     for k in 0..len {
         let dist = d2[k].sqrt();
         let r_sum = r_i[k] + r_j[k];
@@ -567,7 +581,10 @@ fn geometry_columns<K: Kernel>(b: &mut Batch, len: usize) {
         let rs = r_i[k] * r_j[k] / r_sum;
         let ms = m_num[k] / m_den[k];
         let [ra, rb] = K::roots(rs, ms, dl.max(0.0));
-        inv_dist[k] = 1.0 / dist;
+        let inv_dist = 1.0 / dist;
+        nx[k] *= inv_dist;
+        ny[k] *= inv_dist;
+        nz[k] *= inv_dist;
         delta[k] = dl;
         r_star[k] = rs;
         m_star[k] = ms;
@@ -587,8 +604,11 @@ struct Owner {
 trait Kernel {
     /// The square roots the law takes per contact, from R*, m* and δ ≥ 0 (zeros if none).
     fn roots(r_star: f64, m_star: f64, delta: f64) -> [f64; 2];
-    /// The reaction of one contact (as `contact::contact_force`), given its `roots`.
-    fn force(law: &PairLaw, p: &Pair, roots: [f64; 2], hist: &mut Vec3, dt: f64) -> Reaction;
+    /// The law's constants for one material pair, as `Lanes::params` holds them.
+    fn params(law: &PairLaw) -> [f64; 5];
+    /// The reactions and updated histories of the first `len` lanes (as
+    /// `contact::contact_force`), given their `roots` and `params`.
+    fn lanes(l: &mut Lanes, laws: &[PairLaw], len: usize, dt: f64);
 }
 
 /// Any law, dispatched per pair.
@@ -605,8 +625,36 @@ impl Kernel for AnyLaw {
     }
 
     #[inline(always)]
-    fn force(law: &PairLaw, p: &Pair, _: [f64; 2], hist: &mut Vec3, dt: f64) -> Reaction {
-        contact_force(law, p, hist, dt)
+    fn params(_: &PairLaw) -> [f64; 5] {
+        [0.0; 5]
+    }
+
+    /// One contact at a time, through `contact_force`.
+    #[inline(always)]
+    fn lanes(l: &mut Lanes, laws: &[PairLaw], len: usize, dt: f64) {
+        let at = |v: &lanes::VecColumn, k: usize| Vec3::new(v[0][k], v[1][k], v[2][k]);
+        let put = |v: &mut lanes::VecColumn, k: usize, x: Vec3| {
+            (v[0][k], v[1][k], v[2][k]) = (x.x, x.y, x.z);
+        };
+        for k in 0..len.min(lanes::LANES) {
+            let pair = Pair {
+                n: at(&l.n, k),
+                delta: l.delta[k],
+                dv: at(&l.dv, k),
+                w_i: at(&l.w_i, k),
+                w_j: at(&l.w_j, k),
+                r_i: l.r_i[k],
+                r_j: l.r_j[k],
+                r_star: l.r_star[k],
+                m_star: l.m_star[k],
+            };
+            let mut h = at(&l.hist, k);
+            let r = contact_force(&laws[l.law[k] as usize], &pair, &mut h, dt);
+            put(&mut l.hist, k, h);
+            put(&mut l.force, k, r.force);
+            put(&mut l.torque_i, k, r.torque_i);
+            put(&mut l.torque_j, k, r.torque_j);
+        }
     }
 }
 
@@ -617,8 +665,13 @@ impl Kernel for HertzMindlin {
     }
 
     #[inline(always)]
-    fn force(law: &PairLaw, p: &Pair, [a, root]: [f64; 2], hist: &mut Vec3, dt: f64) -> Reaction {
-        hertz_mindlin::force_with_roots(law, p, a, root, hist, dt)
+    fn params(law: &PairLaw) -> [f64; 5] {
+        lanes::hertz_mindlin_params(law)
+    }
+
+    #[inline(always)]
+    fn lanes(l: &mut Lanes, _: &[PairLaw], _: usize, dt: f64) {
+        lanes::hertz_mindlin(l, dt);
     }
 }
 
@@ -629,8 +682,13 @@ impl Kernel for Hooke {
     }
 
     #[inline(always)]
-    fn force(law: &PairLaw, p: &Pair, _: [f64; 2], hist: &mut Vec3, dt: f64) -> Reaction {
-        hooke::force(law, p, hist, dt)
+    fn params(law: &PairLaw) -> [f64; 5] {
+        lanes::hooke_params(law)
+    }
+
+    #[inline(always)]
+    fn lanes(l: &mut Lanes, _: &[PairLaw], _: usize, dt: f64) {
+        lanes::hooke(l, dt);
     }
 }
 

@@ -10,6 +10,7 @@
 pub mod damping;
 pub mod hertz_mindlin;
 pub mod hooke;
+pub mod lanes;
 pub mod voigt;
 
 #[cfg(test)]
