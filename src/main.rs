@@ -112,6 +112,7 @@ fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
     }
     println!("spheres: {}", r.n);
     print_loop_summary(r.n, r.steps, r.loop_seconds, 2, r.rebuilds, threads);
+    println!("time split: {}", r.split);
     Ok(())
 }
 
@@ -165,6 +166,7 @@ fn bench_b2(data: &std::path::Path, steps: u64, every: u64) -> anyhow::Result<()
     }
     let n = sim.dem.spheres.len();
     print_loop_summary(n, steps, r.loop_seconds, 3, r.rebuilds, threads);
+    println!("time split: {}", r.split);
     Ok(())
 }
 

@@ -40,6 +40,8 @@ use crate::dem::Dem;
 use crate::fluid::Fluid;
 use crate::math::{is_finite, Vec3};
 use crate::rigid::bodies::RigidBodies;
+use std::time::Instant;
+use timing::lap;
 
 /// Why a run stopped before its end.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -76,6 +78,8 @@ pub struct Simulation {
     pub coupling: Option<Coupling>,
     /// Wall-clock time per phase of the fluid steps taken (not state: never saved).
     pub times: timing::PhaseTimes,
+    /// Wall-clock time per phase of the DEM steps taken (not state: never saved).
+    pub dem_times: timing::DemTimes,
     /// Largest |∇·u| of the projected flow of the last coupled fluid step, before the
     /// correction [62] blends in the spheres' velocities [s⁻¹] (not state: never saved).
     pub projected_divergence: f64,
@@ -122,6 +126,7 @@ impl Simulation {
             fluid: None,
             coupling: None,
             times: Default::default(),
+            dem_times: Default::default(),
             projected_divergence: 0.0,
         };
         sim.dem.rebuild_lists(sim.time);
@@ -159,6 +164,7 @@ impl Simulation {
             fluid: None,
             coupling: None,
             times: Default::default(),
+            dem_times: Default::default(),
             projected_divergence: 0.0,
         }
     }
@@ -171,6 +177,7 @@ impl Simulation {
 
     /// One DEM step Δt, phases 1-8 above (the caller counts `self.step`).
     fn dem_step(&mut self) -> Result<(), Instability> {
+        let clock = Instant::now();
         let dt = self.dem.dt;
         let d = &mut self.dem;
         // Blocks and links need the half kick on its own: the members of each block get their
@@ -190,6 +197,7 @@ impl Simulation {
             0.5 * d.neighbors.skin,
             d.limits.max_speed,
         );
+        let clock = lap(clock, &mut self.dem_times.opening);
         let t_new = self.time + dt;
         let mut changed = opening.outside > 0 && self.remove_outside();
         for f in &mut self.feeders {
@@ -208,6 +216,7 @@ impl Simulation {
         if changed || opening.moved || self.dem.walls_moved(self.time) {
             self.dem.rebuild_lists(self.time);
         }
+        let clock = lap(clock, &mut self.dem_times.lists);
         let kick = Kick {
             half_dt: 0.5 * dt,
             max_speed: self.dem.limits.max_speed,
@@ -215,6 +224,7 @@ impl Simulation {
         if !linked && self.coupling.is_none() {
             // The closing half kick is fused into the force pass.
             let bad = compute_forces(&mut self.dem, self.time, Some(kick), true);
+            lap(clock, &mut self.dem_times.forces);
             return self.check(bad);
         }
         compute_forces(&mut self.dem, self.time, None, true);
@@ -225,6 +235,7 @@ impl Simulation {
             self.rigid.recover(&mut d.spheres, &d.domain, dt);
         }
         let bad = first_unstable(&d.spheres, kick.max_speed);
+        lap(clock, &mut self.dem_times.forces);
         self.check(bad)
     }
 

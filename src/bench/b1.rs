@@ -130,6 +130,8 @@ pub struct B1Result {
     pub steps: u64,
     /// Neighbour-list builds.
     pub rebuilds: u64,
+    /// Where the loop's time went, by phase of the step.
+    pub split: crate::simulation::timing::DemTimes,
 }
 
 /// Runs B1 for `steps` steps, recording diagnostics every `every` steps.
@@ -159,6 +161,7 @@ pub fn run_b1(
         n: sim.dem.spheres.len(),
         steps,
         rebuilds: sim.dem.neighbors.builds - builds0,
+        split: sim.dem_times,
     })
 }
 

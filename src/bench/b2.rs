@@ -193,6 +193,8 @@ pub struct B2Result {
     pub loop_seconds: f64,
     /// Neighbour-list builds during the loop.
     pub rebuilds: u64,
+    /// Where the loop's time went, by phase of the step.
+    pub split: crate::simulation::timing::DemTimes,
 }
 
 /// Runs `steps` steps of `sim`, recording thermo rows every `every` steps.
@@ -215,5 +217,6 @@ pub fn run_b2(sim: &mut Simulation, steps: u64, every: u64) -> Result<B2Result, 
         rows,
         loop_seconds,
         rebuilds: sim.dem.neighbors.builds - builds0,
+        split: sim.dem_times,
     })
 }

@@ -16,6 +16,28 @@ pub struct PhaseTimes {
     pub correction: f64,
 }
 
+/// Accumulated wall-clock time per phase of the DEM steps [s] (all runs, with or without a
+/// fluid).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct DemTimes {
+    /// Opening: half kick, drift, rebuild test, forces started (phase 1).
+    pub opening: f64,
+    /// Outflow, feeders and, when due, the neighbour, contact-history and wall lists (2-4).
+    pub lists: f64,
+    /// Pairs, walls, closing kick and checks (5-6), with blocks and links.
+    pub forces: f64,
+}
+
+impl std::fmt::Display for DemTimes {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "opening {:.3} s, lists {:.3} s, forces {:.3} s",
+            self.opening, self.lists, self.forces
+        )
+    }
+}
+
 impl PhaseTimes {
     /// Sum of the phases [s].
     pub fn total(&self) -> f64 {
