@@ -317,6 +317,13 @@ impl PairContext<'_> {
         let n = self.pos.len();
         let (pos, rad) = (self.pos, &self.rad[..n]);
         let mut batch = Batch::default();
+        if let ([law], 1) = (self.laws, self.n_mat) {
+            let l = &mut batch.lanes;
+            l.law = [0; BATCH];
+            for (c, v) in K::params(law).into_iter().enumerate() {
+                l.params[c] = [v; BATCH];
+            }
+        }
         // The batch's length, held apart so that it stays in a register in the filter.
         let mut len = 0;
         let mut own = Owner {
@@ -413,7 +420,6 @@ impl PairContext<'_> {
             } else {
                 hist[p]
             };
-            let law = material[i] as usize * self.n_mat + material[j] as usize;
             for (c, (dv, (wi, (wj, hc)))) in
                 l.dv.iter_mut()
                     .zip(
@@ -428,9 +434,13 @@ impl PairContext<'_> {
                 wj[k] = ang[j][c];
                 hc[k] = h[c];
             }
-            l.law[k] = law as u32;
-            for (c, v) in K::params(&self.laws[law]).into_iter().enumerate() {
-                l.params[c][k] = v;
+            // With one material the law's constants were set once for all lanes.
+            if self.n_mat > 1 {
+                let law = material[i] as usize * self.n_mat + material[j] as usize;
+                l.law[k] = law as u32;
+                for (c, v) in K::params(&self.laws[law]).into_iter().enumerate() {
+                    l.params[c][k] = v;
+                }
             }
         }
         // Stage 3b: the law, on all lanes at once.
