@@ -737,7 +737,19 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
         // Walls, for the spheres that have some within reach.
         let mut buf = ContactBuf::new();
         let mut hits = Hits::default();
-        for entry in ents.iter_mut() {
+        for e in 0..ents.len() {
+            // The spheres of the entries are scattered over the slots: ask for the state of
+            // the one four entries ahead while this one is computed (B1 on 1 thread: the wall
+            // part of this pass 9.0 s -> 6.0 s over 6,000 steps).
+            if let Some(ahead) = ents.get(e + 4) {
+                let a = ahead.sphere as usize;
+                prefetch(&position[a]);
+                prefetch(&v[a - i0]);
+                prefetch(&w[a - i0]);
+                prefetch(&f[a - i0]);
+                prefetch(&tq[a - i0]);
+            }
+            let entry = &mut ents[e];
             let i = entry.sphere as usize;
             let k = i - i0;
             hits.clear();

@@ -265,6 +265,22 @@ pub fn match_history(slots: &mut WallSlots, hits: &Hits, out: &mut [Vec3; WALL_S
     if hits.len == 0 && slots[0].wall == u32::MAX {
         return; // Slots fill from the front: no contact now and none before.
     }
+    // The common cases, a sphere on one wall or coming to it, without copying the slots: at
+    // most one contact now and at most one before (in slot 0).
+    if hits.len <= 1 && slots[1].wall == u32::MAX {
+        let o = slots[0];
+        slots[0] = WallContact::EMPTY;
+        if let Some(h) = hits.iter().next() {
+            let same = o.wall == h.wall && o.normal.dot(h.contact.normal) > 0.5;
+            out[0] = if same { o.history } else { Vec3::ZERO };
+            slots[0] = WallContact {
+                wall: h.wall,
+                normal: h.contact.normal,
+                history: out[0],
+            };
+        }
+        return;
+    }
     let old = *slots;
     let mut used = [false; WALL_SLOTS];
     *slots = [WallContact::EMPTY; WALL_SLOTS];
