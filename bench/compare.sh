@@ -28,6 +28,8 @@ set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 INPUTS=${BENCH_INPUTS:-$ROOT/../shared/bench}
 RUN=${RUN_DIR:-$ROOT/runs/compare}
+# Absolute, as the runs start inside it (a relative RUN_DIR used to lose the riprap binary).
+mkdir -p "$RUN" && RUN=$(cd "$RUN" && pwd)
 REPEATS=${REPEATS:-3}
 CASES=${CASES:-"b1-100k b2 b1-1m"}
 B1_N=${B1_N:-100000}

@@ -293,13 +293,14 @@ impl PairContext<'_> {
     /// Three stages, on batches of up to `BATCH` contacts in pair order:
     ///
     /// 1. *Filter*: every candidate (i, j) has its distance tested, |x_j - x_i|² < (r_i + r_j)²;
-    ///    those closer join the batch, the others leave with their touch flag cleared. Most
-    ///    candidates leave here, in a loop small enough to keep everything in registers.
+    ///    those closer join the batch (its touch flag with it), every touch flag is cleared.
+    ///    Most candidates leave here, in a loop small enough to keep everything in registers.
     /// 2. *Geometry*: for the batch, d = |x_j - x_i|, δ = r_i + r_j - d, n = (x_j - x_i)/d,
     ///    R* = r_i r_j/(r_i + r_j), m* = m_i m_j/(m_i + m_j) and the law's square roots
     ///    (`Kernel::roots`). The contacts are independent here, so the processor overlaps their
     ///    square roots and divisions instead of waiting on each chain d → δ → a → √(m* a).
-    /// 3. *Forces*: the law, the history update and the scatter, in pair order: i sums its own
+    /// 3. *Forces*: (a) the velocities and histories gathered into the lanes, (b) the law on
+    ///    all lanes at once (`Kernel::lanes`), (c) the scatter in pair order: i sums its own
     ///    terms and adds them once its last contact is done; j receives −F and T_j at once.
     ///
     /// The order in which each sphere receives its terms is the pair order, as if each pair

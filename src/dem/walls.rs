@@ -281,6 +281,11 @@ pub fn match_history(slots: &mut WallSlots, hits: &Hits, out: &mut [Vec3; WALL_S
         }
         return;
     }
+    match_any(slots, hits, out);
+}
+
+/// `match_history` for any number of contacts.
+fn match_any(slots: &mut WallSlots, hits: &Hits, out: &mut [Vec3; WALL_SLOTS]) {
     let old = *slots;
     let mut used = [false; WALL_SLOTS];
     *slots = [WallContact::EMPTY; WALL_SLOTS];
@@ -308,5 +313,70 @@ pub fn match_history(slots: &mut WallSlots, hits: &Hits, out: &mut [Vec3; WALL_S
             normal: h.contact.normal,
             history: out[k],
         };
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::SurfaceContact;
+
+    fn hit(wall: u32, normal: Vec3) -> WallHit {
+        WallHit {
+            wall,
+            contact: SurfaceContact {
+                point: Vec3::ZERO,
+                normal,
+                overlap: 1e-4,
+                element: 0,
+            },
+            velocity: Vec3::ZERO,
+        }
+    }
+
+    /// The path for one contact gives what the general matching gives, slots and histories,
+    /// for every case it takes: no contact now, a new one, the same wall (normal within and
+    /// beyond 60°), another wall.
+    #[test]
+    fn one_contact_matches_as_the_general_rule() {
+        let old = WallContact {
+            wall: 2,
+            normal: Vec3::Z,
+            history: Vec3::new(1e-6, -2e-6, 0.0),
+        };
+        let tilted = Vec3::new(0.0, 0.6, 0.8);
+        let turned = Vec3::new(0.0, 0.9, 0.1).normalize();
+        let mut cases = Vec::new();
+        for before in [None, Some(old)] {
+            for now in [
+                None,
+                Some(hit(2, tilted)),
+                Some(hit(2, turned)),
+                Some(hit(5, Vec3::Z)),
+            ] {
+                cases.push((before, now));
+            }
+        }
+        let mut inherited = 0;
+        for (before, now) in cases {
+            let mut slots = [WallContact::EMPTY; WALL_SLOTS];
+            if let Some(o) = before {
+                slots[0] = o;
+            }
+            let mut hits = Hits::default();
+            if let Some(h) = now {
+                hits.push(h);
+            }
+            let (mut fast, mut general) = (slots, slots);
+            let (mut out_fast, mut out_general) =
+                ([Vec3::NAN; WALL_SLOTS], [Vec3::NAN; WALL_SLOTS]);
+            match_history(&mut fast, &hits, &mut out_fast);
+            match_any(&mut general, &hits, &mut out_general);
+            assert_eq!(fast, general, "{before:?} {now:?}");
+            assert_eq!(out_fast[..hits.len], out_general[..hits.len]);
+            inherited += usize::from(hits.len == 1 && out_fast[0] == old.history);
+        }
+        // Only the same wall with the normal within 60° inherits.
+        assert_eq!(inherited, 1);
     }
 }
