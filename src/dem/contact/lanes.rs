@@ -189,6 +189,17 @@ pub fn hertz_mindlin_params(law: &PairLaw) -> [f64; 5] {
     [kn_a, kt_a, c_n, c_t, law.friction]
 }
 
+/// Stores lanes 4c..4c + 4 of a law's result: the history ξ, the force on i -F_n n + F_t and
+/// the torques l_i (n × F_t), l_j (n × F_t) with the lever arms (l_i, l_j).
+#[inline(always)]
+fn react(l: &mut Lanes, c: usize, xi: V, (n, f_n, f_t): (V, F, V), (l_i, l_j): (F, F)) {
+    let t = n.cross(f_t);
+    xi.store(&mut l.hist, c);
+    (n.scale(-f_n) + f_t).store(&mut l.force, c);
+    t.scale(l_i).store(&mut l.torque_i, c);
+    t.scale(l_j).store(&mut l.torque_j, c);
+}
+
 /// `hooke::force` on all lanes (LAMMPS `gran/hooke/history`):
 ///
 /// F_n = k_n δ + m* γ_n δ̇;  v_t = (Δv - δ̇ n) + (r_i ω_i + r_j ω_j) × n;
@@ -228,11 +239,7 @@ pub fn hooke(l: &mut Lanes, dt: f64) {
         );
         let xi = V::pick(slides & had_shear, (xi + d).scale(ratio) - d, xi);
 
-        let t = n.cross(f_t);
-        xi.store(&mut l.hist, c);
-        (n.scale(-f_n) + f_t).store(&mut l.force, c);
-        t.scale(r_i).store(&mut l.torque_i, c);
-        t.scale(r_j).store(&mut l.torque_j, c);
+        react(l, c, xi, (n, f_n, f_t), (r_i, r_j));
     }
 }
 
@@ -275,11 +282,7 @@ pub fn hertz_mindlin(l: &mut Lanes, dt: f64) {
         let f_t = V::pick(slides, f_slide, f_spring - v_t.scale(gamma_t));
         let xi = V::pick(slides, f_slide.scale(minus_one / k_t), xi);
 
-        let t = n.cross(f_t);
-        xi.store(&mut l.hist, c);
-        (n.scale(-f_n) + f_t).store(&mut l.force, c);
-        t.scale(c_i).store(&mut l.torque_i, c);
-        t.scale(c_j).store(&mut l.torque_j, c);
+        react(l, c, xi, (n, f_n, f_t), (c_i, c_j));
     }
 }
 
