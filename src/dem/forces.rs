@@ -19,7 +19,7 @@
 
 use rayon::prelude::*;
 
-use super::contact::lanes::{self, Lanes};
+use super::contact::lanes::{self, get, put, Lanes};
 use super::contact::{contact_force, hertz_mindlin, Pair};
 use super::material::{LawKind, PairLaw};
 use super::par::{for_chunks, MIN_SPHERES_PER_TASK};
@@ -318,10 +318,10 @@ impl PairContext<'_> {
         let n = self.pos.len();
         let (pos, rad) = (self.pos, &self.rad[..n]);
         let mut batch = Batch::default();
-        if let ([law], 1) = (self.laws, self.n_mat) {
+        if self.n_mat == 1 {
             let l = &mut batch.lanes;
             l.law = [0; BATCH];
-            for (c, v) in K::params(law).into_iter().enumerate() {
+            for (c, v) in K::params(&self.laws[0]).into_iter().enumerate() {
                 l.params[c] = [v; BATCH];
             }
         }
@@ -400,7 +400,7 @@ impl PairContext<'_> {
             if PERIODIC {
                 d = im.nearest(d);
             }
-            (l.n[0][k], l.n[1][k], l.n[2][k]) = (d.x, d.y, d.z);
+            put(&mut l.n, k, d);
             b.d2[k] = d.length_squared();
             (l.r_i[k], l.r_j[k]) = (rad[i], rad[j]);
             // m* = m_num / m_den; a fixed sphere counts as infinitely heavy.
@@ -421,20 +421,10 @@ impl PairContext<'_> {
             } else {
                 hist[p]
             };
-            for (c, (dv, (wi, (wj, hc)))) in
-                l.dv.iter_mut()
-                    .zip(
-                        l.w_i
-                            .iter_mut()
-                            .zip(l.w_j.iter_mut().zip(l.hist.iter_mut())),
-                    )
-                    .enumerate()
-            {
-                dv[k] = vel[i][c] - vel[j][c];
-                wi[k] = ang[i][c];
-                wj[k] = ang[j][c];
-                hc[k] = h[c];
-            }
+            put(&mut l.dv, k, vel[i] - vel[j]);
+            put(&mut l.w_i, k, ang[i]);
+            put(&mut l.w_j, k, ang[j]);
+            put(&mut l.hist, k, h);
             // With one material the law's constants were set once for all lanes.
             if self.n_mat > 1 {
                 let law = material[i] as usize * self.n_mat + material[j] as usize;
@@ -448,7 +438,6 @@ impl PairContext<'_> {
         K::lanes(l, self.laws, len, self.dt);
         // Stage 3c: the scatter, in pair order.
         let l = &b.lanes;
-        let at = |v: &lanes::VecColumn, k: usize| Vec3::new(v[0][k], v[1][k], v[2][k]);
         for k in 0..len {
             let (i, j, p) = (b.i[k] as usize, b.j[k] as usize, b.p[k] as usize);
             let delta = l.delta[k];
@@ -466,12 +455,12 @@ impl PairContext<'_> {
                     t: Vec3::ZERO,
                 };
             }
-            hist[p] = at(&l.hist, k);
+            hist[p] = get(&l.hist, k);
             touch[p] = 1;
-            let force = at(&l.force, k);
+            let force = get(&l.force, k);
             own.f += force;
-            own.t += at(&l.torque_i, k);
-            out.add(j, -force, at(&l.torque_j, k));
+            own.t += get(&l.torque_i, k);
+            out.add(j, -force, get(&l.torque_j, k));
             tally.contacts += 1;
             // Overlap ratio δ / min(r_i, r_j), divided out only when it may be the largest.
             let r_min = l.r_i[k].min(l.r_j[k]);
@@ -643,23 +632,19 @@ impl Kernel for AnyLaw {
     /// One contact at a time, through `contact_force`.
     #[inline(always)]
     fn lanes(l: &mut Lanes, laws: &[PairLaw], len: usize, dt: f64) {
-        let at = |v: &lanes::VecColumn, k: usize| Vec3::new(v[0][k], v[1][k], v[2][k]);
-        let put = |v: &mut lanes::VecColumn, k: usize, x: Vec3| {
-            (v[0][k], v[1][k], v[2][k]) = (x.x, x.y, x.z);
-        };
         for k in 0..len.min(lanes::LANES) {
             let pair = Pair {
-                n: at(&l.n, k),
+                n: get(&l.n, k),
                 delta: l.delta[k],
-                dv: at(&l.dv, k),
-                w_i: at(&l.w_i, k),
-                w_j: at(&l.w_j, k),
+                dv: get(&l.dv, k),
+                w_i: get(&l.w_i, k),
+                w_j: get(&l.w_j, k),
                 r_i: l.r_i[k],
                 r_j: l.r_j[k],
                 r_star: l.r_star[k],
                 m_star: l.m_star[k],
             };
-            let mut h = at(&l.hist, k);
+            let mut h = get(&l.hist, k);
             let r = contact_force(&laws[l.law[k] as usize], &pair, &mut h, dt);
             put(&mut l.hist, k, h);
             put(&mut l.force, k, r.force);

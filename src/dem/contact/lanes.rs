@@ -11,7 +11,6 @@
 use wide::f64x4;
 
 use crate::dem::material::PairLaw;
-#[cfg(test)]
 use crate::math::Vec3;
 
 /// Contacts per batch: enough for the processor to overlap many contacts' square roots and
@@ -87,6 +86,18 @@ impl Default for Lanes {
             torque_j: ones,
         }
     }
+}
+
+/// Lane k of a vector column.
+#[inline(always)]
+pub fn get(v: &VecColumn, k: usize) -> Vec3 {
+    Vec3::new(v[0][k], v[1][k], v[2][k])
+}
+
+/// Sets lane k of a vector column.
+#[inline(always)]
+pub fn put(v: &mut VecColumn, k: usize, x: Vec3) {
+    (v[0][k], v[1][k], v[2][k]) = (x.x, x.y, x.z);
 }
 
 /// Four lanes of one column (`wide` runs them as one AVX instruction, or two SSE2 ones).
@@ -335,14 +346,6 @@ mod tests {
                 (pair, xi)
             })
             .collect()
-    }
-
-    fn get(v: &VecColumn, k: usize) -> Vec3 {
-        Vec3::new(v[0][k], v[1][k], v[2][k])
-    }
-
-    fn put(v: &mut VecColumn, k: usize, x: Vec3) {
-        (v[0][k], v[1][k], v[2][k]) = (x.x, x.y, x.z);
     }
 
     fn fill(l: &mut Lanes, (p, xi): &(Pair, Vec3), k: usize, params: [f64; 5]) {
