@@ -7,9 +7,10 @@
 //!    they overlap, the law [6]-[14] gives the force F on i and the torques T_i, T_j; i sums
 //!    its own, and j receives -F and T_j at once (Newton's third law). Threads run slabs of
 //!    the neighbour list (`NeighborList::slabs`): the pairs of slab k touch only slabs k and
-//!    k + 1, so the even slabs run together, then the odd ones, then the last slab alone when
-//!    it wraps onto the first; no two threads ever write the same sphere, and the order in
-//!    which each sphere receives its terms is fixed by the storage order, never by the threads.
+//!    k + 1, so the even slabs run together, then the odd ones; a last slab that wraps onto
+//!    the first runs with the odd ones when its index is odd, else alone at the end. No two
+//!    threads ever write the same sphere, and the order in which each sphere receives its
+//!    terms is fixed by the storage order, never by the threads.
 //! 2. **Spheres.** Each sphere adds its wall contacts (walls act as spheres of infinite radius
 //!    and mass), then, during a step, the closing half kick and the stability checks.
 //!
@@ -187,29 +188,29 @@ fn pair_pass(dem: &mut Dem, dt: f64) -> Tally {
     };
     let (history, touch) = (&mut c.history[..], &mut c.touch[..]);
     let slot = |k: usize| slabs[k.min(n_slabs)] as usize;
-    // Slabs run in this phase: every other one, excluding a last slab that wraps.
+    // Slabs run in the two phases: every other one, excluding a last slab that wraps.
     let parallel_slabs = if wraps { n_slabs - 1 } else { n_slabs };
-    let mut tally = Tally::ZERO;
-    for phase in 0..2 {
-        if phase >= parallel_slabs {
-            break;
-        }
-        // Task m runs slab k = 2m + phase: owners in slab k, writes to slabs k and k + 1.
-        let tasks = (parallel_slabs - phase).div_ceil(2);
-        let k_of = |m: usize| 2 * m + phase;
-        let (s0, s1) = (slot(k_of(0)), slot(k_of(tasks)));
-        let (p0, p1) = (offsets[s0] as usize, offsets[s1] as usize);
+    // Phase `ph` runs the slabs k = 2m + ph (task m): owners in slab k, writes to slabs k and
+    // k + 1. Its spheres are the slots [s0, s1), its pairs [p0, p1).
+    let span = |ph: usize| {
+        let tasks = parallel_slabs.saturating_sub(ph).div_ceil(2);
+        let (s0, s1) = (slot(ph), slot(2 * tasks + ph));
+        (tasks, s0..s1, offsets[s0] as usize..offsets[s1] as usize)
+    };
+    // The phase on its spheres' forces and torques and its pairs' histories and touch flags.
+    let phase = |ph: usize, (f, t): (&mut [Vec3], &mut [Vec3]), (h, tc): Hist| -> Tally {
+        let (tasks, ..) = span(ph);
         let bounds = |m: usize| {
-            let s = slot(k_of(m));
+            let s = slot(2 * m + ph);
             (s, offsets[s] as usize)
         };
-        let r = for_chunks(
+        for_chunks(
             0..tasks,
-            (&mut force[s0..s1], &mut torque[s0..s1]),
-            (&mut history[p0..p1], &mut touch[p0..p1]),
+            (f, t),
+            (h, tc),
             &bounds,
-            &|m, (f, t): (&mut [Vec3], &mut [Vec3]), (h, tc): (&mut [Vec3], &mut [u8])| {
-                let k = k_of(m);
+            &|m, (f, t): (&mut [Vec3], &mut [Vec3]), (h, tc): Hist| {
+                let k = 2 * m + ph;
                 let mut out = Out {
                     base: slot(k),
                     f,
@@ -220,32 +221,73 @@ fn pair_pass(dem: &mut Dem, dt: f64) -> Tally {
                 ctx.run(slot(k)..slot(k + 1), &mut out, h, tc)
             },
             &Tally::merge,
-        );
-        tally = Tally::merge(tally, r.unwrap_or(Tally::ZERO));
+        )
+        .unwrap_or(Tally::ZERO)
+    };
+    let run_phase = |ph: usize, force: &mut [Vec3], torque: &mut [Vec3], h: Hist| {
+        let (_, s, p) = span(ph);
+        let (hist, touch) = h;
+        phase(
+            ph,
+            (&mut force[s.clone()], &mut torque[s]),
+            (&mut hist[p.clone()], &mut touch[p]),
+        )
+    };
+    let even = run_phase(0, force, torque, (&mut *history, &mut *touch));
+    if !wraps {
+        let odd = run_phase(1, force, torque, (history, touch));
+        return Tally::merge(even, odd);
     }
-    if wraps {
-        let last = n_slabs - 1;
-        let (s_first, s_last) = (slot(1), slot(last));
-        let (f_lo, f_hi) = force.split_at_mut(s_last);
-        let (t_lo, t_hi) = torque.split_at_mut(s_last);
-        let p_last = offsets[s_last] as usize;
+    // The last slab writes to itself and to the first. When its index is even, the odd phase
+    // writes to it, and it runs alone after both phases; when odd, the odd phase writes to
+    // neither (its tasks end where the last slab starts), and the two run together. Either
+    // way every sphere receives its terms in the same order.
+    let last = n_slabs - 1;
+    let (s_first, s_last) = (slot(1), slot(last));
+    let p_last = offsets[s_last] as usize;
+    // The last slab, given the first slab's forces and torques and its own, and its pairs.
+    let wrap_slab = |(f0, t0): (&mut [Vec3], &mut [Vec3]),
+                     (f, t): (&mut [Vec3], &mut [Vec3]),
+                     (h, tc): Hist| {
         let mut out = Out {
             base: s_last,
-            f: f_hi,
-            t: t_hi,
-            f0: &mut f_lo[..s_first],
-            t0: &mut t_lo[..s_first],
+            f,
+            t,
+            f0,
+            t0,
         };
-        let r = ctx.run(
-            s_last..slot(n_slabs),
-            &mut out,
-            &mut history[p_last..],
-            &mut touch[p_last..],
+        ctx.run(s_last..slot(n_slabs), &mut out, h, tc)
+    };
+    if last % 2 == 0 {
+        let odd = run_phase(1, force, torque, (&mut *history, &mut *touch));
+        let (f_lo, f_hi) = force.split_at_mut(s_last);
+        let (t_lo, t_hi) = torque.split_at_mut(s_last);
+        let wrapped = wrap_slab(
+            (&mut f_lo[..s_first], &mut t_lo[..s_first]),
+            (f_hi, t_hi),
+            (&mut history[p_last..], &mut touch[p_last..]),
         );
-        tally = Tally::merge(tally, r);
+        return Tally::merge(Tally::merge(even, odd), wrapped);
     }
-    tally
+    // The odd phase spans exactly the slots between the first slab and the last.
+    debug_assert_eq!(span(1).1, s_first..s_last);
+    let p_first = offsets[s_first] as usize;
+    let (f_lo, f_hi) = force.split_at_mut(s_last);
+    let (t_lo, t_hi) = torque.split_at_mut(s_last);
+    let (f0, f_odd) = f_lo.split_at_mut(s_first);
+    let (t0, t_odd) = t_lo.split_at_mut(s_first);
+    let (h_lo, h_hi) = history.split_at_mut(p_last);
+    let (tc_lo, tc_hi) = touch.split_at_mut(p_last);
+    let odd_pairs = (&mut h_lo[p_first..], &mut tc_lo[p_first..]);
+    let (odd, wrapped) = rayon::join(
+        || phase(1, (f_odd, t_odd), odd_pairs),
+        || wrap_slab((f0, t0), (f_hi, t_hi), (h_hi, tc_hi)),
+    );
+    Tally::merge(Tally::merge(even, odd), wrapped)
 }
+
+/// A pair range's histories and touch flags.
+type Hist<'a> = (&'a mut [Vec3], &'a mut [u8]);
 
 /// What the pair kernel reads.
 struct PairContext<'a> {
