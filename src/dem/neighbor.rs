@@ -394,9 +394,15 @@ impl NeighborList {
             (1..n0 - 1).contains(&c0) && (1..n1 - 1).contains(&c1) && (1..n2 - 1).contains(&c2)
         };
         let start = |c: usize| grid.start[c];
+        // With four cells or more along every periodic axis, a pair between an interior cell
+        // and its neighbours is never nearer through a face (|d| < 2 cells <= half a period),
+        // so the fast path takes the plain separation.
+        let plain = (0..3).all(|k| !grid.periodic[k] || grid.n[k] >= 4);
         self.chunks.par_iter_mut().enumerate().for_each(|(c, out)| {
-            out.partner.clear();
             out.count.clear();
+            // The partners found so far are `buf[..len]`; the rest is room to write to.
+            let buf = &mut out.partner;
+            let mut len = 0;
             let mut around = Vec::with_capacity(27);
             // (first slot, end slot, only slots above the owner's) of the cells to search.
             let mut ranges: Vec<(u32, u32, bool)> = Vec::with_capacity(27);
@@ -435,26 +441,32 @@ impl NeighborList {
                         }
                     }
                 }
-                let before = out.partner.len();
                 let (xi, ri, fi, bi) = (pos[i], rad[i], fixed[i], body[i]);
+                // Two fixed spheres never move apart; members of one block never touch
+                // (their contact is internal to the block). Most owners are neither.
+                let may_skip = fi || bi != NO_BODY;
+                let before = len;
                 for &(s, e, above) in &ranges {
-                    let s = if above { s.max(i as u32 + 1) } else { s };
+                    let s = if above { s.max(i as u32 + 1) } else { s } as usize;
+                    let e = (e as usize).max(s);
+                    // Room for every candidate of the range: each is written to the next
+                    // place, which only a close one keeps (no branch on the distance).
+                    if buf.len() < len + (e - s) {
+                        buf.resize(2 * (len + (e - s)), 0);
+                    }
                     for j in s..e {
-                        let j = j as usize;
+                        let d = pos[j] - xi;
+                        let d = if fast && plain { d } else { im.nearest(d) };
                         let cut = ri + rad[j] + skin;
-                        // Two fixed spheres never move apart; members of one block never
-                        // touch (their contact is internal to the block).
-                        let skip = (fi && fixed[j]) || (bi != NO_BODY && body[j] == bi);
-                        if !skip && im.nearest(pos[j] - xi).length_squared() < cut * cut {
-                            out.partner.push(j as u32);
-                        }
+                        let skip =
+                            may_skip && ((fi && fixed[j]) || (bi != NO_BODY && body[j] == bi));
+                        buf[len] = j as u32;
+                        len += usize::from(d.length_squared() < cut * cut && !skip);
                     }
                 }
-                if !fast {
-                    out.partner[before..].sort_unstable();
-                }
-                out.count.push((out.partner.len() - before) as u32);
+                out.count.push((len - before) as u32);
             }
+            buf.truncate(len);
         });
         self.offsets.clear();
         self.offsets.push(0);
