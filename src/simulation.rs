@@ -193,10 +193,9 @@ impl Simulation {
             !linked,
             &d.domain,
             d.gravity,
-            d.neighbors.reference(),
-            0.5 * d.neighbors.skin,
             d.limits.max_speed,
         );
+        d.neighbors.note_drift(opening.max_drift);
         let clock = lap(clock, &mut self.dem_times.opening);
         let t_new = self.time + dt;
         let mut changed = opening.outside > 0 && self.remove_outside();
@@ -213,7 +212,8 @@ impl Simulation {
             }
         }
         self.time = t_new;
-        if changed || opening.moved || self.dem.walls_moved(self.time) {
+        let d = &self.dem;
+        if changed || d.neighbors.needs_rebuild(&d.spheres, &d.domain) || d.walls_moved(self.time) {
             self.dem.rebuild_lists(self.time);
         }
         let clock = lap(clock, &mut self.dem_times.lists);

@@ -48,8 +48,8 @@ pub fn drift(s: &mut Spheres, dt: f64) {
 /// What the opening of a step found.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Opening {
-    /// Some sphere has moved more than the limit since the neighbour build.
-    pub moved: bool,
+    /// The largest drift |Δt v| of a sphere in this step [m] (`NeighborList::drift`).
+    pub max_drift: f64,
     /// Spheres whose centre left the domain along a non-periodic axis (finite, and not faster
     /// than `max_speed`: those are kept for the stability check to report).
     pub outside: usize,
@@ -59,10 +59,9 @@ pub struct Opening {
 const CHUNK: usize = 4096;
 
 /// The opening of a step in one pass over the spheres: half kick with the current forces and
-/// drift [1][2] (as `half_kick` and `drift`), wrap of the periodic axes, the neighbour-list
-/// displacement test against `reference` (positions at the build; a sphere farther than
-/// `limit` from its reference position asks for a rebuild) and the outflow count; then the
-/// forces are started at gravity, m g, for the coming evaluation (`forces::start_forces`).
+/// drift [1][2] (as `half_kick` and `drift`), wrap of the periodic axes, the largest drift (for
+/// the neighbour list's displacement bound) and the outflow count; then the forces are started
+/// at gravity, m g, for the coming evaluation (`forces::start_forces`).
 /// With `kick` false the half kick is left out (the caller has done it: rigid blocks put
 /// their members' velocities back in the rigid shape between the kick and the drift).
 #[allow(clippy::too_many_arguments)]
@@ -72,15 +71,11 @@ pub fn open_step(
     kick: bool,
     domain: &Domain,
     gravity: Vec3,
-    reference: &[Vec3],
-    limit: f64,
     max_speed: f64,
 ) -> Opening {
     let h = 0.5 * dt;
-    let limit2 = limit * limit;
     let max2 = max_speed * max_speed;
     let n = s.len();
-    let check_moves = reference.len() == n;
     let im = domain.images();
     let Spheres {
         position,
@@ -102,11 +97,8 @@ pub fn open_step(
         let n = x.len();
         let (v, w, f, t) = (&mut v[..n], &mut w[..n], &mut f[..n], &mut t[..n]);
         let (mass, inertia, fixed) = (&mass[i0..i0 + n], &inertia[i0..i0 + n], &fixed[i0..i0 + n]);
-        let reference = if check_moves {
-            &reference[i0..i0 + n]
-        } else {
-            &[]
-        };
+        // The largest |Δt v|², square-rooted once at the end.
+        let mut drift2: f64 = 0.0;
         let mut o = Opening::default();
         for k in 0..n {
             let (mut xk, mut vk) = (x[k], v[k]);
@@ -117,23 +109,21 @@ pub fn open_step(
                     w[k] += h / inertia[k] * t[k];
                     v[k] = vk;
                 }
-                xk = im.wrap(xk + dt * vk);
+                let drift = dt * vk;
+                drift2 = drift2.max(drift.length_squared());
+                xk = im.wrap(xk + drift);
                 x[k] = xk;
                 f[k] = m * gravity;
             } else {
                 f[k] = Vec3::ZERO;
             }
             t[k] = Vec3::ZERO;
-            if check_moves {
-                let d = im.nearest(xk - reference[k]);
-                o.moved |= d.length_squared() > limit2;
-            }
             // Outside along an open axis, finite and not absurdly fast: an outflow.
             if !im.contains(xk) && is_finite(xk) && vk.length_squared() <= max2 {
                 o.outside += 1;
             }
         }
-        o.moved |= !check_moves;
+        o.max_drift = drift2;
         o
     };
     for_chunks(
@@ -146,14 +136,15 @@ pub fn open_step(
         &|c| ((c * CHUNK).min(n), 0),
         &leaf,
         &|a: Opening, b: Opening| Opening {
-            moved: a.moved || b.moved,
+            max_drift: a.max_drift.max(b.max_drift),
             outside: a.outside + b.outside,
         },
     )
-    .unwrap_or(Opening {
-        moved: !check_moves,
-        outside: 0,
+    .map(|o| Opening {
+        max_drift: o.max_drift.sqrt(),
+        ..o
     })
+    .unwrap_or_default()
 }
 
 /// The mutable columns `open_step` walks.
