@@ -122,17 +122,18 @@ impl Images {
         d - shift
     }
 
-    /// Wraps a position back into the box along periodic axes (as `Domain::wrap`).
+    /// Wraps a position back into the box along periodic axes (as `Domain::wrap`), without
+    /// branches (as `nearest`): x - (-L) is x + L exactly, and x - 0 is x, -0 included.
     #[inline(always)]
-    pub fn wrap(&self, mut x: Vec3) -> Vec3 {
-        for k in 0..3 {
-            if x[k] < self.wrap_lo[k] {
-                x[k] += self.length[k];
-            } else if x[k] >= self.wrap_hi[k] {
-                x[k] -= self.length[k];
-            }
-        }
-        x
+    pub fn wrap(&self, x: Vec3) -> Vec3 {
+        let below = x.cmplt(self.wrap_lo);
+        let above = x.cmpge(self.wrap_hi);
+        let shift = Vec3::select(
+            below,
+            -self.length,
+            Vec3::select(above, self.length, Vec3::ZERO),
+        );
+        x - shift
     }
 
     /// True when `x` lies inside the box along the open axes (as `Domain::contains`).
