@@ -147,3 +147,36 @@ impl Images {
             && x.z <= self.hi.z
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The branch-free forms in `Images` give the bits of `Domain`'s: on both sides of each
+    /// face, exactly on it, at ±0 and far outside along the open axis.
+    #[test]
+    fn images_wrap_and_nearest_as_the_domain() {
+        let d = Domain {
+            min: Vec3::new(-0.5, 0.0, 0.0),
+            max: Vec3::new(1.5, 0.7, 1.0),
+            periodic: [true, true, false],
+        };
+        let im = d.images();
+        let values = [
+            -0.6, -0.5, -0.0, 0.0, 0.3, 0.7, 0.71, 1.0, 1.5, 1.6, 7.0, -3.0,
+        ];
+        let bits = |v: Vec3| v.to_array().map(f64::to_bits);
+        for &a in &values {
+            for &b in &values {
+                for &c in &values {
+                    let x = Vec3::new(a, b, c);
+                    assert_eq!(bits(im.wrap(x)), bits(d.wrap(x)), "wrap {x}");
+                    if a.abs() < 3.0 && b.abs() < 1.05 {
+                        assert_eq!(bits(im.nearest(x)), bits(d.minimum_image(x)), "nearest {x}");
+                    }
+                    assert_eq!(im.contains(x), d.contains(x), "contains {x}");
+                }
+            }
+        }
+    }
+}
