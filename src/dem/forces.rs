@@ -393,7 +393,7 @@ impl PairContext<'_> {
                 // Stage 3 reads this contact's history when the batch is full: ask for it
                 // now (the history, one of the largest arrays, missed the cache in 17 % of
                 // B2's pair loop).
-                prefetch(&hist[p]);
+                prefetch_at(hist.as_ptr().wrapping_add(p));
                 if len == BATCH {
                     batch.len = len;
                     self.batch::<PERIODIC, K>(&mut batch, &mut own, out, hist, touch, &mut tally);
@@ -520,11 +520,18 @@ impl PairContext<'_> {
 /// Asks the processor to bring `x` into the cache; changes nothing else.
 #[inline(always)]
 fn prefetch<T>(x: &T) {
+    prefetch_at(x as *const T);
+}
+
+/// Asks the processor to bring the memory at `x` into the cache; changes nothing else, and is
+/// harmless for any address (so a column's element k can be asked for without a bounds test).
+#[inline(always)]
+fn prefetch_at<T>(x: *const T) {
     #[cfg(target_arch = "x86_64")]
-    // SAFETY: a prefetch reads nothing the program sees and cannot fault; `x` is valid anyway.
+    // SAFETY: a prefetch reads nothing the program sees and cannot fault, whatever the address.
     unsafe {
         use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
-        _mm_prefetch::<_MM_HINT_T0>((x as *const T).cast::<i8>());
+        _mm_prefetch::<_MM_HINT_T0>(x.cast::<i8>());
     }
     #[cfg(not(target_arch = "x86_64"))]
     let _ = x;
@@ -574,7 +581,9 @@ impl Batch {
     /// and returns the length of the batch: k + 1 if `close` (the batch keeps it), else k.
     #[inline(always)]
     fn offer(&mut self, k: usize, i: usize, j: usize, p: usize, touched: u8, close: bool) -> usize {
-        let k = k.min(BATCH - 1);
+        // k < BATCH already; the mask only lets the compiler drop the bounds tests.
+        const { assert!(BATCH.is_power_of_two()) };
+        let k = k & (BATCH - 1);
         self.i[k] = i as u32;
         self.j[k] = j as u32;
         self.p[k] = p as u32;
