@@ -233,6 +233,8 @@ impl Simulation {
         half_kick(&mut d.spheres, dt);
         if !self.rigid.blocks.is_empty() {
             self.rigid.recover(&mut d.spheres, &d.domain, dt);
+            // Members moved back into the rigid shape moved that much more than their drift.
+            d.neighbors.note_drift(self.rigid.max_correction);
         }
         let bad = first_unstable(&d.spheres, kick.max_speed);
         lap(clock, &mut self.dem_times.forces);

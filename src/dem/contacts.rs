@@ -73,15 +73,7 @@ impl PairContacts {
         // Each touching old pair (a, b) is listed now as (a, b) or as (b, a) (then its
         // history changes sign): found by old owners in parallel, put in place in chunk order.
         let (old_h, old_t) = (&self.old_history, &self.old_touch);
-        let (offsets, partner) = (&nl.offsets, &nl.partner);
         let new_slot = &self.new_slot;
-        let pair = |i: u32, j: u32| {
-            let (p0, p1) = (
-                offsets[i as usize] as usize,
-                offsets[i as usize + 1] as usize,
-            );
-            (p0..p1).find(|&p| partner[p] == j)
-        };
         self.found.resize_with(n_old.div_ceil(CHUNK), Vec::new);
         self.found.par_iter_mut().enumerate().for_each(|(c, out)| {
             out.clear();
@@ -98,10 +90,10 @@ impl PairContacts {
                     let Some(b) = spheres.slot_of(nl.old_partner_id[q]) else {
                         continue;
                     };
-                    let b = b as u32;
-                    if let Some(p) = pair(a, b) {
+                    let a = a as usize;
+                    if let Some(p) = nl.pair_index(a, b) {
                         out.push((p as u32, old_h[q]));
-                    } else if let Some(p) = pair(b, a) {
+                    } else if let Some(p) = nl.pair_index(b, a) {
                         out.push((p as u32, -old_h[q]));
                     }
                 }
@@ -138,11 +130,8 @@ impl PairContacts {
         self.history.resize(n_pairs, Vec3::ZERO);
         self.touch.clear();
         self.touch.resize(n_pairs, 0);
-        let find = |a: SphereId, b: SphereId| -> Option<usize> {
-            let i = spheres.slot_of(a)?;
-            let j = spheres.slot_of(b)? as u32;
-            (nl.offsets[i] as usize..nl.offsets[i + 1] as usize).find(|&p| nl.partner[p] == j)
-        };
+        let find =
+            |a: SphereId, b: SphereId| nl.pair_index(spheres.slot_of(a)?, spheres.slot_of(b)?);
         for c in saved {
             let (a, b) = c.ids;
             if let Some(p) = find(a, b) {
@@ -165,6 +154,7 @@ impl PairContacts {
 mod tests {
     use super::*;
     use crate::dem::domain::Domain;
+    use crate::dem::neighbor::tests::uniform;
     use crate::dem::spheres::NewSphere;
     use std::collections::HashMap;
 
@@ -182,12 +172,7 @@ mod tests {
     #[test]
     fn history_follows_the_pairs_across_a_rebuild() {
         let mut seed = 99u64;
-        let mut rnd = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rnd = || uniform(&mut seed);
         let d = Domain {
             min: Vec3::ZERO,
             max: Vec3::new(0.4, 0.2, 0.3),

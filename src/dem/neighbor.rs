@@ -268,9 +268,18 @@ impl NeighborList {
         self.partner.clear();
     }
 
-    /// Adds a step's largest drift |Δt v| [m] to the displacement bound `drift`.
+    /// Adds a step's largest drift |Δt v| [m] to the displacement bound `drift`. Whatever
+    /// moves spheres outside the opening of a step (the blocks' recovery; research code that
+    /// places spheres by hand) must add its largest move here too, or set `drift` to infinity.
     pub fn note_drift(&mut self, max_drift: f64) {
         self.drift += max_drift;
+    }
+
+    /// The index of the listed pair owned by slot `i` with partner `j`, if listed so.
+    #[inline]
+    pub fn pair_index(&self, i: usize, j: usize) -> Option<usize> {
+        let (p0, p1) = (self.offsets[i] as usize, self.offsets[i + 1] as usize);
+        (p0..p1).find(|&p| self.partner[p] as usize == j)
     }
 
     /// True when a sphere has moved more than skin/2 since the last build, or spheres were added
@@ -538,7 +547,7 @@ pub fn close_pairs(spheres: &Spheres, domain: &Domain, margin: f64) -> Vec<(u32,
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::dem::spheres::NewSphere;
 
@@ -555,14 +564,17 @@ mod tests {
         v
     }
 
+    /// Uniform in [0, 1) from the xorshift state `seed` (deterministic, for tests).
+    pub(crate) fn uniform(seed: &mut u64) -> f64 {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        (*seed >> 11) as f64 / (1u64 << 53) as f64
+    }
+
     fn random_spheres(periodic: [bool; 3], size: f64, seed: u64) -> (Spheres, Domain) {
         let mut seed = seed;
-        let mut rnd = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rnd = || uniform(&mut seed);
         let d = Domain {
             min: Vec3::ZERO,
             max: Vec3::new(size, 0.5 * size, 0.8 * size),
