@@ -181,6 +181,8 @@ fn pair_pass(dem: &mut Dem, dt: f64) -> Tally {
         fixed,
         offsets,
         partner,
+        plain: &nl.plain,
+        owner: &nl.owner,
         laws: &dem.laws,
         n_mat: dem.materials.len(),
         domain: dem.domain,
@@ -300,6 +302,8 @@ struct PairContext<'a> {
     fixed: &'a [bool],
     offsets: &'a [u32],
     partner: &'a [u32],
+    owner: &'a [u32],
+    plain: &'a [bool],
     laws: &'a [PairLaw],
     n_mat: usize,
     domain: super::domain::Domain,
@@ -334,9 +338,11 @@ impl PairContext<'_> {
     ///
     /// Three stages, on batches of up to `BATCH` contacts in pair order:
     ///
-    /// 1. *Filter*: every candidate (i, j) has its distance tested, |x_j - x_i|² < (r_i + r_j)²;
-    ///    those closer join the batch (its touch flag with it), every touch flag is cleared.
-    ///    Most candidates leave here, in a loop small enough to keep everything in registers.
+    /// 1. *Filter*: every candidate (i, j) has its distance tested, |x_j - x_i|² < (r_i + r_j)²
+    ///    (x_j - x_i taken to its nearest periodic image only for owners near a periodic
+    ///    face); those closer join the batch (its touch flag with it), every touch flag is
+    ///    cleared. Most candidates leave here, in a loop over pairs small enough to keep
+    ///    everything in registers.
     /// 2. *Geometry*: for the batch, d = |x_j - x_i|, δ = r_i + r_j - d, n = (x_j - x_i)/d,
     ///    R* = r_i r_j/(r_i + r_j), m* = m_i m_j/(m_i + m_j) and the law's square roots
     ///    (`Kernel::roots`). The contacts are independent here, so the processor overlaps their
@@ -351,14 +357,12 @@ impl PairContext<'_> {
         &self,
         (owners, out, hist, touch): (std::ops::Range<usize>, &mut Out, &mut [Vec3], &mut [u8]),
     ) -> Tally {
-        let mut tally = Tally::ZERO;
         let Some(first) = owners.clone().next() else {
-            return tally;
+            return Tally::ZERO;
         };
         let base = self.offsets[first] as usize;
         let im = self.domain.images();
         let n = self.pos.len();
-        let (pos, rad) = (self.pos, &self.rad[..n]);
         let mut batch = Batch::default();
         if self.n_mat == 1 {
             let l = &mut batch.lanes;
@@ -369,44 +373,101 @@ impl PairContext<'_> {
         }
         // The batch's length, held apart so that it stays in a register in the filter.
         let mut len = 0;
-        let mut own = Owner {
-            i: usize::MAX,
-            f: Vec3::ZERO,
-            t: Vec3::ZERO,
+        let mut s = Sweep {
+            batch,
+            own: Owner {
+                i: usize::MAX,
+                f: Vec3::ZERO,
+                t: Vec3::ZERO,
+            },
+            tally: Tally::ZERO,
+            out,
         };
-        for i in owners {
-            let (p0, p1) = (self.offsets[i] as usize, self.offsets[i + 1] as usize);
+        let c = Candidates {
+            pos: &self.pos[..n],
+            rad: &self.rad[..n],
+            offsets: self.offsets,
+            partner: self.partner,
+            owner: self.owner,
+            im,
+            base,
+        };
+        // Runs of owners that need no periodic image (`NeighborList::plain`, most of them)
+        // or may need one: the filter of the first kind skips the image's compares and
+        // selects, a third of its instructions.
+        let plain = &self.plain[..n];
+        let mut i0 = owners.start;
+        while i0 < owners.end {
+            let flag = plain[i0];
+            let i1 = i0
+                + plain[i0..owners.end]
+                    .iter()
+                    .take_while(|&&p| p == flag)
+                    .count();
+            len = if PERIODIC && !flag {
+                self.filter::<PERIODIC, true, K>(c, i0..i1, len, &mut s, hist, touch)
+            } else {
+                self.filter::<PERIODIC, false, K>(c, i0..i1, len, &mut s, hist, touch)
+            };
+            i0 = i1;
+        }
+        s.batch.len = len;
+        self.batch::<PERIODIC, K>(&mut s, hist, touch);
+        if s.own.i != usize::MAX {
+            s.out.add(s.own.i, s.own.f, s.own.t);
+        }
+        s.tally
+    }
+
+    /// Stage 1 of `run_with` for the pairs of the owners `owners`, `len` contacts already in
+    /// the batch; returns the new length. `IMAGES`: whether x_j - x_i may need a periodic
+    /// image (stage 2 takes the image whenever the domain is `PERIODIC`, which changes nothing
+    /// for the others).
+    ///
+    /// The loop runs over pairs, each reading its owner from `owner`, not over owners: B2's
+    /// owners have 3.5 candidates on average, and a loop per owner would end at an
+    /// unpredictable count every few candidates (B2, 1 thread: forces -8 %; B1: -9 %).
+    #[inline(always)]
+    fn filter<const PERIODIC: bool, const IMAGES: bool, K: Kernel>(
+        &self,
+        c: Candidates,
+        owners: std::ops::Range<usize>,
+        mut len: usize,
+        s: &mut Sweep,
+        hist: &mut [Vec3],
+        touch: &mut [u8],
+    ) -> usize {
+        let Candidates { pos, rad, im, .. } = c;
+        let (p0, p1) = (
+            c.offsets[owners.start] as usize,
+            c.offsets[owners.end] as usize,
+        );
+        let pairs = (p0 - c.base..p1 - c.base).zip(&c.partner[p0..p1]);
+        for ((p, &j), &i) in pairs.zip(&c.owner[p0..p1]) {
+            let (i, j) = (i as usize, j as usize);
             let (xi, ri) = (pos[i], rad[i]);
-            for (p, &j) in (p0 - base..p1 - base).zip(&self.partner[p0..p1]) {
-                let j = j as usize;
-                let mut d = pos[j] - xi;
-                if PERIODIC {
-                    d = im.nearest(d);
-                }
-                let r_sum = ri + rad[j];
-                // Every candidate is written to the batch's next place, which only a close
-                // one keeps: no branch on the distance, which the processor could not
-                // predict (contacts and near misses are interleaved).
-                let close = d.length_squared() < r_sum * r_sum;
-                len = batch.offer(len, i, j, p, touch[p], close);
-                touch[p] = 0;
-                // Stage 3 reads this contact's history when the batch is full: ask for it
-                // now (the history, one of the largest arrays, missed the cache in 17 % of
-                // B2's pair loop).
-                prefetch_at(hist.as_ptr().wrapping_add(p));
-                if len == BATCH {
-                    batch.len = len;
-                    self.batch::<PERIODIC, K>(&mut batch, &mut own, out, hist, touch, &mut tally);
-                    len = 0;
-                }
+            let mut d = pos[j] - xi;
+            if IMAGES {
+                d = im.nearest(d);
+            }
+            let r_sum = ri + rad[j];
+            // Every candidate is written to the batch's next place, which only a close one
+            // keeps: no branch on the distance, which the processor could not predict
+            // (contacts and near misses are interleaved).
+            let close = d.length_squared() < r_sum * r_sum;
+            len = s.batch.offer(len, i, j, p, touch[p], close);
+            touch[p] = 0;
+            // Stage 3 reads this contact's history when the batch is full: ask for it now
+            // (the history, one of the largest arrays, missed the cache in 17 % of B2's pair
+            // loop).
+            prefetch_at(hist.as_ptr().wrapping_add(p));
+            if len == BATCH {
+                s.batch.len = len;
+                self.batch::<PERIODIC, K>(s, hist, touch);
+                len = 0;
             }
         }
-        batch.len = len;
-        self.batch::<PERIODIC, K>(&mut batch, &mut own, out, hist, touch, &mut tally);
-        if own.i != usize::MAX {
-            out.add(own.i, own.f, own.t);
-        }
-        tally
+        len
     }
 
     /// Stages 2 and 3 of `run_with` for the contacts in `batch`, which it empties; `own` holds
@@ -418,13 +479,17 @@ impl PairContext<'_> {
     #[inline(never)]
     fn batch<const PERIODIC: bool, K: Kernel>(
         &self,
-        b: &mut Batch,
-        own: &mut Owner,
-        out: &mut Out,
+        s: &mut Sweep,
         hist: &mut [Vec3],
         touch: &mut [u8],
-        tally: &mut Tally,
     ) {
+        let Sweep {
+            batch: b,
+            own,
+            tally,
+            out,
+            ..
+        } = s;
         let len = b.len.min(BATCH);
         b.len = 0;
         // Columns cut to one length n, so that a single test j < n covers every access below.
@@ -535,6 +600,29 @@ fn prefetch_at<T>(x: *const T) {
     }
     #[cfg(not(target_arch = "x86_64"))]
     let _ = x;
+}
+
+/// What the pair loop carries from owner to owner: the batch, the sums of the owner whose
+/// contacts are under way, the counters, and where the forces go.
+struct Sweep<'s, 'o> {
+    batch: Batch,
+    own: Owner,
+    tally: Tally,
+    out: &'s mut Out<'o>,
+}
+
+/// What the filter reads, passed by value so that it stays in registers: positions and
+/// radii cut to one length (one bounds test covers both), the list, the periodic images, and
+/// the index of the task's first pair (its histories and touch flags start there).
+#[derive(Clone, Copy)]
+struct Candidates<'a> {
+    pos: &'a [Vec3],
+    rad: &'a [f64],
+    offsets: &'a [u32],
+    partner: &'a [u32],
+    owner: &'a [u32],
+    im: super::domain::Images,
+    base: usize,
 }
 
 /// Contacts per batch of the pair loop (`lanes::LANES`).

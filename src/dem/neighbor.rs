@@ -192,6 +192,7 @@ impl CellGrid {
 #[derive(Clone, Debug, Default)]
 struct ChunkOut {
     partner: Vec<u32>,
+    owner: Vec<u32>,
     count: Vec<u32>,
 }
 
@@ -210,6 +211,11 @@ pub struct NeighborList {
     pub offsets: Vec<u32>,
     /// Partner slot of each pair.
     pub partner: Vec<u32>,
+    /// For each owner slot, true when none of its pairs needs a periodic image until the next
+    /// build (`mark_plain`): the pair loop may then take x_j - x_i as it is.
+    pub plain: Vec<bool>,
+    /// Owner slot of each pair (so that the pair loop runs over pairs, not owners).
+    pub owner: Vec<u32>,
     /// For each slot, the slot the same sphere had at the previous build (`NONE` if it was not
     /// there, and for every sphere at the first build or after `forget`).
     pub previous_slot: Vec<u32>,
@@ -350,6 +356,7 @@ impl NeighborList {
         }
         self.set_slabs(n);
         self.find_pairs(spheres, domain);
+        self.mark_plain(domain, edge);
         self.built_ids.clear();
         self.built_ids.extend_from_slice(&spheres.id);
         self.builds += 1;
@@ -383,6 +390,29 @@ impl NeighborList {
                 }
             }
         }
+    }
+
+    /// Sets `plain`: owner i is plain when, at the build's positions, it lies farther than
+    /// `edge` + skin from every periodic face, `edge` (the cell edge) being more than any pair's
+    /// distance r_i + r_j + skin. Then its partners lie more than a skin from the faces; until
+    /// the next build no sphere moves by more than skin/2 (`needs_rebuild`), so none of them
+    /// is wrapped, and |x_j - x_i| < edge + skin stays at most half a period (checked): the
+    /// nearest image of x_j - x_i is x_j - x_i itself.
+    fn mark_plain(&mut self, domain: &Domain, edge: f64) {
+        let reach = edge + self.skin;
+        let (mut lo, mut hi) = (Vec3::NEG_INFINITY, Vec3::INFINITY);
+        let mut short = false;
+        for a in (0..3).filter(|&a| domain.periodic[a]) {
+            (lo[a], hi[a]) = (domain.min[a] + reach, domain.max[a] - reach);
+            short |= reach > 0.5 * (domain.max[a] - domain.min[a]);
+        }
+        self.plain.clear();
+        self.plain.par_extend(
+            self.reference
+                .par_iter()
+                .with_min_len(MIN_SPHERES_PER_TASK)
+                .map(|x| !short && x.cmpgt(lo).all() && x.cmplt(hi).all()),
+        );
     }
 
     fn set_slabs(&mut self, n: usize) {
@@ -497,10 +527,15 @@ impl NeighborList {
                 out.count.push((len - before) as u32);
             }
             buf.truncate(len);
+            out.owner.clear();
+            for (i, &k) in (c * CHUNK..).zip(&out.count) {
+                out.owner.extend(std::iter::repeat_n(i as u32, k as usize));
+            }
         });
         self.offsets.clear();
         self.offsets.push(0);
         self.partner.clear();
+        self.owner.clear();
         let mut total = 0u32;
         for ch in &self.chunks {
             for &k in &ch.count {
@@ -508,6 +543,7 @@ impl NeighborList {
                 self.offsets.push(total);
             }
             self.partner.extend_from_slice(&ch.partner);
+            self.owner.extend_from_slice(&ch.owner);
         }
     }
 }
@@ -620,8 +656,11 @@ pub(crate) mod tests {
             let mut got = vec![];
             let slab_of = |k: u32| nl.slabs().partition_point(|&b| b <= k) - 1;
             let last = nl.slabs().len() - 2;
+            assert_eq!(nl.owner.len(), nl.partner.len());
             for i in 0..s.len() {
-                let own = &nl.partner[nl.offsets[i] as usize..nl.offsets[i + 1] as usize];
+                let pairs = nl.offsets[i] as usize..nl.offsets[i + 1] as usize;
+                assert!(nl.owner[pairs.clone()].iter().all(|&o| o as usize == i));
+                let own = &nl.partner[pairs];
                 assert!(own.windows(2).all(|w| w[0] < w[1]), "partners ascending");
                 for &j in own {
                     let (si, sj) = (slab_of(i as u32), slab_of(j));
@@ -678,6 +717,51 @@ pub(crate) mod tests {
         assert!(
             builds > 20 && skipped > 150,
             "{builds} builds, {skipped} steps skipped"
+        );
+    }
+
+    /// For a plain owner, x_j - x_i is its own nearest image at every step until the next
+    /// build, while spheres drift across both periodic faces; near the faces owners are not
+    /// plain.
+    #[test]
+    fn plain_owners_need_no_image() {
+        let (mut s, d) = random_spheres([true, true, false], 0.8, 777);
+        let dt = 1e-3;
+        for (k, v) in s.velocity.iter_mut().enumerate() {
+            let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
+            *v = sign * Vec3::new(0.2 + 0.1 * (k % 5) as f64, 0.1 * (k % 3) as f64, 0.0);
+        }
+        let mut nl = NeighborList::new(0.005);
+        nl.build(&mut s, &d, None);
+        let (mut builds, mut plain, mut owners) = (0, 0, 0);
+        for _ in 0..200 {
+            let mut max_drift: f64 = 0.0;
+            for (x, v) in s.position.iter_mut().zip(&s.velocity) {
+                max_drift = max_drift.max((dt * *v).length());
+                *x = d.wrap(*x + dt * *v);
+            }
+            nl.note_drift(max_drift);
+            if nl.needs_rebuild(&s, &d) {
+                nl.build(&mut s, &d, None);
+                builds += 1;
+            }
+            let x = &s.position;
+            for i in 0..s.len() {
+                owners += 1;
+                if !nl.plain[i] {
+                    continue;
+                }
+                plain += 1;
+                for &j in &nl.partner[nl.offsets[i] as usize..nl.offsets[i + 1] as usize] {
+                    let dx = x[j as usize] - x[i];
+                    assert_eq!(d.minimum_image(dx), dx, "owner {i}, partner {j}");
+                }
+            }
+        }
+        let share = plain as f64 / owners as f64;
+        assert!(
+            builds > 10 && share > 0.3 && share < 0.9,
+            "{builds} builds, {share} plain"
         );
     }
 
