@@ -363,7 +363,10 @@ impl PairContext<'_> {
         let base = self.offsets[first] as usize;
         let im = self.domain.images();
         let n = self.pos.len();
-        let mut batch = Batch::default();
+        let mut batch = Batch {
+            base,
+            ..Batch::default()
+        };
         if self.n_mat == 1 {
             let l = &mut batch.lanes;
             l.law = [0; BATCH];
@@ -455,7 +458,7 @@ impl PairContext<'_> {
             // keeps: no branch on the distance, which the processor could not predict
             // (contacts and near misses are interleaved).
             let close = d.length_squared() < r_sum * r_sum;
-            len = s.batch.offer(len, i, j, p, touch[p], close);
+            len = s.batch.offer(len, p, touch[p], close);
             touch[p] = 0;
             // Stage 3 reads this contact's history when the batch is full: ask for it now
             // (the history, one of the largest arrays, missed the cache in 17 % of B2's pair
@@ -501,10 +504,15 @@ impl PairContext<'_> {
             &self.ang[..n],
         );
         let (mass, fixed, material) = (&self.mass[..n], &self.fixed[..n], &self.material[..n]);
-        // Stage 2a: gather the close pairs' separations, radii and masses.
+        // Stage 2a: the close pairs' spheres, separations, radii and masses.
         let im = self.domain.images();
+        let (owner, partner) = (&self.owner[b.base..], &self.partner[b.base..]);
         let l = &mut b.lanes;
         for k in 0..len {
+            let p = b.p[k] as usize >> 1;
+            b.touched[k] = b.p[k] as u8 & 1;
+            b.p[k] = p as u32;
+            (b.i[k], b.j[k]) = (owner[p], partner[p]);
             let (i, j) = (b.i[k] as usize, b.j[k] as usize);
             assert!(i < n && j < n);
             let mut d = pos[j] - pos[i];
@@ -632,7 +640,10 @@ const BATCH: usize = lanes::LANES;
 /// and 3b run on several contacts per instruction).
 struct Batch {
     len: usize,
-    /// Owner i, partner j, pair index p (from the task's first pair).
+    /// The list's index of the task's first pair.
+    base: usize,
+    /// Owner i, partner j, pair index p (from the task's first pair; stage 1 writes 2 p + the
+    /// touch flag, stage 2 unpacks it and looks up i and j).
     i: [u32; BATCH],
     j: [u32; BATCH],
     p: [u32; BATCH],
@@ -652,6 +663,7 @@ impl Default for Batch {
         let one = [1.0; BATCH];
         Batch {
             len: 0,
+            base: 0,
             i: [0; BATCH],
             j: [0; BATCH],
             p: [0; BATCH],
@@ -665,17 +677,15 @@ impl Default for Batch {
 }
 
 impl Batch {
-    /// Writes the candidate (i, j) (pair index p, touch flag `touched`) to place k < `BATCH`
-    /// and returns the length of the batch: k + 1 if `close` (the batch keeps it), else k.
+    /// Writes the candidate p (pair index, with its touch flag `touched`, 0 or 1) to place
+    /// k < `BATCH` and returns the length of the batch: k + 1 if `close` (the batch keeps
+    /// it), else k. One store per candidate: stage 2 looks up its spheres.
     #[inline(always)]
-    fn offer(&mut self, k: usize, i: usize, j: usize, p: usize, touched: u8, close: bool) -> usize {
+    fn offer(&mut self, k: usize, p: usize, touched: u8, close: bool) -> usize {
         // k < BATCH already; the mask only lets the compiler drop the bounds tests.
         const { assert!(BATCH.is_power_of_two()) };
         let k = k & (BATCH - 1);
-        self.i[k] = i as u32;
-        self.j[k] = j as u32;
-        self.p[k] = p as u32;
-        self.touched[k] = touched;
+        self.p[k] = (p as u32) << 1 | u32::from(touched & 1);
         k + usize::from(close)
     }
 }
