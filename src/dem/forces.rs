@@ -473,8 +473,8 @@ impl PairContext<'_> {
         len
     }
 
-    /// Stages 2 and 3 of `run_with` for the contacts in `batch`, which it empties; `own` holds
-    /// the sums of the owner whose contacts are under way.
+    /// Stages 2 and 3 of `run_with` for the contacts in `s.batch`, which it empties; `s.own`
+    /// holds the sums of the owner whose contacts are under way.
     ///
     /// Never inlined: called once per `BATCH` close pairs, it would otherwise crowd the filter
     /// loop's registers and make it reload its constants from the stack at every candidate
@@ -685,6 +685,7 @@ impl Batch {
         // k < BATCH already; the mask only lets the compiler drop the bounds tests.
         const { assert!(BATCH.is_power_of_two()) };
         let k = k & (BATCH - 1);
+        // A task's pairs are far fewer than 2^31 (each takes over 60 bytes).
         self.p[k] = (p as u32) << 1 | u32::from(touched & 1);
         k + usize::from(close)
     }

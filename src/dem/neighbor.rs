@@ -192,7 +192,6 @@ impl CellGrid {
 #[derive(Clone, Debug, Default)]
 struct ChunkOut {
     partner: Vec<u32>,
-    owner: Vec<u32>,
     count: Vec<u32>,
 }
 
@@ -527,23 +526,19 @@ impl NeighborList {
                 out.count.push((len - before) as u32);
             }
             buf.truncate(len);
-            out.owner.clear();
-            for (i, &k) in (c * CHUNK..).zip(&out.count) {
-                out.owner.extend(std::iter::repeat_n(i as u32, k as usize));
-            }
         });
         self.offsets.clear();
         self.offsets.push(0);
         self.partner.clear();
         self.owner.clear();
         let mut total = 0u32;
-        for ch in &self.chunks {
-            for &k in &ch.count {
+        for (c, ch) in self.chunks.iter().enumerate() {
+            for (i, &k) in (c * CHUNK..).zip(&ch.count) {
                 total += k;
                 self.offsets.push(total);
+                self.owner.extend(std::iter::repeat_n(i as u32, k as usize));
             }
             self.partner.extend_from_slice(&ch.partner);
-            self.owner.extend_from_slice(&ch.owner);
         }
     }
 }
