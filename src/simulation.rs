@@ -16,6 +16,9 @@
 //!    rigid shape [34]-[36], [41]-[49]
 //! 9. stability checks: NaN, absurd speed, overlap beyond bound
 //!
+//! [`Simulation::advance`] takes several steps, doing phase 1 of each step in the pass of
+//! phase 7 of the one before (to the same bits) where nothing else comes between them.
+//!
 //! With a fluid ([`Simulation::with_fluid`]) one step of the simulation is one fluid step
 //! Δt_f with the DEM steps inside it (coupled by `crate::coupling` when the scenario has
 //! `[coupling]`; the order is in `simulation/fluid_steps.rs`): Δt_f is the adaptive step of `fluid::timestep` (CFL and viscous limits, capped by
@@ -33,7 +36,7 @@ use crate::coupling::Coupling;
 use crate::dem::contacts::SavedContact;
 use crate::dem::forces::{compute_forces, start_forces, Kick};
 use crate::dem::insertion::Feeder;
-use crate::dem::integrate::{half_kick, open_step};
+use crate::dem::integrate::{half_kick, open_step, Opener, Opening};
 use crate::dem::spheres::Spheres;
 use crate::dem::wall_contacts::SavedWallContacts;
 use crate::dem::Dem;
@@ -175,8 +178,43 @@ impl Simulation {
         self.step_towards(f64::INFINITY)
     }
 
+    /// Advances `n` time steps, as `n` calls of `step` would and to the same bits, but faster
+    /// where it can: without a fluid, blocks or links, the closing pass of each step but the
+    /// last also opens the next one (phase 6 of a step and phase 1 of the next in one pass over
+    /// the spheres, `forces::Kick::open_next`). In between the steps the state is not that of
+    /// a step's end (velocities are half a kick ahead), which is why only a whole `advance`
+    /// does this: the state it returns in is the end of step n.
+    ///
+    /// Should step k fail its checks, the error is that of `step`, but the state left is that
+    /// of the next step's opening when the checks ran in a fused pass (positions one drift on).
+    pub fn advance(&mut self, n: u64) -> Result<(), Instability> {
+        if self.fluid.is_some() || !self.rigid.is_empty() || self.coupling.is_some() {
+            for _ in 0..n {
+                self.step()?;
+            }
+            return Ok(());
+        }
+        let mut opened = None;
+        for k in 0..n {
+            self.step += 1;
+            opened = self.dem_step_with(opened, k + 1 < n)?;
+        }
+        Ok(())
+    }
+
     /// One DEM step Δt, phases 1-8 above (the caller counts `self.step`).
     fn dem_step(&mut self) -> Result<(), Instability> {
+        self.dem_step_with(None, false).map(|_| ())
+    }
+
+    /// `dem_step`, whose opening was already done (by the last step's closing) when `opened`
+    /// holds what it found; with `open_next` (only without blocks, links and coupling), the
+    /// closing also opens the next step and returns what that found.
+    fn dem_step_with(
+        &mut self,
+        opened: Option<Opening>,
+        open_next: bool,
+    ) -> Result<Option<Opening>, Instability> {
         let clock = Instant::now();
         let dt = self.dem.dt;
         let d = &mut self.dem;
@@ -187,14 +225,16 @@ impl Simulation {
             half_kick(&mut d.spheres, dt);
             self.rigid.project_velocities(&mut d.spheres, &d.domain);
         }
-        let opening = open_step(
-            &mut d.spheres,
-            dt,
-            !linked,
-            &d.domain,
-            d.gravity,
-            d.limits.max_speed,
-        );
+        let opening = opened.unwrap_or_else(|| {
+            open_step(
+                &mut d.spheres,
+                dt,
+                !linked,
+                &d.domain,
+                d.gravity,
+                d.limits.max_speed,
+            )
+        });
         d.neighbors.note_drift(opening.max_drift);
         let clock = lap(clock, &mut self.dem_times.opening);
         let t_new = self.time + dt;
@@ -217,15 +257,19 @@ impl Simulation {
             self.dem.rebuild_lists(self.time);
         }
         let clock = lap(clock, &mut self.dem_times.lists);
+        let d = &self.dem;
+        let fused = !linked && self.coupling.is_none();
         let kick = Kick {
             half_dt: 0.5 * dt,
-            max_speed: self.dem.limits.max_speed,
+            max_speed: d.limits.max_speed,
+            open_next: (fused && open_next)
+                .then(|| Opener::new(dt, true, &d.domain, d.gravity, d.limits.max_speed)),
         };
-        if !linked && self.coupling.is_none() {
+        if fused {
             // The closing half kick is fused into the force pass.
-            let bad = compute_forces(&mut self.dem, self.time, Some(kick), true);
+            let closing = compute_forces(&mut self.dem, self.time, Some(kick), true);
             lap(clock, &mut self.dem_times.forces);
-            return self.check(bad);
+            return self.check(closing.bad).map(|()| closing.opened);
         }
         compute_forces(&mut self.dem, self.time, None, true);
         self.add_body_forces();
@@ -238,7 +282,7 @@ impl Simulation {
         }
         let bad = first_unstable(&d.spheres, kick.max_speed);
         lap(clock, &mut self.dem_times.forces);
-        self.check(bad)
+        self.check(bad).map(|()| None)
     }
 
     /// The water's held load ([59] [61], drag [5]), then the wires and bonds between bodies,

@@ -206,9 +206,7 @@ pub fn run_b2(sim: &mut Simulation, steps: u64, every: u64) -> Result<B2Result, 
     while done < steps {
         let chunk = every.max(1).min(steps - done);
         let t = Instant::now();
-        for _ in 0..chunk {
-            sim.step()?;
-        }
+        sim.advance(chunk)?;
         loop_seconds += t.elapsed().as_secs_f64();
         done += chunk;
         rows.push(b2_row(sim));

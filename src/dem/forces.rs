@@ -23,6 +23,7 @@ mod pair_kernel;
 use rayon::prelude::*;
 
 use super::contact::{contact_force, Pair};
+use super::integrate::{Opener, Opening};
 use super::par::{for_chunks, MIN_SPHERES_PER_TASK};
 use super::spheres::Spheres;
 use super::wall_contacts::{WallEntry, CHUNK};
@@ -39,6 +40,18 @@ pub struct Kick {
     pub half_dt: f64,
     /// Speed above which a sphere counts as unstable [m s⁻¹].
     pub max_speed: f64,
+    /// The next step's opening, done to each sphere right after its closing half kick (one
+    /// pass over the spheres instead of two; `Simulation::advance`), or `None`.
+    pub open_next: Option<Opener>,
+}
+
+/// What the closing of a step found (`compute_forces` with a `Kick`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Closing {
+    /// The lowest slot whose state is not finite or whose speed exceeds the limit, if any.
+    pub bad: Option<usize>,
+    /// What the next step's opening found, when the kick did it (`Kick::open_next`).
+    pub opened: Option<Opening>,
 }
 
 /// Sets every force to gravity, m g (zero for fixed spheres), and every torque to zero.
@@ -61,16 +74,11 @@ pub fn start_forces(s: &mut Spheres, gravity: Vec3) {
 
 /// Adds the contact forces and torques at time `t` (positions already at t, forces started
 /// with `start_forces`) and updates the contact history; with `kick`, then applies the
-/// closing half kick v += (Δt/2) F/m, ω += (Δt/2) T/I [1][2] and returns the slot of a sphere
-/// whose state is not finite or whose speed exceeds the limit (the lowest such slot), if any.
+/// closing half kick v += (Δt/2) F/m, ω += (Δt/2) T/I [1][2], the checks, and the next step's
+/// opening if asked (`Kick::open_next`), and returns what they found.
 /// `advance_history` is false for the evaluation that starts a run: it reads the history
 /// without advancing it, as LAMMPS and LIGGGHTS do at set-up.
-pub fn compute_forces(
-    dem: &mut Dem,
-    t: f64,
-    kick: Option<Kick>,
-    advance_history: bool,
-) -> Option<usize> {
+pub fn compute_forces(dem: &mut Dem, t: f64, kick: Option<Kick>, advance_history: bool) -> Closing {
     let dt_history = if advance_history { dem.dt } else { 0.0 };
     let pairs = pair_pass(dem, dt_history);
     let spheres = sphere_pass(dem, t, dt_history, kick);
@@ -81,7 +89,14 @@ pub fn compute_forces(
     let worst = larger(pairs.worst, spheres.worst);
     st.max_overlap_ratio = worst.0;
     st.max_overlap_slot = worst.1;
-    spheres.bad
+    let opened = kick.and_then(|k| k.open_next).map(|_| Opening {
+        max_drift: spheres.opening.max_drift.sqrt(),
+        ..spheres.opening
+    });
+    Closing {
+        bad: spheres.bad,
+        opened,
+    }
 }
 
 /// Counters of a pass.
@@ -93,6 +108,8 @@ struct Tally {
     worst: (f64, usize),
     /// Lowest slot found unstable.
     bad: Option<usize>,
+    /// The next step's opening, when the closing did it (`max_drift` squared).
+    opening: Opening,
 }
 
 impl Tally {
@@ -101,6 +118,10 @@ impl Tally {
         dropped: 0,
         worst: (0.0, usize::MAX),
         bad: None,
+        opening: Opening {
+            max_drift: 0.0,
+            outside: 0,
+        },
     };
 
     fn merge(a: Tally, b: Tally) -> Tally {
@@ -112,6 +133,7 @@ impl Tally {
                 (Some(x), Some(y)) => Some(x.min(y)),
                 (x, y) => x.or(y),
             },
+            opening: Opening::merge(a.opening, b.opening),
         }
     }
 }
@@ -318,100 +340,111 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
         torque,
         ..
     } = &mut dem.spheres;
-    let (position, radius, mass, inertia, material, fixed) =
-        (&*position, &*radius, &*mass, &*inertia, &*material, &*fixed);
+    let (radius, mass, inertia, material, fixed) =
+        (&*radius, &*mass, &*inertia, &*material, &*fixed);
     let bounds = |c: usize| ((c * CHUNK).min(n), chunk_entry[c] as usize);
-    let leaf = |c: usize, ((f, tq), (v, w)): (Pair2, Pair2), ents: &mut [WallEntry]| {
-        let i0 = c * CHUNK;
-        let mut tally = Tally::ZERO;
-        // Walls, for the spheres that have some within reach.
-        let mut buf = ContactBuf::new();
-        let mut hits = Hits::default();
-        for e in 0..ents.len() {
-            // The spheres of the entries are scattered over the slots: ask for the state of
-            // the one four entries ahead while this one is computed (B1 on 1 thread: the wall
-            // part of this pass 9.0 s -> 6.0 s over 6,000 steps).
-            if let Some(ahead) = ents.get(e + 4) {
-                let a = ahead.sphere as usize;
-                prefetch(&position[a]);
-                prefetch(&v[a - i0]);
-                prefetch(&w[a - i0]);
-                prefetch(&f[a - i0]);
-                prefetch(&tq[a - i0]);
-            }
-            let entry = &mut ents[e];
-            let i = entry.sphere as usize;
-            let k = i - i0;
-            hits.clear();
-            for nw in &near[entry.near.0 as usize..entry.near.1 as usize] {
-                walls[nw.wall as usize].contacts(
-                    nw.wall,
-                    position[i],
-                    radius[i],
-                    t,
-                    &triangles[nw.tri.0 as usize..nw.tri.1 as usize],
-                    &mut buf,
-                    &mut hits,
-                );
-            }
-            let mut hist = [Vec3::ZERO; WALL_SLOTS];
-            match_history(&mut entry.slots, &hits, &mut hist);
-            for (s, h) in hits.iter().enumerate() {
-                let p = Pair::new(
-                    h.contact.normal,
-                    h.contact.overlap,
-                    v[k] - h.velocity,
-                    (w[k], Vec3::ZERO),
-                    (radius[i], f64::INFINITY),
-                    (
-                        if fixed[i] { f64::INFINITY } else { mass[i] },
-                        f64::INFINITY,
-                    ),
-                );
-                let m_wall = walls[h.wall as usize].material as usize;
-                let law = &laws[material[i] as usize * n_mat + m_wall];
-                let r = contact_force(law, &p, &mut hist[s], dt);
-                entry.slots[s].history = hist[s];
-                f[k] += r.force;
-                tq[k] += r.torque_i;
-                tally.worst = larger(tally.worst, (h.contact.overlap / radius[i], i));
-            }
-            tally.contacts += hits.len;
-            tally.dropped += hits.dropped;
-        }
-        // The closing half kick and the checks. Each sphere is loaded once and stored once
-        // (see `integrate::open_step`: a vector read back just after a store in parts stalls).
-        if let Some(kick) = kick {
-            let n = f.len();
-            let h = kick.half_dt;
-            let max2 = kick.max_speed * kick.max_speed;
-            let (tq, v, w) = (&tq[..n], &mut v[..n], &mut w[..n]);
-            let (mass, inertia) = (&mass[i0..i0 + n], &inertia[i0..i0 + n]);
-            let (fixed, position) = (&fixed[i0..i0 + n], &position[i0..i0 + n]);
-            for k in 0..n {
-                let (mut vk, mut wk) = (v[k], w[k]);
-                if !fixed[k] {
-                    vk += h / mass[k] * f[k];
-                    wk += h / inertia[k] * tq[k];
-                    v[k] = vk;
-                    w[k] = wk;
+    let leaf =
+        |c: usize, ((f, tq), (v, w), x): (Pair2, Pair2, &mut [Vec3]), ents: &mut [WallEntry]| {
+            let i0 = c * CHUNK;
+            let mut tally = Tally::ZERO;
+            // Walls, for the spheres that have some within reach.
+            let mut buf = ContactBuf::new();
+            let mut hits = Hits::default();
+            for e in 0..ents.len() {
+                // The spheres of the entries are scattered over the slots: ask for the state of
+                // the one four entries ahead while this one is computed (B1 on 1 thread: the wall
+                // part of this pass 9.0 s -> 6.0 s over 6,000 steps).
+                if let Some(ahead) = ents.get(e + 4) {
+                    let a = ahead.sphere as usize;
+                    prefetch(&x[a - i0]);
+                    prefetch(&v[a - i0]);
+                    prefetch(&w[a - i0]);
+                    prefetch(&f[a - i0]);
+                    prefetch(&tq[a - i0]);
                 }
-                // Non-finite values propagate into the sum; NaN fails the comparison.
-                let x = position[k];
-                let fine = (x.x + x.y + x.z + wk.x + wk.y + wk.z).is_finite()
-                    && vk.length_squared() <= max2;
-                if !fine && tally.bad.is_none() {
-                    tally.bad = Some(i0 + k);
+                let entry = &mut ents[e];
+                let i = entry.sphere as usize;
+                let k = i - i0;
+                hits.clear();
+                for nw in &near[entry.near.0 as usize..entry.near.1 as usize] {
+                    walls[nw.wall as usize].contacts(
+                        nw.wall,
+                        x[k],
+                        radius[i],
+                        t,
+                        &triangles[nw.tri.0 as usize..nw.tri.1 as usize],
+                        &mut buf,
+                        &mut hits,
+                    );
                 }
+                let mut hist = [Vec3::ZERO; WALL_SLOTS];
+                match_history(&mut entry.slots, &hits, &mut hist);
+                for (s, h) in hits.iter().enumerate() {
+                    let p = Pair::new(
+                        h.contact.normal,
+                        h.contact.overlap,
+                        v[k] - h.velocity,
+                        (w[k], Vec3::ZERO),
+                        (radius[i], f64::INFINITY),
+                        (
+                            if fixed[i] { f64::INFINITY } else { mass[i] },
+                            f64::INFINITY,
+                        ),
+                    );
+                    let m_wall = walls[h.wall as usize].material as usize;
+                    let law = &laws[material[i] as usize * n_mat + m_wall];
+                    let r = contact_force(law, &p, &mut hist[s], dt);
+                    entry.slots[s].history = hist[s];
+                    f[k] += r.force;
+                    tq[k] += r.torque_i;
+                    tally.worst = larger(tally.worst, (h.contact.overlap / radius[i], i));
+                }
+                tally.contacts += hits.len;
+                tally.dropped += hits.dropped;
             }
-        }
-        tally
-    };
+            // The closing half kick and the checks, then the next step's opening if asked. Each
+            // sphere is loaded once and stored once (see `integrate::open_step`: a vector read
+            // back just after a store in parts stalls).
+            if let Some(kick) = kick {
+                let n = f.len();
+                let h = kick.half_dt;
+                let max2 = kick.max_speed * kick.max_speed;
+                let (tq, v, w, x) = (&mut tq[..n], &mut v[..n], &mut w[..n], &mut x[..n]);
+                let (mass, inertia, fixed) =
+                    (&mass[i0..i0 + n], &inertia[i0..i0 + n], &fixed[i0..i0 + n]);
+                let mut o = Opening::default();
+                for k in 0..n {
+                    let (mut vk, mut wk) = (v[k], w[k]);
+                    if !fixed[k] {
+                        vk += h / mass[k] * f[k];
+                        wk += h / inertia[k] * tq[k];
+                    }
+                    // Non-finite values propagate into the sum; NaN fails the comparison.
+                    let xk = x[k];
+                    let fine = (xk.x + xk.y + xk.z + wk.x + wk.y + wk.z).is_finite()
+                        && vk.length_squared() <= max2;
+                    if !fine && tally.bad.is_none() {
+                        tally.bad = Some(i0 + k);
+                    }
+                    match &kick.open_next {
+                        None => (v[k], w[k]) = (vk, wk),
+                        Some(op) => {
+                            let state = (xk, vk, wk, f[k], tq[k]);
+                            (x[k], v[k], w[k], f[k], tq[k]) =
+                                op.open(state, mass[k], inertia[k], fixed[k], &mut o);
+                        }
+                    }
+                }
+                tally.opening = o;
+            }
+            tally
+        };
     for_chunks(
         0..n.div_ceil(CHUNK),
         (
             (&mut force[..], &mut torque[..]),
             (&mut velocity[..], &mut angular_velocity[..]),
+            &mut position[..],
         ),
         &mut entries[..],
         &bounds,

@@ -10,7 +10,7 @@
 
 use rayon::prelude::*;
 
-use super::domain::Domain;
+use super::domain::{Domain, Images};
 use super::par::{for_chunks, MIN_SPHERES_PER_TASK};
 use super::spheres::Spheres;
 use crate::math::{is_finite, Vec3};
@@ -55,16 +55,93 @@ pub struct Opening {
     pub outside: usize,
 }
 
+impl Opening {
+    /// The two parts' findings together (`max_drift` as found: squared in the passes).
+    pub fn merge(a: Opening, b: Opening) -> Opening {
+        Opening {
+            max_drift: a.max_drift.max(b.max_drift),
+            outside: a.outside + b.outside,
+        }
+    }
+}
+
+/// The opening of a step for one sphere at a time: what `open_step` does to each, and what the
+/// closing pass of a step does to each when it opens the next step at once
+/// (`forces::Kick::open_next`).
+#[derive(Clone, Copy, Debug)]
+pub struct Opener {
+    /// Δt [s].
+    pub dt: f64,
+    /// Whether to half-kick (false: the caller has, see `open_step`).
+    pub kick: bool,
+    /// The periodic images of the domain.
+    pub images: Images,
+    /// Gravity g [m s⁻²].
+    pub gravity: Vec3,
+    /// The square of `Limits::max_speed` [m² s⁻²].
+    pub max_speed2: f64,
+}
+
+/// One sphere's state as the opening reads and writes it: x, v, ω, F, T.
+pub type State = (Vec3, Vec3, Vec3, Vec3, Vec3);
+
+impl Opener {
+    /// The opener of a step of `dt` in `domain` [1][2].
+    pub fn new(dt: f64, kick: bool, domain: &Domain, gravity: Vec3, max_speed: f64) -> Self {
+        Opener {
+            dt,
+            kick,
+            images: domain.images(),
+            gravity,
+            max_speed2: max_speed * max_speed,
+        }
+    }
+
+    /// Half kick v += (Δt/2) F/m, ω += (Δt/2) T/I [1][2], drift x += Δt v [1], wrap, and the
+    /// forces started at m g, T = 0, for a sphere of mass `m` [kg] and moment of inertia
+    /// `inertia` [kg m²] (a `fixed` one only gets F = T = 0). Notes |Δt v|² and an outflow
+    /// in `o` (whose `max_drift` holds the square).
+    #[inline(always)]
+    pub fn open(
+        &self,
+        (x, v, w, f, t): State,
+        m: f64,
+        inertia: f64,
+        fixed: bool,
+        o: &mut Opening,
+    ) -> State {
+        let (mut x, mut v, mut w) = (x, v, w);
+        let f_new = if fixed {
+            Vec3::ZERO
+        } else {
+            let h = 0.5 * self.dt;
+            if self.kick {
+                v += h / m * f;
+                w += h / inertia * t;
+            }
+            let drift = self.dt * v;
+            o.max_drift = o.max_drift.max(drift.length_squared());
+            x = self.images.wrap(x + drift);
+            m * self.gravity
+        };
+        // Outside along an open axis, finite and not absurdly fast: an outflow.
+        if !self.images.contains(x) && is_finite(x) && v.length_squared() <= self.max_speed2 {
+            o.outside += 1;
+        }
+        (x, v, w, f_new, Vec3::ZERO)
+    }
+}
+
 /// Spheres per parallel work item of `open_step`.
 const CHUNK: usize = 4096;
 
 /// The opening of a step in one pass over the spheres: half kick with the current forces and
 /// drift [1][2] (as `half_kick` and `drift`), wrap of the periodic axes, the largest drift (for
 /// the neighbour list's displacement bound) and the outflow count; then the forces are started
-/// at gravity, m g, for the coming evaluation (`forces::start_forces`).
+/// at gravity, m g, for the coming evaluation (`forces::start_forces`); `Opener::open` sphere
+/// by sphere.
 /// With `kick` false the half kick is left out (the caller has done it: rigid blocks put
 /// their members' velocities back in the rigid shape between the kick and the drift).
-#[allow(clippy::too_many_arguments)]
 pub fn open_step(
     s: &mut Spheres,
     dt: f64,
@@ -73,10 +150,8 @@ pub fn open_step(
     gravity: Vec3,
     max_speed: f64,
 ) -> Opening {
-    let h = 0.5 * dt;
-    let max2 = max_speed * max_speed;
+    let opener = Opener::new(dt, kick, domain, gravity, max_speed);
     let n = s.len();
-    let im = domain.images();
     let Spheres {
         position,
         velocity,
@@ -97,33 +172,12 @@ pub fn open_step(
         let n = x.len();
         let (v, w, f, t) = (&mut v[..n], &mut w[..n], &mut f[..n], &mut t[..n]);
         let (mass, inertia, fixed) = (&mass[i0..i0 + n], &inertia[i0..i0 + n], &fixed[i0..i0 + n]);
-        // The largest |Δt v|², square-rooted once at the end.
-        let mut drift2: f64 = 0.0;
         let mut o = Opening::default();
         for k in 0..n {
-            let (mut xk, mut vk) = (x[k], v[k]);
-            if !fixed[k] {
-                let m = mass[k];
-                if kick {
-                    vk += h / m * f[k];
-                    w[k] += h / inertia[k] * t[k];
-                    v[k] = vk;
-                }
-                let drift = dt * vk;
-                drift2 = drift2.max(drift.length_squared());
-                xk = im.wrap(xk + drift);
-                x[k] = xk;
-                f[k] = m * gravity;
-            } else {
-                f[k] = Vec3::ZERO;
-            }
-            t[k] = Vec3::ZERO;
-            // Outside along an open axis, finite and not absurdly fast: an outflow.
-            if !im.contains(xk) && is_finite(xk) && vk.length_squared() <= max2 {
-                o.outside += 1;
-            }
+            let state = (x[k], v[k], w[k], f[k], t[k]);
+            (x[k], v[k], w[k], f[k], t[k]) =
+                opener.open(state, mass[k], inertia[k], fixed[k], &mut o);
         }
-        o.max_drift = drift2;
         o
     };
     for_chunks(
@@ -135,10 +189,7 @@ pub fn open_step(
         (),
         &|c| ((c * CHUNK).min(n), 0),
         &leaf,
-        &|a: Opening, b: Opening| Opening {
-            max_drift: a.max_drift.max(b.max_drift),
-            outside: a.outside + b.outside,
-        },
+        &Opening::merge,
     )
     .map(|o| Opening {
         max_drift: o.max_drift.sqrt(),

@@ -73,6 +73,15 @@ impl Schedule {
         }
     }
 
+    /// Steps from step `step` to the next step at which a step schedule is due (1 to n), or
+    /// `None` for a time schedule, which cannot tell before the steps are taken.
+    pub fn steps_to_next(&self, step: u64) -> Option<u64> {
+        match self {
+            Schedule::Steps(n) => Some(n - step % n),
+            Schedule::Time { .. } => None,
+        }
+    }
+
     /// True when the schedule fired at (or was started at) step `step`: the run's final output
     /// is then already written.
     pub fn fired_at(&self, step: u64) -> bool {
