@@ -158,11 +158,15 @@ fn collision_across_faces_is_as_in_the_middle() {
 }
 
 /// A packing of 2 %-overlapping spheres across x and y (periodic; x is the slab axis, with the
-/// most cells) after 30 steps, its forces by sphere id.
-fn packing_forces(slabs: usize, shift: f64, threads: usize) -> Vec<(u64, [u64; 6], Vec3)> {
+/// most cells, `layers` of them) after 30 steps, cut into `slabs` slabs, its forces by sphere id.
+fn packing_forces(
+    (layers, slabs): (usize, usize),
+    shift: f64,
+    threads: usize,
+) -> Vec<(u64, [u64; 6], Vec3)> {
     let mat = material(2500.0, 5.0e7, 0.3, 0.4, 0.5);
-    // Cells are at least 2 R + skin = 2.4 R wide, so the box holds `slabs` of them along x.
-    let lx = slabs as f64 * 2.45 * R;
+    // Cells are at least 2 R + skin = 2.4 R wide, so the box holds `layers` of them along x.
+    let lx = layers as f64 * 2.45 * R;
     let ly = 4.0 * 2.45 * R;
     let domain = Domain {
         min: Vec3::ZERO,
@@ -216,7 +220,8 @@ fn packing_forces(slabs: usize, shift: f64, threads: usize) -> Vec<(u64, [u64; 6
 
 /// The pairs of the last slab reach into the first across the periodic face; they run with the
 /// odd slabs when the slab count is even and alone after both phases when it is odd
-/// (`forces::pair_pass`). For 14 and 15 slabs the forces and torques are bitwise the same on
+/// (`forces::pair_pass`). For 7 slabs of one cell layer and 8 slabs of 15 layers (one or two
+/// each: so few spheres make the fewest slabs, 8) the forces and torques are bitwise the same on
 /// 1 and 2 threads, and equal those of the same packing shifted by 0.37 of the box along x, so
 /// that other pairs wrap, to 1e-9 of the largest force: the runs differ only in the
 /// rounding of the shifted coordinates (1e-16 of the box, 1e-12 of an overlap of 4e-4 m),
@@ -224,10 +229,10 @@ fn packing_forces(slabs: usize, shift: f64, threads: usize) -> Vec<(u64, [u64; 6
 /// a whole contact force.
 #[test]
 fn forces_of_the_wrapping_slab_for_even_and_odd_slab_counts() {
-    for slabs in [14, 15] {
-        let one = packing_forces(slabs, 0.0, 1);
-        let two = packing_forces(slabs, 0.0, 2);
-        let shifted = packing_forces(slabs, 0.37, 1);
+    for (layers, slabs) in [(7, 7), (15, 8)] {
+        let one = packing_forces((layers, slabs), 0.0, 1);
+        let two = packing_forces((layers, slabs), 0.0, 2);
+        let shifted = packing_forces((layers, slabs), 0.37, 1);
         assert!(
             one.iter().zip(&two).all(|(a, b)| a.0 == b.0 && a.1 == b.1),
             "{slabs} slabs: 1 and 2 threads differ"
