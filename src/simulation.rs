@@ -180,15 +180,15 @@ impl Simulation {
 
     /// Advances `n` time steps, as `n` calls of `step` would and to the same bits, but faster
     /// where it can: without a fluid, blocks or links, the closing pass of each step but the
-    /// last also opens the next one (phase 6 of a step and phase 1 of the next in one pass over
-    /// the spheres, `forces::Kick::open_next`). In between the steps the state is not that of
+    /// last also opens the next one (phases 7 and 9 of a step and 1-2 of the next in one pass
+    /// over the spheres, `forces::Kick::open_next`). In between the steps the state is not that of
     /// a step's end (velocities are half a kick ahead), which is why only a whole `advance`
     /// does this: the state it returns in is the end of step n.
     ///
     /// Should step k fail its checks, the error is that of `step`, but the state left is that
     /// of the next step's opening when the checks ran in a fused pass (positions one drift on).
     pub fn advance(&mut self, n: u64) -> Result<(), Instability> {
-        if self.fluid.is_some() || !self.rigid.is_empty() || self.coupling.is_some() {
+        if self.fluid.is_some() || !self.closes_in_force_pass() {
             for _ in 0..n {
                 self.step()?;
             }
@@ -200,6 +200,13 @@ impl Simulation {
             opened = self.dem_step_with(opened, k + 1 < n)?;
         }
         Ok(())
+    }
+
+    /// True when a step's closing half kick and checks run in the force pass, which can then
+    /// also open the next step: no blocks or links (their recovery comes between), no coupling
+    /// (its loads are added after the contacts).
+    fn closes_in_force_pass(&self) -> bool {
+        self.rigid.is_empty() && self.coupling.is_none()
     }
 
     /// One DEM step Δt, phases 1-8 above (the caller counts `self.step`).
@@ -257,8 +264,8 @@ impl Simulation {
             self.dem.rebuild_lists(self.time);
         }
         let clock = lap(clock, &mut self.dem_times.lists);
+        let fused = self.closes_in_force_pass();
         let d = &self.dem;
-        let fused = !linked && self.coupling.is_none();
         let kick = Kick {
             half_dt: 0.5 * dt,
             max_speed: d.limits.max_speed,

@@ -646,9 +646,6 @@ pub(crate) mod tests {
         (s, d)
     }
 
-    /// The list holds exactly the brute-force pairs (mixed sizes, periodic axes, boxes only a
-    /// few cells wide), each once, under an owner that respects the slab rule, and the spheres
-    /// end up sorted with ids and the id → slot table consistent.
     /// Slabs group whole layers to about `SLAB_SPHERES` spheres, but stay at least `MIN_SLABS`
     /// (or one per layer when there are fewer layers).
     #[test]
@@ -661,6 +658,9 @@ pub(crate) mod tests {
         assert_eq!(slab_count(0, 0), 1);
     }
 
+    /// The list holds exactly the brute-force pairs (mixed sizes, periodic axes, boxes only a
+    /// few cells wide), each once, under an owner that respects the slab rule, and the spheres
+    /// end up sorted with ids and the id → slot table consistent.
     #[test]
     fn matches_brute_force() {
         for (periodic, size) in [

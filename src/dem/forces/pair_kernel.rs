@@ -477,7 +477,10 @@ struct Owner {
 /// A contact law the pair loop is compiled for.
 trait Kernel {
     /// The square roots the law takes per contact, from R*, m* and δ ≥ 0 (zeros if none).
-    fn roots(r_star: f64, m_star: f64, delta: f64) -> [f64; 2];
+    #[inline(always)]
+    fn roots(_r_star: f64, _m_star: f64, _delta: f64) -> [f64; 2] {
+        [0.0; 2]
+    }
     /// The law's constants for one material pair, as `Lanes::params` holds them.
     fn params(law: &PairLaw) -> [f64; 5];
     /// The reactions and updated histories of the first `len` lanes (as
@@ -493,11 +496,6 @@ struct HertzMindlin;
 struct Hooke;
 
 impl Kernel for AnyLaw {
-    #[inline(always)]
-    fn roots(_: f64, _: f64, _: f64) -> [f64; 2] {
-        [0.0; 2]
-    }
-
     #[inline(always)]
     fn params(_: &PairLaw) -> [f64; 5] {
         [0.0; 5]
@@ -546,11 +544,6 @@ impl Kernel for HertzMindlin {
 }
 
 impl Kernel for Hooke {
-    #[inline(always)]
-    fn roots(_: f64, _: f64, _: f64) -> [f64; 2] {
-        [0.0; 2]
-    }
-
     #[inline(always)]
     fn params(law: &PairLaw) -> [f64; 5] {
         lanes::hooke_params(law)
