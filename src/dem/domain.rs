@@ -136,6 +136,16 @@ impl Images {
         x - shift
     }
 
+    /// The bounds of `wrap` and the periods: (lower, upper, period) [m].
+    pub fn wrap_box(&self) -> (Vec3, Vec3, Vec3) {
+        (self.wrap_lo, self.wrap_hi, self.length)
+    }
+
+    /// The bounds of `contains`: (lower, upper) [m].
+    pub fn open_box(&self) -> (Vec3, Vec3) {
+        (self.lo, self.hi)
+    }
+
     /// True when `x` lies inside the box along the open axes (as `Domain::contains`).
     #[inline(always)]
     pub fn contains(&self, x: Vec3) -> bool {
