@@ -23,7 +23,7 @@ mod pair_kernel;
 use rayon::prelude::*;
 
 use super::contact::{contact_force, Pair};
-use super::integrate::{self, Inertia, Motion, Opener, Opening};
+use super::integrate::{self, Opener, Opening};
 use super::par::{for_chunks, MIN_SPHERES_PER_TASK};
 use super::spheres::Spheres;
 use super::wall_contacts::{WallEntry, CHUNK};
@@ -343,91 +343,93 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
     let (radius, mass, inertia, material, fixed) =
         (&*radius, &*mass, &*inertia, &*material, &*fixed);
     let bounds = |c: usize| ((c * CHUNK).min(n), chunk_entry[c] as usize);
-    let leaf = |c: usize,
-                ((f, tq), (v, w), x): (Pair2, Pair2, &mut [Vec3]),
-                ents: &mut [WallEntry]| {
-        let i0 = c * CHUNK;
-        let mut tally = Tally::ZERO;
-        // Walls, for the spheres that have some within reach.
-        let mut buf = ContactBuf::new();
-        let mut hits = Hits::default();
-        for e in 0..ents.len() {
-            // The spheres of the entries are scattered over the slots: ask for the state of
-            // the one four entries ahead while this one is computed (B1 on 1 thread: the wall
-            // part of this pass 9.0 s -> 6.0 s over 6,000 steps).
-            if let Some(ahead) = ents.get(e + 4) {
-                let a = ahead.sphere as usize;
-                prefetch(&x[a - i0]);
-                prefetch(&v[a - i0]);
-                prefetch(&w[a - i0]);
-                prefetch(&f[a - i0]);
-                prefetch(&tq[a - i0]);
-            }
-            let entry = &mut ents[e];
-            let i = entry.sphere as usize;
-            let k = i - i0;
-            hits.clear();
-            for nw in &near[entry.near.0 as usize..entry.near.1 as usize] {
-                walls[nw.wall as usize].contacts(
-                    nw.wall,
-                    x[k],
-                    radius[i],
-                    t,
-                    &triangles[nw.tri.0 as usize..nw.tri.1 as usize],
-                    &mut buf,
-                    &mut hits,
-                );
-            }
-            let mut hist = [Vec3::ZERO; WALL_SLOTS];
-            match_history(&mut entry.slots, &hits, &mut hist);
-            for (s, h) in hits.iter().enumerate() {
-                let p = Pair::new(
-                    h.contact.normal,
-                    h.contact.overlap,
-                    v[k] - h.velocity,
-                    (w[k], Vec3::ZERO),
-                    (radius[i], f64::INFINITY),
-                    (
-                        if fixed[i] { f64::INFINITY } else { mass[i] },
-                        f64::INFINITY,
-                    ),
-                );
-                let m_wall = walls[h.wall as usize].material as usize;
-                let law = &laws[material[i] as usize * n_mat + m_wall];
-                let r = contact_force(law, &p, &mut hist[s], dt);
-                entry.slots[s].history = hist[s];
-                f[k] += r.force;
-                tq[k] += r.torque_i;
-                tally.worst = larger(tally.worst, (h.contact.overlap / radius[i], i));
-            }
-            tally.contacts += hits.len;
-            tally.dropped += hits.dropped;
-        }
-        // The closing half kick and the checks, then the next step's opening if asked.
-        if let Some(kick) = kick {
-            let n = f.len();
-            let max2 = kick.max_speed * kick.max_speed;
-            let (mass, inertia, fixed) =
-                (&mass[i0..i0 + n], &inertia[i0..i0 + n], &fixed[i0..i0 + n]);
-            let motion = (
-                &mut x[..n],
-                &mut v[..n],
-                &mut w[..n],
-                &mut f[..],
-                &mut tq[..n],
-            );
-            match &kick.open_next {
-                Some(op) => {
-                    assert_eq!(0.5 * op.dt, kick.half_dt, "one Δt for both");
-                    let (bad, o) =
-                        integrate::close_and_open(op, max2, i0, motion, (mass, inertia, fixed));
-                    (tally.bad, tally.opening) = (bad, o);
+    let leaf =
+        |c: usize, ((f, tq), (v, w), x): (Pair2, Pair2, &mut [Vec3]), ents: &mut [WallEntry]| {
+            let i0 = c * CHUNK;
+            let mut tally = Tally::ZERO;
+            // Walls, for the spheres that have some within reach.
+            let mut buf = ContactBuf::new();
+            let mut hits = Hits::default();
+            for e in 0..ents.len() {
+                // The spheres of the entries are scattered over the slots: ask for the state of
+                // the one four entries ahead while this one is computed (B1 on 1 thread: the wall
+                // part of this pass 9.0 s -> 6.0 s over 6,000 steps).
+                if let Some(ahead) = ents.get(e + 4) {
+                    let a = ahead.sphere as usize;
+                    prefetch(&x[a - i0]);
+                    prefetch(&v[a - i0]);
+                    prefetch(&w[a - i0]);
+                    prefetch(&f[a - i0]);
+                    prefetch(&tq[a - i0]);
                 }
-                None => tally.bad = close(kick.half_dt, max2, i0, motion, (mass, inertia, fixed)),
+                let entry = &mut ents[e];
+                let i = entry.sphere as usize;
+                let k = i - i0;
+                hits.clear();
+                for nw in &near[entry.near.0 as usize..entry.near.1 as usize] {
+                    walls[nw.wall as usize].contacts(
+                        nw.wall,
+                        x[k],
+                        radius[i],
+                        t,
+                        &triangles[nw.tri.0 as usize..nw.tri.1 as usize],
+                        &mut buf,
+                        &mut hits,
+                    );
+                }
+                let mut hist = [Vec3::ZERO; WALL_SLOTS];
+                match_history(&mut entry.slots, &hits, &mut hist);
+                for (s, h) in hits.iter().enumerate() {
+                    let p = Pair::new(
+                        h.contact.normal,
+                        h.contact.overlap,
+                        v[k] - h.velocity,
+                        (w[k], Vec3::ZERO),
+                        (radius[i], f64::INFINITY),
+                        (
+                            if fixed[i] { f64::INFINITY } else { mass[i] },
+                            f64::INFINITY,
+                        ),
+                    );
+                    let m_wall = walls[h.wall as usize].material as usize;
+                    let law = &laws[material[i] as usize * n_mat + m_wall];
+                    let r = contact_force(law, &p, &mut hist[s], dt);
+                    entry.slots[s].history = hist[s];
+                    f[k] += r.force;
+                    tq[k] += r.torque_i;
+                    tally.worst = larger(tally.worst, (h.contact.overlap / radius[i], i));
+                }
+                tally.contacts += hits.len;
+                tally.dropped += hits.dropped;
             }
-        }
-        tally
-    };
+            // The closing half kick and the checks, then the next step's opening if asked.
+            if let Some(kick) = kick {
+                let n = f.len();
+                let max2 = kick.max_speed * kick.max_speed;
+                let (mass, inertia, fixed) =
+                    (&mass[i0..i0 + n], &inertia[i0..i0 + n], &fixed[i0..i0 + n]);
+                let motion = (
+                    &mut x[..n],
+                    &mut v[..n],
+                    &mut w[..n],
+                    &mut f[..n],
+                    &mut tq[..n],
+                );
+                match &kick.open_next {
+                    Some(op) => {
+                        assert_eq!(0.5 * op.dt, kick.half_dt, "one Δt for both");
+                        let (bad, o) =
+                            integrate::close_and_open(op, max2, i0, motion, (mass, inertia, fixed));
+                        (tally.bad, tally.opening) = (bad, o);
+                    }
+                    None => {
+                        tally.bad =
+                            integrate::close(kick.half_dt, max2, i0, motion, (mass, inertia, fixed))
+                    }
+                }
+            }
+            tally
+        };
     for_chunks(
         0..n.div_ceil(CHUNK),
         (
@@ -441,30 +443,4 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
         &Tally::merge,
     )
     .unwrap_or(Tally::ZERO)
-}
-
-/// The closing half kick v += h F/m, ω += h T/I [1][2] (h = Δt/2 [s]) of a run of spheres whose
-/// first slot is `first`, and its check; returns the lowest slot found unstable
-/// (`integrate::stable`). Each sphere is loaded once and stored once (see
-/// `integrate::open_step`: a vector read back just after a store in parts stalls).
-fn close(
-    h: f64,
-    max_speed2: f64,
-    first: usize,
-    (x, v, w, f, t): Motion,
-    (mass, inertia, fixed): Inertia,
-) -> Option<usize> {
-    let mut bad = None;
-    for k in 0..x.len() {
-        let (mut vk, mut wk) = (v[k], w[k]);
-        if !fixed[k] {
-            vk += h / mass[k] * f[k];
-            wk += h / inertia[k] * t[k];
-        }
-        if bad.is_none() && !integrate::stable(x[k], vk, wk, max_speed2) {
-            bad = Some(first + k);
-        }
-        (v[k], w[k]) = (vk, wk);
-    }
-    bad
 }
