@@ -18,20 +18,20 @@
 //! of the spheres, which is itself a deterministic function of the run (and is restored by a
 //! restart, see `Dem::restore_lists`).
 
+mod kernel;
 mod pair_kernel;
+mod wall_kernel;
 
 use rayon::prelude::*;
 
-use super::contact::{contact_force, Pair};
 use super::integrate::{self, Opener, Opening};
 use super::par::{for_chunks, MIN_SPHERES_PER_TASK};
 use super::spheres::Spheres;
-use super::wall_contacts::{WallEntry, CHUNK};
-use super::walls::{match_history, Hits, WALL_SLOTS};
+use super::wall_contacts::CHUNK;
 use super::Dem;
-use crate::geometry::ContactBuf;
 use crate::math::Vec3;
-use pair_kernel::{prefetch, PairContext};
+use pair_kernel::PairContext;
+use wall_kernel::{Entries, WallContext};
 
 /// What the sphere pass does after the forces, during a step.
 #[derive(Clone, Copy, Debug)]
@@ -321,12 +321,8 @@ type Pair2<'a> = (&'a mut [Vec3], &'a mut [Vec3]);
 fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
     let n = dem.spheres.len();
     let wc = &mut dem.wall_contacts;
-    let (near, triangles) = (&wc.near, &wc.triangles);
     let chunk_entry = &wc.chunk_start;
-    let entries = &mut wc.entries;
-    let walls = &dem.walls;
-    let laws = &dem.laws;
-    let n_mat = dem.materials.len();
+    let entries = (&mut wc.entries[..], &mut wc.slots[..]);
     let Spheres {
         position,
         velocity,
@@ -342,94 +338,53 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
     } = &mut dem.spheres;
     let (radius, mass, inertia, material, fixed) =
         (&*radius, &*mass, &*inertia, &*material, &*fixed);
+    let walls = WallContext {
+        walls: &dem.walls,
+        near: &wc.near,
+        triangles: &wc.triangles,
+        radius,
+        mass,
+        material,
+        fixed,
+        laws: &dem.laws,
+        n_mat: dem.materials.len(),
+        t,
+        dt,
+    };
     let bounds = |c: usize| ((c * CHUNK).min(n), chunk_entry[c] as usize);
-    let leaf =
-        |c: usize, ((f, tq), (v, w), x): (Pair2, Pair2, &mut [Vec3]), ents: &mut [WallEntry]| {
-            let i0 = c * CHUNK;
-            let mut tally = Tally::ZERO;
-            // Walls, for the spheres that have some within reach.
-            let mut buf = ContactBuf::new();
-            let mut hits = Hits::default();
-            for e in 0..ents.len() {
-                // The spheres of the entries are scattered over the slots: ask for the state of
-                // the one four entries ahead while this one is computed (B1 on 1 thread: the wall
-                // part of this pass 9.0 s -> 6.0 s over 6,000 steps).
-                if let Some(ahead) = ents.get(e + 4) {
-                    let a = ahead.sphere as usize;
-                    prefetch(&x[a - i0]);
-                    prefetch(&v[a - i0]);
-                    prefetch(&w[a - i0]);
-                    prefetch(&f[a - i0]);
-                    prefetch(&tq[a - i0]);
+    let leaf = |c: usize, ((f, tq), (v, w), x): (Pair2, Pair2, &mut [Vec3]), ents: Entries| {
+        let i0 = c * CHUNK;
+        let mut tally = Tally::ZERO;
+        let state = (&x[..], &v[..], &w[..]);
+        walls.run(i0, ents, state, (&mut *f, &mut *tq), &mut tally);
+        // The closing half kick and the checks, then the next step's opening if asked.
+        if let Some(kick) = kick {
+            let n = f.len();
+            let max2 = kick.max_speed * kick.max_speed;
+            let (mass, inertia, fixed) =
+                (&mass[i0..i0 + n], &inertia[i0..i0 + n], &fixed[i0..i0 + n]);
+            let motion = (
+                &mut x[..n],
+                &mut v[..n],
+                &mut w[..n],
+                &mut f[..n],
+                &mut tq[..n],
+            );
+            match &kick.open_next {
+                Some(op) => {
+                    assert_eq!(0.5 * op.dt, kick.half_dt, "one Δt for both");
+                    let (bad, o) =
+                        integrate::close_and_open(op, max2, i0, motion, (mass, inertia, fixed));
+                    (tally.bad, tally.opening) = (bad, o);
                 }
-                let entry = &mut ents[e];
-                let i = entry.sphere as usize;
-                let k = i - i0;
-                hits.clear();
-                for nw in &near[entry.near.0 as usize..entry.near.1 as usize] {
-                    walls[nw.wall as usize].contacts(
-                        nw.wall,
-                        x[k],
-                        radius[i],
-                        t,
-                        &triangles[nw.tri.0 as usize..nw.tri.1 as usize],
-                        &mut buf,
-                        &mut hits,
-                    );
-                }
-                let mut hist = [Vec3::ZERO; WALL_SLOTS];
-                match_history(&mut entry.slots, &hits, &mut hist);
-                for (s, h) in hits.iter().enumerate() {
-                    let p = Pair::new(
-                        h.contact.normal,
-                        h.contact.overlap,
-                        v[k] - h.velocity,
-                        (w[k], Vec3::ZERO),
-                        (radius[i], f64::INFINITY),
-                        (
-                            if fixed[i] { f64::INFINITY } else { mass[i] },
-                            f64::INFINITY,
-                        ),
-                    );
-                    let m_wall = walls[h.wall as usize].material as usize;
-                    let law = &laws[material[i] as usize * n_mat + m_wall];
-                    let r = contact_force(law, &p, &mut hist[s], dt);
-                    entry.slots[s].history = hist[s];
-                    f[k] += r.force;
-                    tq[k] += r.torque_i;
-                    tally.worst = larger(tally.worst, (h.contact.overlap / radius[i], i));
-                }
-                tally.contacts += hits.len;
-                tally.dropped += hits.dropped;
-            }
-            // The closing half kick and the checks, then the next step's opening if asked.
-            if let Some(kick) = kick {
-                let n = f.len();
-                let max2 = kick.max_speed * kick.max_speed;
-                let (mass, inertia, fixed) =
-                    (&mass[i0..i0 + n], &inertia[i0..i0 + n], &fixed[i0..i0 + n]);
-                let motion = (
-                    &mut x[..n],
-                    &mut v[..n],
-                    &mut w[..n],
-                    &mut f[..n],
-                    &mut tq[..n],
-                );
-                match &kick.open_next {
-                    Some(op) => {
-                        assert_eq!(0.5 * op.dt, kick.half_dt, "one Δt for both");
-                        let (bad, o) =
-                            integrate::close_and_open(op, max2, i0, motion, (mass, inertia, fixed));
-                        (tally.bad, tally.opening) = (bad, o);
-                    }
-                    None => {
-                        tally.bad =
-                            integrate::close(kick.half_dt, max2, i0, motion, (mass, inertia, fixed))
-                    }
+                None => {
+                    tally.bad =
+                        integrate::close(kick.half_dt, max2, i0, motion, (mass, inertia, fixed))
                 }
             }
-            tally
-        };
+        }
+        tally
+    };
     for_chunks(
         0..n.div_ceil(CHUNK),
         (
@@ -437,7 +392,7 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
             (&mut velocity[..], &mut angular_velocity[..]),
             &mut position[..],
         ),
-        &mut entries[..],
+        entries,
         &bounds,
         &leaf,
         &Tally::merge,

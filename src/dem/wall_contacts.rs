@@ -5,8 +5,10 @@
 //! with the triangles within reach). Until the next rebuild a sphere moves less than skin/2 and
 //! every wall less than skin/2 (`stale` forces a rebuild otherwise), so no other wall can touch
 //! it. Most spheres reach no wall: they have no entry and cost nothing per step. Spheres that
-//! do have an entry holding their wall-contact history slots (`walls::match_history`), carried
-//! over from one build to the next by sphere.
+//! do have an entry, and history slots for their wall contacts (`walls::match_history`),
+//! carried over from one build to the next by sphere. The slots are kept apart from the
+//! entries (16 bytes each), so that the many spheres near a wall and touching none read
+//! nothing else.
 
 use serde::{Deserialize, Serialize};
 
@@ -30,8 +32,8 @@ pub struct WallEntry {
     pub sphere: u32,
     /// Its reachable walls: `near[near.0..near.1]` of `WallContacts`.
     pub near: (u32, u32),
-    /// History of its wall contacts.
-    pub slots: WallSlots,
+    /// How many of its history slots hold a contact (they fill from the front).
+    pub used: u32,
 }
 
 /// A wall within reach of a sphere.
@@ -59,6 +61,8 @@ pub struct WallContacts {
     pub entry_of: Vec<u32>,
     /// Spheres with walls within reach, by ascending slot.
     pub entries: Vec<WallEntry>,
+    /// History of the entries' wall contacts, by entry.
+    pub slots: Vec<WallSlots>,
     /// Reachable walls of the entries.
     pub near: Vec<NearWall>,
     /// Reachable mesh triangles.
@@ -71,6 +75,7 @@ pub struct WallContacts {
     pub built_at: f64,
     old_entry_of: Vec<u32>,
     old_entries: Vec<WallEntry>,
+    old_slots: Vec<WallSlots>,
     tri_buf: Vec<u32>,
 }
 
@@ -99,8 +104,10 @@ impl WallContacts {
     ) {
         std::mem::swap(&mut self.entry_of, &mut self.old_entry_of);
         std::mem::swap(&mut self.entries, &mut self.old_entries);
+        std::mem::swap(&mut self.slots, &mut self.old_slots);
         self.entry_of.clear();
         self.entries.clear();
+        self.slots.clear();
         self.near.clear();
         self.triangles.clear();
         self.chunk_start.clear();
@@ -149,16 +156,20 @@ impl WallContacts {
                 continue;
             }
             let prev = previous_slot.get(i).copied().unwrap_or(NONE);
-            let slots = match self.old_entry_of.get(prev as usize) {
-                Some(&e) if e != NONE => self.old_entries[e as usize].slots,
-                _ => WALL_SLOTS_EMPTY,
+            let (slots, used) = match self.old_entry_of.get(prev as usize) {
+                Some(&e) if e != NONE && self.old_entries[e as usize].used > 0 => (
+                    self.old_slots[e as usize],
+                    self.old_entries[e as usize].used,
+                ),
+                _ => (WALL_SLOTS_EMPTY, 0),
             };
             self.entry_of.push(self.entries.len() as u32);
             self.entries.push(WallEntry {
                 sphere: i as u32,
                 near: (first, last),
-                slots,
+                used,
             });
+            self.slots.push(slots);
         }
         self.chunk_start.push(self.entries.len() as u32);
     }
@@ -167,10 +178,11 @@ impl WallContacts {
     pub fn save(&self, spheres: &Spheres) -> Vec<SavedWallContacts> {
         self.entries
             .iter()
-            .filter(|e| e.slots[0].wall != u32::MAX)
-            .map(|e| SavedWallContacts {
+            .zip(&self.slots)
+            .filter(|(e, _)| e.used > 0)
+            .map(|(e, &slots)| SavedWallContacts {
                 id: spheres.id[e.sphere as usize],
-                slots: e.slots,
+                slots,
             })
             .collect()
     }
@@ -178,13 +190,16 @@ impl WallContacts {
     /// Puts saved history back into lists built at the saved run's build positions.
     pub fn restore(&mut self, saved: &[SavedWallContacts], spheres: &Spheres) {
         for e in &mut self.entries {
-            e.slots = WALL_SLOTS_EMPTY;
+            e.used = 0;
         }
+        self.slots.fill(WALL_SLOTS_EMPTY);
         for s in saved {
             if let Some(i) = spheres.slot_of(s.id) {
                 let e = self.entry_of[i];
                 if e != NONE {
-                    self.entries[e as usize].slots = s.slots;
+                    self.slots[e as usize] = s.slots;
+                    let used = s.slots.iter().filter(|c| c.wall != u32::MAX).count();
+                    self.entries[e as usize].used = used as u32;
                 }
             }
         }

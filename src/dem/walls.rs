@@ -189,7 +189,8 @@ impl Hits {
         self.dropped = 0;
     }
 
-    fn push(&mut self, h: WallHit) {
+    /// Adds a hit, or counts it as dropped when the list is full.
+    pub fn push(&mut self, h: WallHit) {
         if self.len < WALL_SLOTS {
             self.items[self.len] = Some(h);
             self.len += 1;

@@ -2,8 +2,8 @@
 //! candidates, then the contact law on batches of close pairs (`PairContext::run`).
 
 use super::super::contact::lanes::{self, get, put, Lanes};
-use super::super::contact::{contact_force, hertz_mindlin, Pair};
 use super::super::material::{LawKind, PairLaw};
+use super::kernel::{uniform_kind, AnyLaw, HertzMindlin, Hooke, Kernel};
 use super::{larger, Out, Tally};
 use crate::math::Vec3;
 
@@ -37,10 +37,8 @@ impl PairContext<'_> {
         touch: &mut [u8],
     ) -> Tally {
         let periodic = self.domain.periodic.iter().any(|&p| p);
-        let kind = self.laws.first().map(|l| l.kind);
-        let uniform = self.laws.iter().all(|l| Some(l.kind) == kind);
         let args = (owners, out, hist, touch);
-        match (periodic, if uniform { kind } else { None }) {
+        match (periodic, uniform_kind(self.laws)) {
             (true, Some(LawKind::HertzMindlin)) => self.run_with::<true, HertzMindlin>(args),
             (false, Some(LawKind::HertzMindlin)) => self.run_with::<false, HertzMindlin>(args),
             (true, Some(LawKind::HookeHistory)) => self.run_with::<true, Hooke>(args),
@@ -472,85 +470,4 @@ struct Owner {
     f: Vec3,
     i: usize,
     t: Vec3,
-}
-
-/// A contact law the pair loop is compiled for.
-trait Kernel {
-    /// The square roots the law takes per contact, from R*, m* and δ ≥ 0 (zeros if none).
-    #[inline(always)]
-    fn roots(_r_star: f64, _m_star: f64, _delta: f64) -> [f64; 2] {
-        [0.0; 2]
-    }
-    /// The law's constants for one material pair, as `Lanes::params` holds them.
-    fn params(law: &PairLaw) -> [f64; 5];
-    /// The reactions and updated histories of the first `len` lanes (as
-    /// `contact::contact_force`), given their `roots` and `params`.
-    fn lanes(l: &mut Lanes, laws: &[PairLaw], len: usize, dt: f64);
-}
-
-/// Any law, dispatched per pair.
-struct AnyLaw;
-/// Hertz-Mindlin only.
-struct HertzMindlin;
-/// LAMMPS Hooke with history only.
-struct Hooke;
-
-impl Kernel for AnyLaw {
-    #[inline(always)]
-    fn params(_: &PairLaw) -> [f64; 5] {
-        [0.0; 5]
-    }
-
-    /// One contact at a time, through `contact_force`.
-    #[inline(always)]
-    fn lanes(l: &mut Lanes, laws: &[PairLaw], len: usize, dt: f64) {
-        for k in 0..len.min(lanes::LANES) {
-            let pair = Pair {
-                n: get(&l.n, k),
-                delta: l.delta[k],
-                dv: get(&l.dv, k),
-                w_i: get(&l.w_i, k),
-                w_j: get(&l.w_j, k),
-                r_i: l.r_i[k],
-                r_j: l.r_j[k],
-                r_star: l.r_star[k],
-                m_star: l.m_star[k],
-            };
-            let mut h = get(&l.hist, k);
-            let r = contact_force(&laws[l.law[k] as usize], &pair, &mut h, dt);
-            put(&mut l.hist, k, h);
-            put(&mut l.force, k, r.force);
-            put(&mut l.torque_i, k, r.torque_i);
-            put(&mut l.torque_j, k, r.torque_j);
-        }
-    }
-}
-
-impl Kernel for HertzMindlin {
-    #[inline(always)]
-    fn roots(r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
-        hertz_mindlin::roots(r_star, m_star, delta)
-    }
-
-    #[inline(always)]
-    fn params(law: &PairLaw) -> [f64; 5] {
-        lanes::hertz_mindlin_params(law)
-    }
-
-    #[inline(always)]
-    fn lanes(l: &mut Lanes, _: &[PairLaw], _: usize, dt: f64) {
-        lanes::hertz_mindlin(l, dt);
-    }
-}
-
-impl Kernel for Hooke {
-    #[inline(always)]
-    fn params(law: &PairLaw) -> [f64; 5] {
-        lanes::hooke_params(law)
-    }
-
-    #[inline(always)]
-    fn lanes(l: &mut Lanes, _: &[PairLaw], _: usize, dt: f64) {
-        lanes::hooke(l, dt);
-    }
 }
