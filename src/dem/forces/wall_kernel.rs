@@ -76,6 +76,10 @@ impl WallContext<'_> {
         &self,
         (i0, (ents, slots), (x, v, w), (f, tq), tally): (usize, Entries, State, Loads, &mut Tally),
     ) {
+        // Most chunks have no sphere near a wall.
+        if ents.is_empty() {
+            return;
+        }
         let mut b = WallBatch::new::<K>();
         let mut buf = ContactBuf::new();
         let mut hits = Hits::default();
@@ -159,7 +163,9 @@ impl WallContext<'_> {
             tally.contacts += hits.len;
             tally.dropped += hits.dropped;
         }
-        self.flush::<K>(&mut b, (i0, slots, (f, tq), tally));
+        if b.len > 0 {
+            self.flush::<K>(&mut b, (i0, slots, (f, tq), tally));
+        }
     }
 
     /// Stage 2 of `run_with`: the law on the batch, and the scatter; empties the batch.
