@@ -238,13 +238,13 @@ mod tests {
     use super::*;
     use crate::dem::domain::Domain;
     use crate::dem::material::{ContactModel, Material};
+    use crate::dem::neighbor::tests::uniform;
     use crate::dem::walls::{Motion, Shape};
     use crate::dem::Dem;
     use crate::geometry::{Cuboid, Plane};
 
     /// Spheres pressed into a floor, a tilted plane and the corner of a box, with spin (some
-    /// of it −0), old history in their slots, and a fixed one; a small generator keeps the
-    /// test free of a random-number crate.
+    /// of it −0), old history in their slots, and a fixed one.
     fn scene(model: ContactModel) -> Dem {
         let material = Material {
             name: "glass".into(),
@@ -261,12 +261,7 @@ mod tests {
         };
         let mut dem = Dem::new(vec![material], model, domain, 1e-5);
         let mut s = 0x9e37_79b9_7f4a_7c15u64;
-        let mut u = move || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut u = move || uniform(&mut s) - 0.5;
         let r = 0.005;
         for k in 0..200 {
             // Along the floor z = 0, some also into the box's corner at x = y = -0.5.
