@@ -189,8 +189,7 @@ impl Hits {
         self.dropped = 0;
     }
 
-    /// Adds a hit, or counts it as dropped when the list is full.
-    pub fn push(&mut self, h: WallHit) {
+    fn push(&mut self, h: WallHit) {
         if self.len < WALL_SLOTS {
             self.items[self.len] = Some(h);
             self.len += 1;
@@ -225,21 +224,29 @@ impl Wall {
             m => (m.displacement(t), m.velocity(t)),
         };
         let q = c - d;
-        buf.clear();
-        match &self.shape {
-            Shape::Plane(s) => s.sphere_contacts(q, r, buf),
-            Shape::Cuboid(s) => s.sphere_contacts(q, r, buf),
-            Shape::Cylinder(s) => s.sphere_contacts(q, r, buf),
-            Shape::Mesh(s) => s.sphere_contacts(q, r, candidates, buf),
-        }
-        for sc in buf.iter() {
-            let mut contact = *sc;
+        let push = |out: &mut Hits, mut contact: SurfaceContact| {
             contact.point += d;
             out.push(WallHit {
                 wall: index,
                 contact,
                 velocity: u,
             });
+        };
+        buf.clear();
+        match &self.shape {
+            // At most one contact, the most common wall: straight to `out`, not via `buf`.
+            Shape::Plane(s) => {
+                if let Some(contact) = s.sphere_contact(q, r) {
+                    push(out, contact);
+                }
+                return;
+            }
+            Shape::Cuboid(s) => s.sphere_contacts(q, r, buf),
+            Shape::Cylinder(s) => s.sphere_contacts(q, r, buf),
+            Shape::Mesh(s) => s.sphere_contacts(q, r, candidates, buf),
+        }
+        for &contact in buf.iter() {
+            push(out, contact);
         }
     }
 

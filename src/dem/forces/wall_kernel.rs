@@ -5,9 +5,7 @@
 use super::super::contact::lanes::{get, put, Lanes, LANES};
 use super::super::material::{LawKind, PairLaw};
 use super::super::wall_contacts::{NearWall, WallEntry};
-use super::super::walls::{
-    match_history, Hits, Motion, Shape, Wall, WallHit, WallSlots, WALL_SLOTS,
-};
+use super::super::walls::{match_history, Hits, Wall, WallSlots, WALL_SLOTS};
 use super::kernel::{uniform_kind, AnyLaw, HertzMindlin, Hooke, Kernel};
 use super::pair_kernel::prefetch;
 use super::{larger, Tally};
@@ -63,8 +61,7 @@ impl WallContext<'_> {
     /// `run` with the law `K`, in two stages on batches of contacts:
     ///
     /// 1. *Geometry*, entry by entry: the contacts with the walls within reach
-    ///    (`Wall::contacts`; a fixed plane's directly, `Plane::sphere_contact`, the same
-    ///    contact), matched to last step's (`walls::match_history`), and put in the
+    ///    (`Wall::contacts`), matched to last step's (`walls::match_history`), and put in the
     ///    batch as the law sees a wall: a sphere of infinite radius and mass (R* = r_i,
     ///    m* = m_i, or infinite for a fixed sphere; `contact::Pair::new`).
     /// 2. *Forces*: the law on all lanes at once (`Kernel::lanes`), then the scatter in
@@ -107,28 +104,15 @@ impl WallContext<'_> {
             hits.clear();
             let r = self.radius[i];
             for nw in &self.near[entry.near.0 as usize..entry.near.1 as usize] {
-                let wall = &self.walls[nw.wall as usize];
-                match (&wall.shape, wall.motion) {
-                    // The most common wall, without the general query's buffer.
-                    (Shape::Plane(p), Motion::Fixed) => {
-                        if let Some(contact) = p.sphere_contact(x[k], r) {
-                            hits.push(WallHit {
-                                wall: nw.wall,
-                                contact,
-                                velocity: Vec3::ZERO,
-                            });
-                        }
-                    }
-                    _ => wall.contacts(
-                        nw.wall,
-                        x[k],
-                        r,
-                        self.t,
-                        &self.triangles[nw.tri.0 as usize..nw.tri.1 as usize],
-                        &mut buf,
-                        &mut hits,
-                    ),
-                }
+                self.walls[nw.wall as usize].contacts(
+                    nw.wall,
+                    x[k],
+                    r,
+                    self.t,
+                    &self.triangles[nw.tri.0 as usize..nw.tri.1 as usize],
+                    &mut buf,
+                    &mut hits,
+                );
             }
             // No contact now and none before: the history is not read.
             if hits.len == 0 && entry.used == 0 {
