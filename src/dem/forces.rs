@@ -4,8 +4,8 @@
 //! Then:
 //!
 //! 1. **Pairs.** Each owner sphere i evaluates its candidate pairs (i, j) in partner order: if
-//!    they overlap, the law [6]-[14] gives the force F on i and the torques T_i, T_j; i sums
-//!    its own, and j receives -F and T_j at once (Newton's third law). Threads run slabs of
+//!    they overlap, the law [6]-[14] gives the force F on i and the torques T_i, T_j; i
+//!    receives F and T_i, j receives -F and T_j, at once (Newton's third law). Threads run slabs of
 //!    the neighbour list (`NeighborList::slabs`): the pairs of slab k touch only slabs k and
 //!    k + 1, so the even slabs run together, then the odd ones; a last slab that wraps onto
 //!    the first runs with the odd ones when its index is odd, else alone at the end. No two
