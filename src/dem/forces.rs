@@ -322,7 +322,7 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
     let n = dem.spheres.len();
     let wc = &mut dem.wall_contacts;
     let chunk_entry = &wc.chunk_start;
-    let entries = (&mut wc.entries[..], &mut wc.slots[..]);
+    let entries = (&mut wc.entries[..], &mut wc.first[..], &mut wc.more[..]);
     let Spheres {
         position,
         velocity,

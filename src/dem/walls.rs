@@ -273,23 +273,31 @@ pub fn match_history(slots: &mut WallSlots, hits: &Hits, out: &mut [Vec3; WALL_S
     if hits.len == 0 && slots[0].wall == u32::MAX {
         return; // Slots fill from the front: no contact now and none before.
     }
-    // The common cases, a sphere on one wall or coming to it, without copying the slots: at
-    // most one contact now and at most one before (in slot 0).
     if hits.len <= 1 && slots[1].wall == u32::MAX {
-        let o = slots[0];
-        slots[0] = WallContact::EMPTY;
-        if let Some(h) = hits.iter().next() {
-            let same = o.wall == h.wall && o.normal.dot(h.contact.normal) > 0.5;
-            out[0] = if same { o.history } else { Vec3::ZERO };
-            slots[0] = WallContact {
-                wall: h.wall,
-                normal: h.contact.normal,
-                history: out[0],
-            };
-        }
+        out[0] = match_one(&mut slots[0], hits.iter().next());
         return;
     }
     match_any(slots, hits, out);
+}
+
+/// `match_history` in the common cases, a sphere on one wall or coming to it, reading only
+/// the first slot: at most one contact now (`hit`) and at most one before (in `slot`).
+/// Returns the history to use for `hit` (zero without one), and rewrites the slot.
+#[inline]
+pub fn match_one(slot: &mut WallContact, hit: Option<&WallHit>) -> Vec3 {
+    let o = *slot;
+    *slot = WallContact::EMPTY;
+    let Some(h) = hit else {
+        return Vec3::ZERO;
+    };
+    let same = o.wall == h.wall && o.normal.dot(h.contact.normal) > 0.5;
+    let history = if same { o.history } else { Vec3::ZERO };
+    *slot = WallContact {
+        wall: h.wall,
+        normal: h.contact.normal,
+        history,
+    };
+    history
 }
 
 /// `match_history` for any number of contacts.

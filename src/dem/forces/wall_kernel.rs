@@ -4,8 +4,8 @@
 
 use super::super::contact::lanes::{get, put, Lanes, LANES};
 use super::super::material::{LawKind, PairLaw};
-use super::super::wall_contacts::{NearWall, WallEntry};
-use super::super::walls::{match_history, Hits, Wall, WallSlots, WALL_SLOTS};
+use super::super::wall_contacts::{join, split, MoreSlots, NearWall, WallEntry};
+use super::super::walls::{match_history, match_one, Hits, Wall, WallContact, WALL_SLOTS};
 use super::kernel::{uniform_kind, AnyLaw, HertzMindlin, Hooke, Kernel};
 use super::pair_kernel::prefetch;
 use super::{larger, Tally};
@@ -33,8 +33,15 @@ pub(super) struct WallContext<'a> {
 /// Positions, velocities and angular velocities of a chunk's spheres.
 pub(super) type State<'c> = (&'c [Vec3], &'c [Vec3], &'c [Vec3]);
 
-/// A chunk's wall entries and their history slots.
-pub(super) type Entries<'c> = (&'c mut [WallEntry], &'c mut [WallSlots]);
+/// A chunk's wall entries and their history slots: the first, and the others.
+pub(super) type Entries<'c> = (
+    &'c mut [WallEntry],
+    &'c mut [WallContact],
+    &'c mut [MoreSlots],
+);
+
+/// A chunk's history slots, as the flush writes them.
+type Slots<'s> = (&'s mut [WallContact], &'s mut [MoreSlots]);
 
 /// Forces and torques of a chunk's spheres.
 pub(super) type Loads<'c> = (&'c mut [Vec3], &'c mut [Vec3]);
@@ -71,7 +78,13 @@ impl WallContext<'_> {
     /// of its hits, as if each contact were done from start to end before the next.
     fn run_with<K: Kernel>(
         &self,
-        (i0, (ents, slots), (x, v, w), (f, tq), tally): (usize, Entries, State, Loads, &mut Tally),
+        (i0, (ents, first, more), (x, v, w), (f, tq), tally): (
+            usize,
+            Entries,
+            State,
+            Loads,
+            &mut Tally,
+        ),
     ) {
         // Most chunks have no sphere near a wall.
         if ents.is_empty() {
@@ -89,11 +102,11 @@ impl WallContext<'_> {
                 prefetch(&x[a]);
                 prefetch(&v[a]);
                 prefetch(&w[a]);
-                prefetch(&slots[e + 4][0]);
+                prefetch(&first[e + 4]);
             }
             // A sphere has at most `WALL_SLOTS` hits: make room for them all.
             if b.len > LANES - WALL_SLOTS {
-                self.flush::<K>(&mut b, (i0, slots, (f, tq), tally));
+                self.flush::<K>(&mut b, (i0, (first, more), (f, tq), tally));
             }
             let entry = &mut ents[e];
             let i = entry.sphere as usize;
@@ -119,7 +132,13 @@ impl WallContext<'_> {
                 continue;
             }
             let mut hist = [Vec3::ZERO; WALL_SLOTS];
-            match_history(&mut slots[e], &hits, &mut hist);
+            if hits.len <= 1 && entry.used <= 1 {
+                hist[0] = match_one(&mut first[e], hits.iter().next());
+            } else {
+                let mut slots = join(first[e], &more[e]);
+                match_history(&mut slots, &hits, &mut hist);
+                (first[e], more[e]) = split(&slots);
+            }
             entry.used = hits.len as u32;
             let m = if self.fixed[i] {
                 f64::INFINITY
@@ -148,7 +167,7 @@ impl WallContext<'_> {
             tally.dropped += hits.dropped;
         }
         if b.len > 0 {
-            self.flush::<K>(&mut b, (i0, slots, (f, tq), tally));
+            self.flush::<K>(&mut b, (i0, (first, more), (f, tq), tally));
         }
     }
 
@@ -157,7 +176,7 @@ impl WallContext<'_> {
     fn flush<K: Kernel>(
         &self,
         b: &mut WallBatch,
-        (i0, slots, (f, tq), tally): (usize, &mut [WallSlots], Loads, &mut Tally),
+        (i0, (first, more), (f, tq), tally): (usize, Slots, Loads, &mut Tally),
     ) {
         let len = b.len.min(LANES);
         b.len = 0;
@@ -170,7 +189,11 @@ impl WallContext<'_> {
                 b.slot[q] as usize,
                 b.sphere[q] as usize,
             );
-            slots[e][s].history = get(&l.hist, q);
+            let h = get(&l.hist, q);
+            match s {
+                0 => first[e].history = h,
+                _ => more[e][s - 1].history = h,
+            }
             f[k] += get(&l.force, q);
             tq[k] += get(&l.torque_i, q);
             tally.worst = larger(tally.worst, (l.delta[q] / l.r_i[q], i0 + k));
@@ -223,7 +246,7 @@ mod tests {
     use crate::dem::domain::Domain;
     use crate::dem::material::{ContactModel, Material};
     use crate::dem::neighbor::tests::uniform;
-    use crate::dem::walls::{Motion, Shape};
+    use crate::dem::walls::{Motion, Shape, WallSlots};
     use crate::dem::Dem;
     use crate::geometry::{Cuboid, Plane};
 
@@ -294,10 +317,10 @@ mod tests {
         dem.rebuild_lists(0.0);
         // Old history: slot 0 of most entries, with the floor's normal, so that it carries on.
         let wc = &mut dem.wall_contacts;
-        for (k, (e, slots)) in wc.entries.iter_mut().zip(&mut wc.slots).enumerate() {
+        for (k, (e, first)) in wc.entries.iter_mut().zip(&mut wc.first).enumerate() {
             if k % 4 != 0 {
                 e.used = 1;
-                slots[0] = crate::dem::walls::WallContact {
+                *first = WallContact {
                     wall: 0,
                     normal: -Vec3::Z,
                     history: Vec3::new(u(), u(), 0.0) * 10f64.powi(-6 + (k % 3) as i32),
@@ -329,11 +352,13 @@ mod tests {
             vec![Vec3::splat(-0.0); s.len()],
             vec![Vec3::splat(-0.0); s.len()],
         );
-        let (mut ents, mut slots) = (wc.entries.clone(), wc.slots.clone());
+        let (mut ents, mut first, mut more) =
+            (wc.entries.clone(), wc.first.clone(), wc.more.clone());
         let mut tally = Tally::ZERO;
         let state = (&s.position[..], &s.velocity[..], &s.angular_velocity[..]);
-        let entries = (&mut ents[..], &mut slots[..]);
+        let entries = (&mut ents[..], &mut first[..], &mut more[..]);
         ctx.run_with::<K>((0, entries, state, (&mut f, &mut tq), &mut tally));
+        let slots: Vec<WallSlots> = first.iter().zip(&more).map(|(&a, b)| join(a, b)).collect();
         for (e, s) in ents.iter().zip(&slots) {
             assert_eq!(
                 e.used as usize,
