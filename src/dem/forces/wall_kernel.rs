@@ -196,7 +196,12 @@ impl WallContext<'_> {
             }
             f[k] += get(&l.force, q);
             tq[k] += get(&l.torque_i, q);
-            tally.worst = larger(tally.worst, (l.delta[q] / l.r_i[q], i0 + k));
+            // Overlap ratio δ / r_i, divided out only when it may be the largest (as in the
+            // pair kernel): δ ≥ w r_i rounded whenever δ / r_i rounded exceeds w.
+            let (delta, r) = (l.delta[q], l.r_i[q]);
+            if delta >= tally.worst.0 * r {
+                tally.worst = larger(tally.worst, (delta / r, i0 + k));
+            }
         }
     }
 }
