@@ -30,8 +30,6 @@ use spheres::Spheres;
 use wall_contacts::{SavedWallContacts, WallContacts};
 use walls::Wall;
 
-pub use wall_contacts::WALL_SLOTS_EMPTY;
-
 /// Bounds beyond which a run is declared unstable.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Limits {

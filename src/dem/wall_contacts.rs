@@ -24,11 +24,11 @@ use crate::math::Vec3;
 /// depend on the thread count); `WallContacts::chunk_start` is kept for it.
 pub const CHUNK: usize = 2048;
 
-/// Wall slots of a sphere that touches no wall.
-pub const WALL_SLOTS_EMPTY: WallSlots = [WallContact::EMPTY; WALL_SLOTS];
-
 /// History slots 1.. of an entry (`WallContacts::more`; slot 0 is in `WallContacts::first`).
 pub type MoreSlots = [WallContact; WALL_SLOTS - 1];
+
+/// Slots 1.. of a sphere that touches at most one wall.
+const MORE_EMPTY: MoreSlots = [WallContact::EMPTY; WALL_SLOTS - 1];
 
 /// An entry's slots, from its first slot and the others.
 pub fn join(first: WallContact, more: &MoreSlots) -> WallSlots {
@@ -184,11 +184,11 @@ impl WallContacts {
                     let more = if used > 1 {
                         self.old_more[e]
                     } else {
-                        [WallContact::EMPTY; WALL_SLOTS - 1]
+                        MORE_EMPTY
                     };
                     (self.old_first[e], more, used)
                 }
-                _ => (WallContact::EMPTY, [WallContact::EMPTY; WALL_SLOTS - 1], 0),
+                _ => (WallContact::EMPTY, MORE_EMPTY, 0),
             };
             self.entry_of.push(self.entries.len() as u32);
             self.entries.push(WallEntry {
@@ -219,7 +219,7 @@ impl WallContacts {
             e.used = 0;
         }
         self.first.fill(WallContact::EMPTY);
-        self.more.fill([WallContact::EMPTY; WALL_SLOTS - 1]);
+        self.more.fill(MORE_EMPTY);
         for s in saved {
             if let Some(i) = spheres.slot_of(s.id) {
                 let e = self.entry_of[i];
