@@ -259,7 +259,7 @@ impl Simulation {
             }
         }
         self.time = t_new;
-        let d = &self.dem;
+        let d = &mut self.dem;
         if changed || d.neighbors.needs_rebuild(&d.spheres, &d.domain) || d.walls_moved(self.time) {
             self.dem.rebuild_lists(self.time);
         }

@@ -145,13 +145,16 @@ impl Dem {
     }
 
     fn rebuild_wall_lists(&mut self, t: f64) {
+        let skin = self.neighbors.skin;
+        let (pos, previous_slot, room) = self.neighbors.for_walls();
         self.wall_contacts.rebuild(
             &self.walls,
             &self.spheres,
-            self.neighbors.reference(),
-            &self.neighbors.previous_slot,
+            pos,
+            previous_slot,
+            room,
             t,
-            self.neighbors.skin,
+            skin,
         );
     }
 

@@ -12,10 +12,16 @@
 //! Each pair closer than r_i + r_j + skin is listed once, under its *owner*: the sphere with the
 //! lower slot, except for a pair across a periodic boundary along the slab axis, which belongs to
 //! the sphere in the last slab. The partners of sphere i are `partner[offsets[i]..offsets[i+1]]`,
-//! ascending. The list stays valid until some sphere has moved more than skin/2 since the build.
+//! ascending. The list stays valid while no two spheres' displacements since the build differ by
+//! more than the skin, and no sphere has left its `Room` (`validity`).
 //! Building is O(N) and allocates nothing once its buffers have grown.
 
+mod validity;
+
 use rayon::prelude::*;
+
+use validity::Moves;
+pub use validity::Room;
 
 use super::domain::Domain;
 use super::par::MIN_SPHERES_PER_TASK;
@@ -221,9 +227,13 @@ pub struct NeighborList {
     /// Number of builds so far.
     pub builds: u64,
     /// The sum of each step's largest drift |Δt v| since the build [m] (`note_drift`): no
-    /// sphere has moved farther, so the exact displacement test is needed only once it nears
-    /// skin/2. Infinite when unknown (a list rebuilt at a saved run's positions).
+    /// sphere has moved farther. Infinite when unknown (a list rebuilt at a saved run's
+    /// positions).
     pub drift: f64,
+    /// The drift at which the displacements must next be measured (`needs_rebuild`) [m].
+    next_check: f64,
+    /// Each sphere's room at the periodic faces and walls (`validity`), by slot.
+    room: Vec<Room>,
     /// CSR over owner slots: the pairs of owner i are `offsets[i]..offsets[i + 1]`.
     pub offsets: Vec<u32>,
     /// Partner slot of each pair.
@@ -305,31 +315,43 @@ impl NeighborList {
         (p0..p1).find(|&p| self.partner[p] as usize == j)
     }
 
-    /// True when a sphere has moved more than skin/2 since the last build, or spheres were added
-    /// or removed.
+    /// True when the list may miss a pair or a wall contact, or spheres were added or removed:
+    /// when the displacements since the build of two spheres may differ by more than the skin,
+    /// or a sphere has left its room (`validity`).
     ///
-    /// The positions are compared with those of the build only once the drift bound has reached
-    /// 0.9 skin/2: before, no sphere can be that far. (A sphere's displacement is at most the
-    /// sum of its drifts plus the rounding of each step's addition, an ulp of the coordinate:
-    /// the margin of 0.1 skin/2 covers 10⁴ steps of coordinates 10⁷ times the skin.) In a
-    /// flowing or settling bed this skips the comparison in most steps; the answer is the
-    /// same as comparing every step.
-    pub fn needs_rebuild(&self, spheres: &Spheres, domain: &Domain) -> bool {
+    /// The positions are compared with those of the build only once the drift bound has grown
+    /// by 0.9 of the margin the last comparison found (the first time, of `Room::LEAST` skin). A sphere's displacement grows by at most the drifts added plus the rounding of
+    /// each step's addition, an ulp of the coordinate; the rest of the margin, at least 10⁻³
+    /// skin, covers 10⁴ steps of coordinates 10⁷ times the skin. The answer is the same as
+    /// comparing every step, so a restart, which compares every step, rebuilds when the run
+    /// did.
+    pub fn needs_rebuild(&mut self, spheres: &Spheres, domain: &Domain) -> bool {
         if self.reference.len() != spheres.len() || self.builds == 0 {
             return true;
         }
-        let limit = 0.5 * self.skin;
-        if self.drift < 0.9 * limit {
+        if self.drift < self.next_check {
             return false;
         }
-        let limit2 = limit * limit;
-        let im = domain.images();
-        spheres
-            .position
-            .par_iter()
-            .zip(self.reference.par_iter())
-            .with_min_len(MIN_SPHERES_PER_TASK)
-            .any(|(&x, &x0)| im.nearest(x - x0).length_squared() > limit2)
+        let moves = Moves::measure(
+            &spheres.position,
+            &self.reference,
+            &self.room,
+            domain,
+            self.skin,
+        );
+        match moves.verdict(self.skin) {
+            Err(()) => true,
+            Ok(margin) => {
+                self.next_check = self.drift + margin.unwrap_or(0.0);
+                false
+            }
+        }
+    }
+
+    /// What the wall lists read and narrow at each build (`WallContacts::rebuild`), by slot:
+    /// the build positions, the previous slots and each sphere's room.
+    pub fn for_walls(&mut self) -> (&[Vec3], &[u32], &mut [Room]) {
+        (&self.reference, &self.previous_slot, &mut self.room)
     }
 
     /// Sorts the spheres by cell and rebuilds the candidate pairs. The list is built at the
@@ -342,6 +364,9 @@ impl NeighborList {
         self.reference
             .extend_from_slice(at.unwrap_or(&spheres.position));
         self.drift = if at.is_some() { f64::INFINITY } else { 0.0 };
+        // No pair can be missed before a sphere has moved skin/2, nor leave a room before
+        // skin/(2√3) (`Room`).
+        self.next_check = 0.9 * Room::LEAST * self.skin;
         assert_eq!(
             self.reference.len(),
             n,
@@ -411,15 +436,18 @@ impl NeighborList {
 
     /// Sets `plain`: owner i is plain when, at the build's positions, it lies farther than
     /// `edge` + skin from every periodic face, `edge` (the cell edge) being more than any pair's
-    /// distance r_i + r_j + skin. Then its partners lie more than a skin from the faces; until
-    /// the next build no sphere moves by more than skin/2 (`needs_rebuild`), so none of them
-    /// is wrapped, and |x_j - x_i| < edge + skin stays at most half a period (checked): the
-    /// nearest image of x_j - x_i is x_j - x_i itself.
+    /// distance r_i + r_j + skin. Then its partners lie more than a skin from the faces, and
+    /// each sphere farther than a skin from every periodic face gets the room of its distances
+    /// to the faces (strict bounds): until the next build none of those spheres is wrapped.
+    /// As two spheres' displacements differ by at most the skin (`needs_rebuild`),
+    /// |x_j - x_i| < edge + skin stays at most half a period (checked): the nearest image of
+    /// x_j - x_i is x_j - x_i itself. No room reaches farther than `Room::FARTHEST` skins.
     fn mark_plain(&mut self, domain: &Domain, edge: f64) {
         let reach = edge + self.skin;
         let (mut lo, mut hi) = (Vec3::NEG_INFINITY, Vec3::INFINITY);
         let mut short = false;
-        for a in (0..3).filter(|&a| domain.periodic[a]) {
+        let axes: Vec<usize> = (0..3).filter(|&a| domain.periodic[a]).collect();
+        for &a in &axes {
             (lo[a], hi[a]) = (domain.min[a] + reach, domain.max[a] - reach);
             short |= reach > 0.5 * (domain.max[a] - domain.min[a]);
         }
@@ -429,6 +457,28 @@ impl NeighborList {
                 .par_iter()
                 .with_min_len(MIN_SPHERES_PER_TASK)
                 .map(|x| !short && x.cmpgt(lo).all() && x.cmplt(hi).all()),
+        );
+        // Spheres a skin or less from a face are never plain owners nor their partners: free
+        // (0.99: the comparisons above round).
+        let free_within = 0.99 * self.skin;
+        let far = Room::FARTHEST * self.skin;
+        let guard = !short && !axes.is_empty();
+        self.room.clear();
+        self.room.par_extend(
+            self.reference
+                .par_iter()
+                .with_min_len(MIN_SPHERES_PER_TASK)
+                .map(|&x| {
+                    let (below, above) = (x - domain.min, domain.max - x);
+                    let (mut lo, mut hi) = (Vec3::splat(-far), Vec3::splat(far));
+                    if !guard || axes.iter().any(|&a| below[a].min(above[a]) <= free_within) {
+                        return Room::between(lo, hi);
+                    }
+                    for &a in &axes {
+                        (lo[a], hi[a]) = (-below[a].min(far), above[a].min(far));
+                    }
+                    Room::between(lo, hi)
+                }),
         );
     }
 
@@ -704,9 +754,9 @@ pub(crate) mod tests {
         }
     }
 
-    /// With the drift bound, `needs_rebuild` answers as the comparison of every sphere with its
-    /// build position does, step after step (spheres drifting at different speeds across a
-    /// periodic face), and the bound keeps it from comparing in most steps.
+    /// With the drift bound, `needs_rebuild` answers as measuring the displacements at every
+    /// step does (spheres drifting at different speeds across a periodic face), and the bound
+    /// keeps it from measuring in most steps.
     #[test]
     fn drift_bound_gives_the_exact_answer() {
         let (mut s, d) = random_spheres([true, false, false], 1.0, 4242);
@@ -728,12 +778,10 @@ pub(crate) mod tests {
                 *x = d.wrap(*x + dt * *v);
             }
             nl.note_drift(max_drift);
-            let exact = s
-                .position
-                .iter()
-                .zip(nl.reference())
-                .any(|(&x, &x0)| d.minimum_image(x - x0).length() > 0.5 * nl.skin);
-            skipped += usize::from(nl.drift < 0.45 * nl.skin);
+            let exact = Moves::measure(&s.position, &nl.reference, &nl.room, &d, nl.skin)
+                .verdict(nl.skin)
+                .is_err();
+            skipped += usize::from(nl.drift < nl.next_check);
             assert_eq!(nl.needs_rebuild(&s, &d), exact);
             if exact {
                 nl.build(&mut s, &d, None);
@@ -741,26 +789,102 @@ pub(crate) mod tests {
             }
         }
         assert!(
-            builds > 20 && skipped > 150,
+            builds > 20 && skipped > 100,
             "{builds} builds, {skipped} steps skipped"
         );
     }
 
+    /// Moves the spheres `steps` steps of `dt` at their velocities, rebuilding the list when
+    /// `needs_rebuild` says so, and checks at every other step that each touching pair is
+    /// listed. Returns the builds and the steps at which some sphere was farther than skin/2
+    /// from its build position.
+    fn follow(s: &mut Spheres, d: &Domain, dt: f64, steps: usize) -> (usize, usize) {
+        let mut nl = NeighborList::new(0.005);
+        nl.build(s, d, None);
+        let (mut builds, mut past_half_skin) = (0, 0);
+        for _ in 0..steps {
+            let mut max_drift: f64 = 0.0;
+            for (x, v) in s.position.iter_mut().zip(&s.velocity) {
+                max_drift = max_drift.max((dt * *v).length());
+                *x = d.wrap(*x + dt * *v);
+            }
+            nl.note_drift(max_drift);
+            if nl.needs_rebuild(s, d) {
+                nl.build(s, d, None);
+                builds += 1;
+                continue;
+            }
+            past_half_skin += usize::from(
+                (s.position.iter().zip(&nl.reference))
+                    .any(|(&x, &x0)| d.minimum_image(x - x0).length() > 0.5 * nl.skin),
+            );
+            let mut listed: Vec<(u32, u32)> = (0..s.len())
+                .flat_map(|i| {
+                    let p = nl.offsets[i] as usize..nl.offsets[i + 1] as usize;
+                    nl.partner[p]
+                        .iter()
+                        .map(move |&j| (j.min(i as u32), j.max(i as u32)))
+                })
+                .collect();
+            listed.sort_unstable();
+            for pair in brute(s, d, 0.0) {
+                assert!(listed.binary_search(&pair).is_ok(), "{pair:?} not listed");
+            }
+        }
+        (builds, past_half_skin)
+    }
+
+    /// In a shear flow over a fixed base (a chute), the list lives until the spheres'
+    /// displacements differ by a skin, well past the step where the fastest has moved skin/2,
+    /// and holds every touching pair. Spheres cross both periodic faces.
+    #[test]
+    fn lists_outlive_half_a_skin_in_a_shear_flow() {
+        let (mut s, d) = random_spheres([true, true, false], 0.3, 99);
+        let height = d.max.z;
+        for (k, (v, x)) in s.velocity.iter_mut().zip(&s.position).enumerate() {
+            let noise = 0.1 * Vec3::new((k % 7) as f64 - 3.0, (k % 5) as f64 - 2.0, 0.0);
+            *v = if x.z < 0.1 * height {
+                Vec3::ZERO
+            } else {
+                Vec3::new(2.0 * x.z / height, 0.0, 0.0) + noise
+            };
+        }
+        let (builds, past_half_skin) = follow(&mut s, &d, 1e-4, 300);
+        assert!(
+            builds > 5 && past_half_skin > 100,
+            "{builds} builds, {past_half_skin} steps past skin/2"
+        );
+    }
+
+    /// Spheres moving every way in a dense cloud approach each other as fast as the spread
+    /// of their displacements grows: no touching pair is missed.
+    #[test]
+    fn no_touching_pair_is_missed_in_random_motion() {
+        let (mut s, d) = random_spheres([true, false, false], 0.3, 5);
+        let mut seed = 17;
+        for v in s.velocity.iter_mut() {
+            let mut rnd = || 2.0 * uniform(&mut seed) - 1.0;
+            *v = Vec3::new(rnd(), rnd(), rnd());
+        }
+        let (builds, _) = follow(&mut s, &d, 1e-4, 300);
+        assert!(builds > 10, "{builds} builds");
+    }
+
     /// For a plain owner, x_j - x_i is its own nearest image at every step until the next
-    /// build, while spheres drift across both periodic faces; near the faces owners are not
-    /// plain.
+    /// build, while spheres drift across both periodic faces, all alike (so that their rooms at
+    /// the faces, not their spread, end the lists); near the faces owners are not plain.
     #[test]
     fn plain_owners_need_no_image() {
         let (mut s, d) = random_spheres([true, true, false], 0.8, 777);
         let dt = 1e-3;
         for (k, v) in s.velocity.iter_mut().enumerate() {
             let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
-            *v = sign * Vec3::new(0.2 + 0.1 * (k % 5) as f64, 0.1 * (k % 3) as f64, 0.0);
+            *v = Vec3::new(0.5, 0.3, 0.0) + sign * 0.001 * Vec3::new((k % 5) as f64, 0.0, 0.0);
         }
         let mut nl = NeighborList::new(0.005);
         nl.build(&mut s, &d, None);
         let (mut builds, mut plain, mut owners) = (0, 0, 0);
-        for _ in 0..200 {
+        for _ in 0..400 {
             let mut max_drift: f64 = 0.0;
             for (x, v) in s.position.iter_mut().zip(&s.velocity) {
                 max_drift = max_drift.max((dt * *v).length());

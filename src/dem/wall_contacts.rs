@@ -2,9 +2,9 @@
 //! its wall contacts.
 //!
 //! At each neighbour rebuild the walls within r + skin of every sphere are listed (for a mesh,
-//! with the triangles within reach). Until the next rebuild a sphere moves less than skin/2 and
-//! every wall less than skin/2 (`stale` forces a rebuild otherwise), so no other wall can touch
-//! it. Most spheres reach no wall: they have no entry and cost nothing per step. Spheres that
+//! with the triangles within reach). Until the next rebuild every wall moves less than skin/2
+//! (`stale` forces a rebuild otherwise) and each sphere stays in a room that keeps it from the
+//! walls left out (`rebuild`, `neighbor::Room`), so no other wall can touch it. Most spheres reach no wall: they have no entry and cost nothing per step. Spheres that
 //! do have an entry, and history slots for their wall contacts (`walls::match_history`),
 //! carried over from one build to the next by sphere. The slots are kept apart from the
 //! entries (16 bytes each), so that the many spheres near a wall and touching none read
@@ -14,9 +14,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::neighbor::NONE;
+use super::neighbor::{Room, NONE};
 use super::spheres::{SphereId, Spheres};
-use super::walls::{Shape, Wall, WallContact, WallSlots, WALL_SLOTS};
+use super::walls::{Motion, Shape, Wall, WallContact, WallSlots, WALL_SLOTS};
 use crate::geometry::ContactBuf;
 use crate::math::Vec3;
 
@@ -112,12 +112,18 @@ impl WallContacts {
     /// Lists the walls within reach of each sphere, at the positions `pos` (by slot) and time
     /// `t`, and carries the history over from the previous lists through `previous_slot` (the
     /// slot each sphere had at the previous build, or `NONE`).
+    ///
+    /// Narrows each sphere's `room` so that no wall left out reaches it before the next build:
+    /// a plane by its gap (signed distance − r), in the directions against its normal; any
+    /// other shape, and the triangles of a mesh left out, by the skin in every direction.
+    #[allow(clippy::too_many_arguments)]
     pub fn rebuild(
         &mut self,
         walls: &[Wall],
         spheres: &Spheres,
         pos: &[Vec3],
         previous_slot: &[u32],
+        room: &mut [Room],
         t: f64,
         skin: f64,
     ) {
@@ -143,11 +149,25 @@ impl WallContacts {
             }
             let first = self.near.len() as u32;
             let reach = spheres.radius[i] + skin;
+            // A plane farther than this cannot narrow a room (`Room::FARTHEST`).
+            let far = spheres.radius[i] + 3f64.sqrt() * Room::FARTHEST * skin + skin;
             for (w, wall) in walls.iter().enumerate() {
                 let q = x - self.displacement[w];
                 let tri0 = self.triangles.len() as u32;
+                // A moving wall may come skin/2 closer before `stale` asks for a rebuild.
+                let coming = match wall.motion {
+                    Motion::Fixed => 0.0,
+                    _ => 0.5 * skin,
+                };
+                let room = &mut room[i];
                 let near = match &wall.shape {
-                    Shape::Plane(p) => p.signed_distance(q) < reach,
+                    Shape::Plane(p) => {
+                        let s = p.signed_distance(q);
+                        if s >= reach && s < far {
+                            room.keep_off(p.normal, s - spheres.radius[i] - coming);
+                        }
+                        s < reach
+                    }
                     Shape::Cuboid(c) => {
                         buf.clear();
                         c.sphere_contacts(q, reach, &mut buf);
@@ -161,9 +181,15 @@ impl WallContacts {
                     Shape::Mesh(m) => {
                         m.candidates(q, reach, &mut self.tri_buf);
                         self.triangles.extend_from_slice(&self.tri_buf);
+                        // The triangles left out are a skin away or more, listed or not.
+                        room.within(skin - coming);
                         !self.tri_buf.is_empty()
                     }
                 };
+                // A box or cylinder left out is a skin away or more, in no known direction.
+                if !near && matches!(wall.shape, Shape::Cuboid(_) | Shape::Cylinder(_)) {
+                    room.within(skin - coming);
+                }
                 if near {
                     self.near.push(NearWall {
                         wall: w as u32,
@@ -230,5 +256,98 @@ impl WallContacts {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dem::domain::Domain;
+    use crate::dem::neighbor::NeighborList;
+    use crate::dem::spheres::NewSphere;
+    use crate::dem::walls::Motion;
+    use crate::geometry::Plane;
+
+    /// A block of spheres falling together past a floor, a side wall and an oblique plane (and
+    /// through them: nothing pushes here): at every step each sphere touching a wall has it
+    /// listed, while the lists outlive the skin/2 rule (the block hardly spreads, and the walls
+    /// bound each sphere only in the directions against their normals).
+    #[test]
+    fn no_wall_contact_is_missed() {
+        let d = Domain {
+            min: Vec3::splat(-1.0),
+            max: Vec3::splat(1.0),
+            periodic: [false; 3],
+        };
+        let plane = |name: &str, p: Vec3, n: Vec3| Wall {
+            name: name.into(),
+            shape: Shape::Plane(Plane::new(p, n)),
+            material: 0,
+            motion: Motion::Fixed,
+        };
+        let walls = [
+            plane("floor", Vec3::ZERO, Vec3::Z),
+            plane("side", Vec3::ZERO, Vec3::X),
+            plane("ramp", Vec3::new(0.3, 0.0, 0.0), Vec3::new(-1.0, 0.0, 1.0)),
+        ];
+        let mut s = Spheres::default();
+        for k in 0..250 {
+            let (i, j, l) = (k % 10, (k / 10) % 5, k / 50);
+            let c = Vec3::new(i as f64, j as f64, l as f64) * 0.03;
+            s.push(NewSphere {
+                position: c + Vec3::new(0.012, 0.0, 0.05),
+                velocity: Vec3::new(-0.1, 0.0, -1.0) + 0.01 * Vec3::new(0.0, (k % 3) as f64, 0.0),
+                angular_velocity: Vec3::ZERO,
+                radius: 0.01,
+                material: 0,
+                density: 1000.0,
+                fixed: false,
+            });
+        }
+        let mut nl = NeighborList::new(0.002);
+        let mut wc = WallContacts::default();
+        let (dt, skin) = (1e-4, nl.skin);
+        let (mut builds, mut past_half_skin) = (0, 0);
+        for step in 0..1500 {
+            if step == 0 || nl.needs_rebuild(&s, &d) {
+                nl.build(&mut s, &d, None);
+                let (pos, prev, room) = nl.for_walls();
+                wc.rebuild(&walls, &s, pos, prev, room, 0.0, skin);
+                builds += 1;
+            } else {
+                past_half_skin += usize::from(
+                    (s.position.iter().zip(nl.reference()))
+                        .any(|(&x, &x0)| (x - x0).length() > 0.5 * skin),
+                );
+            }
+            for (i, &x) in s.position.iter().enumerate() {
+                for (w, wall) in walls.iter().enumerate() {
+                    let Shape::Plane(p) = &wall.shape else {
+                        unreachable!()
+                    };
+                    if p.signed_distance(x) >= s.radius[i] {
+                        continue;
+                    }
+                    let e = wc.entry_of[i];
+                    assert_ne!(e, NONE, "step {step}: sphere {i} touches {w}, lists none");
+                    let (a, b) = wc.entries[e as usize].near;
+                    let near = &wc.near[a as usize..b as usize];
+                    assert!(
+                        near.iter().any(|n| n.wall == w as u32),
+                        "step {step}: {i}, {w}"
+                    );
+                }
+            }
+            let mut max_drift: f64 = 0.0;
+            for (x, v) in s.position.iter_mut().zip(&s.velocity) {
+                max_drift = max_drift.max((dt * *v).length());
+                *x += dt * *v;
+            }
+            nl.note_drift(max_drift);
+        }
+        assert!(
+            builds > 10 && past_half_skin > 500,
+            "{builds} builds, {past_half_skin} steps past skin/2"
+        );
     }
 }
