@@ -117,6 +117,7 @@ impl Dem {
     /// carries the pair history over, and lists the walls within reach of each sphere at time
     /// `t`.
     pub fn rebuild_lists(&mut self, t: f64) {
+        self.neighbors.band_axis = self.gravity.abs().max_position();
         self.neighbors.build(&mut self.spheres, &self.domain, None);
         self.contacts.rebuild(&self.neighbors, &self.spheres);
         self.rebuild_wall_lists(t);
@@ -134,6 +135,7 @@ impl Dem {
         walls: &[SavedWallContacts],
     ) {
         self.neighbors.forget();
+        self.neighbors.band_axis = self.gravity.abs().max_position();
         self.neighbors
             .build(&mut self.spheres, &self.domain, Some(reference));
         self.contacts.rebuild(&self.neighbors, &self.spheres);

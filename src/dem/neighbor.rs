@@ -20,8 +20,8 @@ mod validity;
 
 use rayon::prelude::*;
 
-use validity::Moves;
 pub use validity::Room;
+use validity::{Bands, Moves};
 
 use super::domain::Domain;
 use super::par::MIN_SPHERES_PER_TASK;
@@ -230,10 +230,17 @@ pub struct NeighborList {
     /// sphere has moved farther. Infinite when unknown (a list rebuilt at a saved run's
     /// positions).
     pub drift: f64,
-    /// The drift at which the displacements must next be measured (`needs_rebuild`) [m].
+    /// The drift at which the displacements must next be measured (`needs_rebuild`) [m]; NaN
+    /// until the first test after a build.
     next_check: f64,
     /// Each sphere's room at the periodic faces and walls (`validity`), by slot.
     room: Vec<Room>,
+    /// The axis across which the spheres are grouped in bands for the rebuild test
+    /// (`validity`): best the one along which velocities vary most, gravity's as a rule
+    /// (`Dem::rebuild_lists` sets it).
+    pub band_axis: usize,
+    /// The spheres' bands at the build.
+    bands: Bands,
     /// CSR over owner slots: the pairs of owner i are `offsets[i]..offsets[i + 1]`.
     pub offsets: Vec<u32>,
     /// Partner slot of each pair.
@@ -271,6 +278,7 @@ impl NeighborList {
     pub fn new(skin: f64) -> Self {
         Self {
             skin,
+            band_axis: 2,
             ..Default::default()
         }
     }
@@ -320,7 +328,8 @@ impl NeighborList {
     /// or a sphere has left its room (`validity`).
     ///
     /// The positions are compared with those of the build only once the drift bound has grown
-    /// by 0.9 of the margin the last comparison found (the first time, of `Room::LEAST` skin). A sphere's displacement grows by at most the drifts added plus the rounding of
+    /// by 0.9 of the margin the last comparison found (the first time, of the smaller of skin/2
+    /// and the reach of the smallest room). A sphere's displacement grows by at most the drifts added plus the rounding of
     /// each step's addition, an ulp of the coordinate; the rest of the margin, at least 10⁻³
     /// skin, covers 10⁴ steps of coordinates 10⁷ times the skin. The answer is the same as
     /// comparing every step, so a restart, which compares every step, rebuilds when the run
@@ -329,6 +338,16 @@ impl NeighborList {
         if self.reference.len() != spheres.len() || self.builds == 0 {
             return true;
         }
+        if self.next_check.is_nan() {
+            // The first test after a build: none is needed before a sphere may have moved
+            // skin/2 (pairs) or the reach of the smallest room.
+            let least = self
+                .room
+                .par_iter()
+                .map(Room::reach)
+                .reduce(|| f64::INFINITY, f64::min);
+            self.next_check = 0.9 * least.min(0.5 * self.skin);
+        }
         if self.drift < self.next_check {
             return false;
         }
@@ -336,6 +355,7 @@ impl NeighborList {
             &spheres.position,
             &self.reference,
             &self.room,
+            &mut self.bands,
             domain,
             self.skin,
         );
@@ -364,9 +384,8 @@ impl NeighborList {
         self.reference
             .extend_from_slice(at.unwrap_or(&spheres.position));
         self.drift = if at.is_some() { f64::INFINITY } else { 0.0 };
-        // No pair can be missed before a sphere has moved skin/2, nor leave a room before
-        // skin/(2√3) (`Room`).
-        self.next_check = 0.9 * Room::LEAST * self.skin;
+        // Planned at the first test, once the walls have narrowed the rooms.
+        self.next_check = f64::NAN;
         assert_eq!(
             self.reference.len(),
             n,
@@ -397,6 +416,7 @@ impl NeighborList {
             self.grid.cell_of.extend(std::iter::repeat_n(c as u32, k));
         }
         self.set_slabs(n);
+        self.set_bands(r_max);
         self.find_pairs(spheres, domain);
         self.mark_plain(domain, edge);
         self.built_ids.clear();
@@ -435,19 +455,23 @@ impl NeighborList {
     }
 
     /// Sets `plain`: owner i is plain when, at the build's positions, it lies farther than
-    /// `edge` + skin from every periodic face, `edge` (the cell edge) being more than any pair's
-    /// distance r_i + r_j + skin. Then its partners lie more than a skin from the faces, and
-    /// each sphere farther than a skin from every periodic face gets the room of its distances
+    /// `edge` + 3 skin from every periodic face, `edge` (the cell edge) being more than any
+    /// pair's distance r_i + r_j + skin. Then its partners lie more than 3 skins from the faces,
+    /// and each sphere farther than that from every periodic face gets the room of its distances
     /// to the faces (strict bounds): until the next build none of those spheres is wrapped.
-    /// As two spheres' displacements differ by at most the skin (`needs_rebuild`),
+    /// (The 2 skins more than needed let the lists outlive moves of a few skins, as in a chute
+    /// where neighbours move alike, up to `Room::FARTHEST` skins.) As
+    /// two spheres' displacements differ by at most the skin (`needs_rebuild`),
     /// |x_j - x_i| < edge + skin stays at most half a period (checked): the nearest image of
-    /// x_j - x_i is x_j - x_i itself. No room reaches farther than `Room::FARTHEST` skins.
+    /// x_j - x_i is x_j - x_i itself.
     fn mark_plain(&mut self, domain: &Domain, edge: f64) {
-        let reach = edge + self.skin;
+        let clear = 3.0 * self.skin;
+        let reach = edge + clear;
         let (mut lo, mut hi) = (Vec3::NEG_INFINITY, Vec3::INFINITY);
         let mut short = false;
-        let axes: Vec<usize> = (0..3).filter(|&a| domain.periodic[a]).collect();
-        for &a in &axes {
+        let periodic = domain.periodic;
+        let axes = || (0..3).filter(move |&a| periodic[a]);
+        for a in axes() {
             (lo[a], hi[a]) = (domain.min[a] + reach, domain.max[a] - reach);
             short |= reach > 0.5 * (domain.max[a] - domain.min[a]);
         }
@@ -458,11 +482,11 @@ impl NeighborList {
                 .with_min_len(MIN_SPHERES_PER_TASK)
                 .map(|x| !short && x.cmpgt(lo).all() && x.cmplt(hi).all()),
         );
-        // Spheres a skin or less from a face are never plain owners nor their partners: free
-        // (0.99: the comparisons above round).
-        let free_within = 0.99 * self.skin;
+        // Spheres no farther than `clear` from a face are never plain owners nor their
+        // partners: free (0.99: the comparisons above round).
+        let free_within = 0.99 * clear;
         let far = Room::FARTHEST * self.skin;
-        let guard = !short && !axes.is_empty();
+        let guard = !short && periodic.contains(&true);
         self.room.clear();
         self.room.par_extend(
             self.reference
@@ -471,15 +495,47 @@ impl NeighborList {
                 .map(|&x| {
                     let (below, above) = (x - domain.min, domain.max - x);
                     let (mut lo, mut hi) = (Vec3::splat(-far), Vec3::splat(far));
-                    if !guard || axes.iter().any(|&a| below[a].min(above[a]) <= free_within) {
+                    if !guard || axes().any(|a| below[a].min(above[a]) <= free_within) {
                         return Room::between(lo, hi);
                     }
-                    for &a in &axes {
+                    for a in axes() {
                         (lo[a], hi[a]) = (-below[a].min(far), above[a].min(far));
                     }
                     Room::between(lo, hi)
                 }),
         );
+    }
+
+    /// Groups the spheres in bands of two cells across `band_axis` (`validity::Bands`); one
+    /// band when that axis is periodic. Spheres of bands not next to each other lie more than
+    /// two cells apart along it, so they need a relative displacement of 2 w - 2 r_max (w the
+    /// cell width) to touch (less a part in 10⁹ for the rounding of the binning).
+    fn set_bands(&mut self, r_max: f64) {
+        let g = &self.grid;
+        let a = self.band_axis.min(2);
+        let b = &mut self.bands;
+        b.of.clear();
+        if g.periodic[a] {
+            b.of.resize(g.cell_of.len(), 0);
+            (b.count, b.apart) = (1, f64::INFINITY);
+            return;
+        }
+        // Cell by cell in storage order (no division per sphere).
+        let p = g.axes.iter().position(|&k| k == a).unwrap_or(2);
+        let [n0, n1, n2] = g.axes.map(|k| g.n[k]);
+        let mut c = 0;
+        for c2 in 0..n2 {
+            for c1 in 0..n1 {
+                for c0 in 0..n0 {
+                    let band = [c0, c1, c2][p] / 2;
+                    let k = (g.start[c + 1] - g.start[c]) as usize;
+                    b.of.extend(std::iter::repeat_n(band as u32, k));
+                    c += 1;
+                }
+            }
+        }
+        b.count = g.n[a].div_ceil(2);
+        b.apart = 2.0 * g.width[a] * (1.0 - 1e-9) - 2.0 * r_max;
     }
 
     fn set_slabs(&mut self, n: usize) {
@@ -778,9 +834,16 @@ pub(crate) mod tests {
                 *x = d.wrap(*x + dt * *v);
             }
             nl.note_drift(max_drift);
-            let exact = Moves::measure(&s.position, &nl.reference, &nl.room, &d, nl.skin)
-                .verdict(nl.skin)
-                .is_err();
+            let exact = Moves::measure(
+                &s.position,
+                &nl.reference,
+                &nl.room,
+                &mut nl.bands,
+                &d,
+                nl.skin,
+            )
+            .verdict(nl.skin)
+            .is_err();
             skipped += usize::from(nl.drift < nl.next_check);
             assert_eq!(nl.needs_rebuild(&s, &d), exact);
             if exact {
@@ -854,6 +917,20 @@ pub(crate) mod tests {
             builds > 5 && past_half_skin > 100,
             "{builds} builds, {past_half_skin} steps past skin/2"
         );
+    }
+
+    /// Two layers sliding past each other, each moving as a block: the bands (two cells of
+    /// z each, here z < 0.16 m and above) hardly spread inside, but pairs across the two are
+    /// compared, and no touching pair is missed.
+    #[test]
+    fn no_touching_pair_is_missed_between_sliding_layers() {
+        let (mut s, d) = random_spheres([true, false, false], 0.3, 8);
+        for (v, x) in s.velocity.iter_mut().zip(&s.position) {
+            *v = Vec3::new(if x.z < 0.16 { 0.5 } else { -0.5 }, 0.0, 0.0);
+        }
+        // 1 m/s against each other: a build every skin, 50 steps.
+        let (builds, _) = follow(&mut s, &d, 1e-4, 300);
+        assert!(builds >= 5, "{builds} builds");
     }
 
     /// Spheres moving every way in a dense cloud approach each other as fast as the spread

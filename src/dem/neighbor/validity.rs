@@ -4,8 +4,12 @@
 //! only once their displacements since the build, Δ_i and Δ_j, differ by more than the skin.
 //! The pairs therefore stay valid while max |Δ_i − Δ_j| ≤ skin. That spread is bounded here by
 //! the smaller of 2 max |Δ_i| (the usual rule: rebuild when a sphere has moved skin/2) and the
-//! diagonal of the box around all Δ_i. The second is far smaller where spheres move together:
-//! a chute's flowing layer over its fixed base, a bed falling as a block.
+//! diagonal of the box around all Δ_i. The second is far smaller where spheres move together: a
+//! bed falling as a block. And only spheres that can meet need their Δ compared: the spheres are
+//! grouped in `Bands` across one axis, two cells thick, so that two spheres of bands that are
+//! not next to each other are more than 2 (2 r_max + skin) apart and need a relative
+//! displacement `Bands::apart`, far more than the skin, to touch. Across a shear flow (a chute
+//! over its fixed base) neighbouring bands move nearly alike.
 //!
 //! What is tied to absolute positions gives each sphere a `Room`, the displacements it may
 //! reach before the lists need a rebuild: a wall not listed for it (at least a skin away at the
@@ -24,10 +28,10 @@ use super::super::domain::Domain;
 use crate::math::Vec3;
 
 /// The displacements Δ from its build position that a sphere may reach before something other
-/// than its pairs needs a rebuild [m]: lo < Δ < hi in each axis and |Δ| < `radius`. Every room
-/// reaches `LEAST` skin or more in every direction: a periodic face, a skin (`mark_plain`); a
-/// wall left out, at least a skin away less the skin/2 a moving wall may come closer, that
-/// over |n|₁ ≤ √3 for a plane (`WallContacts::rebuild`).
+/// than its pairs needs a rebuild [m]: lo < Δ < hi in each axis and |Δ| < `radius`: the
+/// periodic faces, 3 skins away or more (`NeighborList::mark_plain`); a wall left out, at least
+/// a skin away less the skin/2 a moving wall may come closer, that over |n|₁ ≤ √3 for a plane
+/// (`WallContacts::rebuild`); `FARTHEST` skins at most.
 ///
 /// In single precision, rounded toward zero (so never larger than asked): the test that reads
 /// the rooms streams them with the positions, 28 bytes a sphere instead of 56.
@@ -59,9 +63,6 @@ impl Room {
         hi: [f32::INFINITY; 3],
         radius: f32::INFINITY,
     };
-
-    /// The least reach of any room, in skins: 1/(2√3).
-    pub const LEAST: f64 = 0.28867513459481287;
 
     /// The farthest reach of any room along an axis, in skins. A sphere that has gone that far
     /// gets a rebuild whatever its neighbours do: the cell sort that keeps neighbours close in
@@ -98,6 +99,12 @@ impl Room {
     #[inline]
     pub fn within(&mut self, gap: f64) {
         self.radius = self.radius.min(toward_zero(gap));
+    }
+
+    /// How far the room reaches in the direction it reaches least [m].
+    pub fn reach(&self) -> f64 {
+        let sides = self.hi.iter().zip(&self.lo).map(|(&h, &l)| h.min(-l));
+        f64::from(sides.fold(self.radius, f32::min))
     }
 
     /// How far Δ [m] lies inside the room: the least distance to its bounds, ≤ 0 outside.
@@ -141,6 +148,41 @@ fn most(a: f64, b: f64) -> f64 {
     }
 }
 
+/// The spheres grouped in bands across one axis at the build (see the module documentation).
+#[derive(Clone, Debug, Default)]
+pub struct Bands {
+    /// Band of each sphere, by slot.
+    pub of: Vec<u32>,
+    /// Number of bands (1: all spheres in one).
+    pub count: usize,
+    /// The relative displacement two spheres of bands not next to each other need before they
+    /// can touch [m] (infinite with one band).
+    pub apart: f64,
+    /// The box around the Δ of each band, for each part of the pass (`Moves::measure`).
+    boxes: Vec<[Vec3; 2]>,
+}
+
+impl Bands {
+    /// All of `n` spheres in one band.
+    #[cfg(test)]
+    pub fn one(n: usize) -> Bands {
+        Bands {
+            of: vec![0; n],
+            count: 1,
+            apart: f64::INFINITY,
+            boxes: Vec::new(),
+        }
+    }
+}
+
+/// The box around no displacement.
+const NO_BOX: [Vec3; 2] = [Vec3::INFINITY, Vec3::NEG_INFINITY];
+
+/// The diagonal of the box around the boxes `a` and `b` [m] (0 when both are empty).
+fn diagonal(a: [Vec3; 2], b: [Vec3; 2]) -> f64 {
+    (a[1].max(b[1]) - a[0].min(b[0])).max(Vec3::ZERO).length()
+}
+
 /// What one pass over the displacements Δ_i since the build finds.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Moves {
@@ -152,6 +194,10 @@ pub(super) struct Moves {
     pub lo: Vec3,
     /// See `lo`.
     pub hi: Vec3,
+    /// A bound on |Δ_i − Δ_j| for spheres of one band or of bands next to each other [m].
+    pub near: f64,
+    /// The relative displacement spheres of bands not next to each other need to touch [m].
+    pub apart: f64,
 }
 
 impl Moves {
@@ -160,6 +206,8 @@ impl Moves {
         max2: 0.0,
         lo: Vec3::INFINITY,
         hi: Vec3::NEG_INFINITY,
+        near: 0.0,
+        apart: f64::INFINITY,
     };
 
     fn join(a: Moves, b: Moves) -> Moves {
@@ -168,46 +216,86 @@ impl Moves {
             max2: a.max2.max(b.max2),
             lo: a.lo.min(b.lo),
             hi: a.hi.max(b.hi),
+            near: a.near.max(b.near),
+            apart: a.apart.min(b.apart),
         }
     }
 
-    /// The displacements of spheres at `pos` built at `reference` [m], with their rooms, to
-    /// be judged against the skin `skin` [m] (`verdict`). Minima and maxima only, so the
-    /// answer does not depend on how the pass is split; once a part of it alone condemns the
-    /// list, the parts not yet started are skipped (the verdict is then the same).
+    /// The displacements of spheres at `pos` built at `reference` [m], with their rooms and
+    /// bands, to be judged against the skin `skin` [m] (`verdict`). Minima and maxima only, so
+    /// the answer does not depend on how the pass is split; once a part of it alone condemns
+    /// the list, the parts not yet started are skipped (the verdict is then the same).
     pub fn measure(
         pos: &[Vec3],
         reference: &[Vec3],
         room: &[Room],
+        bands: &mut Bands,
         domain: &Domain,
         skin: f64,
     ) -> Moves {
         const CHUNK: usize = 4096;
+        let n = reference.len();
         let im = domain.images();
-        let (pos, room) = (&pos[..reference.len()], &room[..reference.len()]);
+        let (pos, room, of) = (&pos[..n], &room[..n], &bands.of[..n]);
+        let nb = bands.count.max(1);
+        bands.boxes.clear();
+        bands.boxes.resize(n.div_ceil(CHUNK) * nb, NO_BOX);
+        let apart = bands.apart;
         let condemned = AtomicBool::new(false);
-        reference
+        let mut m = reference
             .par_chunks(CHUNK)
             .zip(pos.par_chunks(CHUNK))
             .zip(room.par_chunks(CHUNK))
-            .map(|((x0, x), room)| {
-                let mut m = Moves::NONE;
+            .zip(of.par_chunks(CHUNK))
+            .zip(bands.boxes.par_chunks_mut(nb))
+            .map(|((((x0, x), room), of), boxes)| {
+                let mut m = Moves {
+                    apart,
+                    ..Moves::NONE
+                };
                 if condemned.load(Ordering::Relaxed) {
                     return m;
                 }
-                for ((&x0, &x), r) in x0.iter().zip(x).zip(room) {
+                // The box of the current band is kept apart, in registers: the spheres are
+                // sorted by cell, so the band changes only every row of cells or so.
+                let mut band = of.first().copied().unwrap_or(0) as usize;
+                let [mut lo, mut hi] = NO_BOX;
+                for (((&x0, &x), r), &b) in x0.iter().zip(x).zip(room).zip(of) {
                     let d = im.nearest(x - x0);
                     m.slack = least(m.slack, r.slack(d));
                     m.max2 = most(m.max2, d.length_squared());
-                    m.lo = Vec3::new(least(m.lo.x, d.x), least(m.lo.y, d.y), least(m.lo.z, d.z));
-                    m.hi = Vec3::new(most(m.hi.x, d.x), most(m.hi.y, d.y), most(m.hi.z, d.z));
+                    if b as usize != band {
+                        let to = &mut boxes[band];
+                        *to = [to[0].min(lo), to[1].max(hi)];
+                        [lo, hi] = NO_BOX;
+                        band = b as usize;
+                    }
+                    lo = Vec3::new(least(lo.x, d.x), least(lo.y, d.y), least(lo.z, d.z));
+                    hi = Vec3::new(most(hi.x, d.x), most(hi.y, d.y), most(hi.z, d.z));
                 }
+                if let Some(to) = boxes.get_mut(band) {
+                    *to = [to[0].min(lo), to[1].max(hi)];
+                }
+                [m.lo, m.hi] = boxes
+                    .iter()
+                    .fold(NO_BOX, |a, b| [a[0].min(b[0]), a[1].max(b[1])]);
                 if m.verdict(skin).is_err() {
                     condemned.store(true, Ordering::Relaxed);
                 }
                 m
             })
-            .reduce(|| Moves::NONE, Moves::join)
+            .reduce(|| Moves::NONE, Moves::join);
+        // The boxes of the bands over all parts, then the largest box of two bands in a row.
+        let (first, rest) = bands.boxes.split_at_mut(nb);
+        for part in rest.chunks(nb) {
+            for (a, b) in first.iter_mut().zip(part) {
+                *a = [a[0].min(b[0]), a[1].max(b[1])];
+            }
+        }
+        m.near = (0..nb)
+            .map(|b| diagonal(first[b], first[(b + 1).min(nb - 1)]))
+            .fold(0.0, f64::max);
+        m
     }
 
     /// A bound on max |Δ_i − Δ_j| over all pairs of spheres [m].
@@ -220,11 +308,14 @@ impl Moves {
     /// may add before the next test is needed [m] (`None`: test at the next step).
     pub fn verdict(&self, skin: f64) -> Result<Option<f64>, ()> {
         let spread = self.spread();
-        if self.slack <= 0.0 || spread > skin {
+        let near = self.near.min(spread);
+        if self.slack <= 0.0 || near > skin || spread > self.apart {
             return Err(());
         }
         // Each Δ_i moves by at most the drift added; two of them apart by twice that.
-        let margin = self.slack.min(0.5 * (skin - spread));
+        let margin = (self.slack)
+            .min(0.5 * (skin - near))
+            .min(0.5 * (self.apart - spread));
         // Below a hundredth of the skin, 0.1 of the margin might not cover the rounding of the
         // coordinates over many slow steps: test at every step instead.
         Ok((margin >= 0.01 * skin).then_some(0.9 * margin))
@@ -284,10 +375,10 @@ mod tests {
             .enumerate()
             .map(|(k, &x)| x + Vec3::new(1.0 + 0.001 * k as f64, 0.0, 0.0))
             .collect();
-        let m = Moves::measure(&along, &x0, &room, &d, 1.0);
+        let m = Moves::measure(&along, &x0, &room, &mut Bands::one(3), &d, 1.0);
         assert!((m.spread() - 0.002).abs() < 1e-12, "{}", m.spread());
         let apart = vec![x0[0] + Vec3::X, x0[1] - Vec3::X, x0[2] + Vec3::Y];
-        let m = Moves::measure(&apart, &x0, &room, &d, 1.0);
+        let m = Moves::measure(&apart, &x0, &room, &mut Bands::one(3), &d, 1.0);
         assert!((m.spread() - 2.0).abs() < 1e-12, "{}", m.spread());
         assert!(m.verdict(1.0).is_err() && m.verdict(2.5).is_ok());
     }
