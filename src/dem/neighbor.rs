@@ -919,6 +919,18 @@ pub(crate) mod tests {
         );
     }
 
+    /// A list of no spheres stays valid (regression: the rebuild test split its per-band
+    /// boxes of no part).
+    #[test]
+    fn an_empty_list_stays_valid() {
+        let (_, d) = random_spheres([true, false, false], 1.0, 1);
+        let mut s = Spheres::default();
+        let mut nl = NeighborList::new(0.005);
+        nl.build(&mut s, &d, None);
+        nl.note_drift(1.0);
+        assert!(!nl.needs_rebuild(&s, &d));
+    }
+
     /// Two layers sliding past each other, each moving as a block: the bands (two cells of
     /// z each, here z < 0.16 m and above) hardly spread inside, but pairs across the two are
     /// compared, and no touching pair is missed.

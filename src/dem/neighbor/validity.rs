@@ -235,6 +235,9 @@ impl Moves {
     ) -> Moves {
         const CHUNK: usize = 4096;
         let n = reference.len();
+        if n == 0 {
+            return Moves::NONE;
+        }
         let im = domain.images();
         let (pos, room, of) = (&pos[..n], &room[..n], &bands.of[..n]);
         let nb = bands.count.max(1);
