@@ -159,6 +159,24 @@ struct Out<'a> {
 }
 
 impl Out<'_> {
+    /// Asks the processor to bring the force and torque of slot `j` into the cache.
+    #[inline(always)]
+    fn prefetch(&self, j: usize) {
+        let (f, t) = if j >= self.base {
+            (
+                self.f.as_ptr().wrapping_add(j - self.base),
+                self.t.as_ptr().wrapping_add(j - self.base),
+            )
+        } else {
+            (
+                self.f0.as_ptr().wrapping_add(j),
+                self.t0.as_ptr().wrapping_add(j),
+            )
+        };
+        pair_kernel::prefetch_at(f);
+        pair_kernel::prefetch_at(t);
+    }
+
     #[inline(always)]
     fn add(&mut self, j: usize, f: Vec3, t: Vec3) {
         if j >= self.base {

@@ -219,6 +219,11 @@ impl PairContext<'_> {
             (b.i[k], b.j[k]) = (owner[p], partner[p]);
             let (i, j) = (b.i[k] as usize, b.j[k] as usize);
             assert!(i < n && j < n);
+            // Stage 3 reads j's velocity and spin and adds to its force and torque: ask for
+            // them now, so that they arrive while the geometry is computed.
+            prefetch(&vel[j]);
+            prefetch(&ang[j]);
+            out.prefetch(j);
             let mut d = pos[j] - pos[i];
             if PERIODIC {
                 d = im.nearest(d);
@@ -295,7 +300,7 @@ pub(super) fn prefetch<T>(x: &T) {
 /// Asks the processor to bring the memory at `x` into the cache; changes nothing else, and is
 /// harmless for any address (so a column's element k can be asked for without a bounds test).
 #[inline(always)]
-fn prefetch_at<T>(x: *const T) {
+pub(super) fn prefetch_at<T>(x: *const T) {
     #[cfg(target_arch = "x86_64")]
     // SAFETY: a prefetch reads nothing the program sees and cannot fault, whatever the address.
     unsafe {
