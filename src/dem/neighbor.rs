@@ -76,11 +76,18 @@ impl CellGrid {
     /// outnumber 8 N (to bound memory).
     fn lay_out(&mut self, domain: &Domain, pos: &[Vec3], edge: f64) {
         let (mut lo, mut hi) = (domain.min, domain.max);
-        let mut seen = [f64::INFINITY, f64::NEG_INFINITY].map(Vec3::splat);
-        for x in pos {
-            seen[0] = seen[0].min(*x);
-            seen[1] = seen[1].max(*x);
-        }
+        // Minima and maxima are exact, so the split of the reduction changes nothing.
+        let seen = pos
+            .par_iter()
+            .with_min_len(MIN_SPHERES_PER_TASK)
+            .fold(
+                || [f64::INFINITY, f64::NEG_INFINITY].map(Vec3::splat),
+                |[lo, hi], &x| [lo.min(x), hi.max(x)],
+            )
+            .reduce(
+                || [f64::INFINITY, f64::NEG_INFINITY].map(Vec3::splat),
+                |[a, b], [c, d]| [a.min(c), b.max(d)],
+            );
         for k in 0..3 {
             if !domain.periodic[k] && seen[0][k] <= seen[1][k] {
                 lo[k] = seen[0][k].clamp(domain.min[k], domain.max[k]);
@@ -152,10 +159,15 @@ impl CellGrid {
         let total = self.cells();
         self.start.clear();
         self.start.resize(total + 1, 0);
-        self.cell_of.clear();
-        for &x in pos {
-            let c = self.index(self.coords(x)) as u32;
-            self.cell_of.push(c);
+        let mut cell_of = std::mem::take(&mut self.cell_of);
+        cell_of.clear();
+        cell_of.par_extend(
+            pos.par_iter()
+                .with_min_len(MIN_SPHERES_PER_TASK)
+                .map(|&x| self.index(self.coords(x)) as u32),
+        );
+        self.cell_of = cell_of;
+        for &c in &self.cell_of {
             self.start[c as usize + 1] += 1;
         }
         for c in 0..total {
@@ -401,13 +413,23 @@ impl NeighborList {
         if !identity {
             spheres.permute(&self.order, &mut self.scratch);
             self.tmp.clear();
-            self.tmp
-                .extend(self.order.iter().map(|&o| self.reference[o as usize]));
+            let reference = &self.reference;
+            self.tmp.par_extend(
+                self.order
+                    .par_iter()
+                    .with_min_len(MIN_SPHERES_PER_TASK)
+                    .map(|&o| reference[o as usize]),
+            );
             std::mem::swap(&mut self.reference, &mut self.tmp);
         }
         self.previous_slot.clear();
-        self.previous_slot
-            .extend(self.order.iter().map(|&o| self.slot_before[o as usize]));
+        let before = &self.slot_before;
+        self.previous_slot.par_extend(
+            self.order
+                .par_iter()
+                .with_min_len(MIN_SPHERES_PER_TASK)
+                .map(|&o| before[o as usize]),
+        );
         // After sorting, cell c holds slots start[c]..start[c + 1].
         let cells = self.grid.cells();
         self.grid.cell_of.clear();

@@ -12,6 +12,7 @@
 //! the common case, reads 56 bytes of history, not the 336 of all its slots (B1: the slots of
 //! the ~20,000 spheres on the floor were streamed whole at every step).
 
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::neighbor::{Room, NONE};
@@ -95,7 +96,99 @@ pub struct WallContacts {
     old_entries: Vec<WallEntry>,
     old_first: Vec<WallContact>,
     old_more: Vec<MoreSlots>,
+    chunks: Vec<ChunkLists>,
+}
+
+/// What a chunk of the wall lists' build reads.
+struct Reach<'a> {
+    walls: &'a [Wall],
+    /// Each wall's displacement at the build [m].
+    displacement: &'a [Vec3],
+    radius: &'a [f64],
+    skin: f64,
+}
+
+/// One chunk's part of the lists (indices into its own `near` and `triangles`), kept from
+/// build to build so that it does not allocate once grown.
+#[derive(Clone, Debug, Default)]
+struct ChunkLists {
+    entries: Vec<WallEntry>,
+    near: Vec<NearWall>,
+    triangles: Vec<u32>,
     tri_buf: Vec<u32>,
+}
+
+impl Reach<'_> {
+    /// Lists the walls within reach of the spheres `i0..i0 + room.len()` (positions `pos`
+    /// from i0 on) in `out` and narrows their rooms.
+    fn chunk(&self, i0: usize, pos: &[Vec3], room: &mut [Room], out: &mut ChunkLists) {
+        out.entries.clear();
+        out.near.clear();
+        out.triangles.clear();
+        let mut buf = ContactBuf::new();
+        let skin = self.skin;
+        for (k, (&x, room)) in pos.iter().zip(room).enumerate() {
+            let i = i0 + k;
+            let first = out.near.len() as u32;
+            let r = self.radius[i];
+            let reach = r + skin;
+            // A plane farther than this cannot narrow a room (`Room::FARTHEST`).
+            let far = r + 3f64.sqrt() * Room::FARTHEST * skin + skin;
+            for (w, wall) in self.walls.iter().enumerate() {
+                let q = x - self.displacement[w];
+                let tri0 = out.triangles.len() as u32;
+                // A moving wall may come skin/2 closer before `stale` asks for a rebuild.
+                let coming = match wall.motion {
+                    Motion::Fixed => 0.0,
+                    _ => 0.5 * skin,
+                };
+                let near = match &wall.shape {
+                    Shape::Plane(p) => {
+                        let s = p.signed_distance(q);
+                        if s >= reach && s < far {
+                            room.keep_off(p.normal, s - r - coming);
+                        }
+                        s < reach
+                    }
+                    Shape::Cuboid(c) => {
+                        buf.clear();
+                        c.sphere_contacts(q, reach, &mut buf);
+                        !buf.as_slice().is_empty()
+                    }
+                    Shape::Cylinder(c) => {
+                        buf.clear();
+                        c.sphere_contacts(q, reach, &mut buf);
+                        !buf.as_slice().is_empty()
+                    }
+                    Shape::Mesh(m) => {
+                        m.candidates(q, reach, &mut out.tri_buf);
+                        out.triangles.extend_from_slice(&out.tri_buf);
+                        // The triangles left out are a skin away or more, listed or not.
+                        room.within(skin - coming);
+                        !out.tri_buf.is_empty()
+                    }
+                };
+                // A box or cylinder left out is a skin away or more, in no known direction.
+                if !near && matches!(wall.shape, Shape::Cuboid(_) | Shape::Cylinder(_)) {
+                    room.within(skin - coming);
+                }
+                if near {
+                    out.near.push(NearWall {
+                        wall: w as u32,
+                        tri: (tri0, out.triangles.len() as u32),
+                    });
+                }
+            }
+            let last = out.near.len() as u32;
+            if last > first {
+                out.entries.push(WallEntry {
+                    sphere: i as u32,
+                    near: (first, last),
+                    used: 0,
+                });
+            }
+        }
+    }
 }
 
 impl WallContacts {
@@ -131,99 +224,77 @@ impl WallContacts {
         std::mem::swap(&mut self.entries, &mut self.old_entries);
         std::mem::swap(&mut self.first, &mut self.old_first);
         std::mem::swap(&mut self.more, &mut self.old_more);
-        self.entry_of.clear();
-        self.entries.clear();
-        self.first.clear();
-        self.more.clear();
-        self.near.clear();
-        self.triangles.clear();
-        self.chunk_start.clear();
         self.displacement.clear();
         self.displacement
             .extend(walls.iter().map(|w| w.motion.displacement(t)));
         self.built_at = t;
-        let mut buf = ContactBuf::new();
-        for (i, &x) in pos.iter().enumerate().take(spheres.len()) {
-            if i % CHUNK == 0 {
-                self.chunk_start.push(self.entries.len() as u32);
-            }
-            let first = self.near.len() as u32;
-            let reach = spheres.radius[i] + skin;
-            // A plane farther than this cannot narrow a room (`Room::FARTHEST`).
-            let far = spheres.radius[i] + 3f64.sqrt() * Room::FARTHEST * skin + skin;
-            for (w, wall) in walls.iter().enumerate() {
-                let q = x - self.displacement[w];
-                let tri0 = self.triangles.len() as u32;
-                // A moving wall may come skin/2 closer before `stale` asks for a rebuild.
-                let coming = match wall.motion {
-                    Motion::Fixed => 0.0,
-                    _ => 0.5 * skin,
-                };
-                let room = &mut room[i];
-                let near = match &wall.shape {
-                    Shape::Plane(p) => {
-                        let s = p.signed_distance(q);
-                        if s >= reach && s < far {
-                            room.keep_off(p.normal, s - spheres.radius[i] - coming);
-                        }
-                        s < reach
-                    }
-                    Shape::Cuboid(c) => {
-                        buf.clear();
-                        c.sphere_contacts(q, reach, &mut buf);
-                        !buf.as_slice().is_empty()
-                    }
-                    Shape::Cylinder(c) => {
-                        buf.clear();
-                        c.sphere_contacts(q, reach, &mut buf);
-                        !buf.as_slice().is_empty()
-                    }
-                    Shape::Mesh(m) => {
-                        m.candidates(q, reach, &mut self.tri_buf);
-                        self.triangles.extend_from_slice(&self.tri_buf);
-                        // The triangles left out are a skin away or more, listed or not.
-                        room.within(skin - coming);
-                        !self.tri_buf.is_empty()
-                    }
-                };
-                // A box or cylinder left out is a skin away or more, in no known direction.
-                if !near && matches!(wall.shape, Shape::Cuboid(_) | Shape::Cylinder(_)) {
-                    room.within(skin - coming);
+        // The walls within reach, chunk by chunk in parallel (fixed chunks: the lists do not
+        // depend on the thread count), then joined in chunk order.
+        let n = spheres.len().min(pos.len());
+        let reach = Reach {
+            walls,
+            displacement: &self.displacement,
+            radius: &spheres.radius,
+            skin,
+        };
+        self.chunks
+            .resize_with(n.div_ceil(CHUNK), ChunkLists::default);
+        self.chunks
+            .par_iter_mut()
+            .zip(room[..n].par_chunks_mut(CHUNK))
+            .enumerate()
+            .for_each(|(c, (out, room))| reach.chunk(c * CHUNK, &pos[c * CHUNK..], room, out));
+        self.join(n);
+        // Each entry's history from its sphere's entry at the previous build.
+        let (old_of, old_entries) = (&self.old_entry_of, &self.old_entries);
+        let (old_first, old_more) = (&self.old_first, &self.old_more);
+        let carried = |e: &mut WallEntry| {
+            let prev = previous_slot
+                .get(e.sphere as usize)
+                .copied()
+                .unwrap_or(NONE);
+            match old_of.get(prev as usize) {
+                Some(&o) if o != NONE && old_entries[o as usize].used > 0 => {
+                    let o = o as usize;
+                    e.used = old_entries[o].used;
+                    let more = if e.used > 1 { old_more[o] } else { MORE_EMPTY };
+                    (old_first[o], more)
                 }
-                if near {
-                    self.near.push(NearWall {
-                        wall: w as u32,
-                        tri: (tri0, self.triangles.len() as u32),
-                    });
-                }
+                _ => (WallContact::EMPTY, MORE_EMPTY),
             }
-            let last = self.near.len() as u32;
-            if last == first {
-                self.entry_of.push(NONE);
-                continue;
+        };
+        self.entries
+            .par_iter_mut()
+            .map(carried)
+            .unzip_into_vecs(&mut self.first, &mut self.more);
+    }
+
+    /// Puts the chunks' lists end to end: entries, reachable walls and triangles with their
+    /// indices shifted, the first entry of each chunk, and each slot's entry.
+    fn join(&mut self, n: usize) {
+        self.entries.clear();
+        self.near.clear();
+        self.triangles.clear();
+        self.chunk_start.clear();
+        self.entry_of.clear();
+        self.entry_of.resize(n, NONE);
+        for (c, ch) in self.chunks.iter().enumerate() {
+            let (e0, w0) = (self.entries.len(), self.near.len() as u32);
+            let t0 = self.triangles.len() as u32;
+            self.chunk_start.push(e0 as u32);
+            self.entries.extend(ch.entries.iter().map(|e| WallEntry {
+                near: (e.near.0 + w0, e.near.1 + w0),
+                ..*e
+            }));
+            self.near.extend(ch.near.iter().map(|w| NearWall {
+                tri: (w.tri.0 + t0, w.tri.1 + t0),
+                ..*w
+            }));
+            self.triangles.extend_from_slice(&ch.triangles);
+            debug_assert!(ch.entries.iter().all(|e| (e.sphere as usize) / CHUNK == c));
+            for (k, e) in ch.entries.iter().enumerate() {
+                self.entry_of[e.sphere as usize] = (e0 + k) as u32;
             }
-            let prev = previous_slot.get(i).copied().unwrap_or(NONE);
-            let (slot0, more, used) = match self.old_entry_of.get(prev as usize) {
-                Some(&e) if e != NONE && self.old_entries[e as usize].used > 0 => {
-                    let e = e as usize;
-                    let used = self.old_entries[e].used;
-                    let more = if used > 1 {
-                        self.old_more[e]
-                    } else {
-                        MORE_EMPTY
-                    };
-                    (self.old_first[e], more, used)
-                }
-                _ => (WallContact::EMPTY, MORE_EMPTY, 0),
-            };
-            self.entry_of.push(self.entries.len() as u32);
-            self.entries.push(WallEntry {
-                sphere: i as u32,
-                near: (first, last),
-                used,
-            });
-            self.first.push(slot0);
-            self.more.push(more);
         }
         self.chunk_start.push(self.entries.len() as u32);
     }
@@ -267,6 +338,114 @@ mod tests {
     use crate::dem::spheres::NewSphere;
     use crate::dem::walls::Motion;
     use crate::geometry::Plane;
+
+    /// The lists built chunk by chunk and joined are those of each sphere on its own: the same
+    /// walls, mesh triangles and rooms, each entry found through its slot and its chunk, and the
+    /// history carried over from the build before (over 5,000 spheres, three chunks, with a
+    /// mesh whose triangle indices must be shifted at the join).
+    #[test]
+    fn lists_joined_from_chunks_are_those_of_each_sphere() {
+        use crate::dem::neighbor::tests::uniform;
+        use crate::geometry::TriMesh;
+        let d = Domain {
+            min: Vec3::splat(-1.0),
+            max: Vec3::splat(1.0),
+            periodic: [false; 3],
+        };
+        let wall = |name: &str, shape: Shape| Wall {
+            name: name.into(),
+            shape,
+            material: 0,
+            motion: Motion::Fixed,
+        };
+        // A floor of 8 x 8 squares (128 triangles) at z = 0.
+        let mut soup = Vec::new();
+        for (a, b) in (0..64).map(|k| (k % 8, k / 8)) {
+            let p = |i: i32, j: i32| Vec3::new(-0.8 + 0.2 * i as f64, -0.8 + 0.2 * j as f64, 0.0);
+            soup.push([p(a, b), p(a + 1, b), p(a + 1, b + 1)]);
+            soup.push([p(a, b), p(a + 1, b + 1), p(a, b + 1)]);
+        }
+        let mut mesh = TriMesh::from_triangle_soup(&soup).unwrap();
+        mesh.build_bins(0.1);
+        let walls = [
+            wall(
+                "plane",
+                Shape::Plane(Plane::new(Vec3::new(-0.5, 0.0, 0.0), Vec3::X)),
+            ),
+            wall("mesh", Shape::Mesh(mesh)),
+        ];
+        let mut seed = 7u64;
+        let mut s = Spheres::default();
+        for _ in 0..5000 {
+            let mut u = || uniform(&mut seed);
+            s.push(NewSphere {
+                position: Vec3::new(1.4 * u() - 0.7, 1.4 * u() - 0.7, 0.03 * u()),
+                velocity: Vec3::ZERO,
+                angular_velocity: Vec3::ZERO,
+                radius: 0.005,
+                material: 0,
+                density: 1000.0,
+                fixed: false,
+            });
+        }
+        let mut nl = NeighborList::new(0.002);
+        let mut wc = WallContacts::default();
+        nl.build(&mut s, &d, None);
+        let (pos, prev, room) = nl.for_walls();
+        wc.rebuild(&walls, &s, pos, prev, room, 0.0, 0.002);
+        // Give every entry a contact, then build again from the same positions.
+        for (e, first) in wc.entries.iter_mut().zip(&mut wc.first) {
+            e.used = 1;
+            first.wall = 1;
+            first.history = Vec3::new(e.sphere as f64, 0.0, 0.0);
+        }
+        let old = wc.entries.clone();
+        nl.build(&mut s, &d, None);
+        let (pos, prev, room) = nl.for_walls();
+        wc.rebuild(&walls, &s, pos, prev, room, 0.0, 0.002);
+        let (pos, prev, room) = nl.for_walls();
+        assert!(wc.entries.len() > 1000 && s.len() > 2 * CHUNK);
+        let reach = Reach {
+            walls: &walls,
+            displacement: &[Vec3::ZERO; 2],
+            radius: &s.radius,
+            skin: 0.002,
+        };
+        let mut one = ChunkLists::default();
+        let mut triangles = 0;
+        for i in 0..s.len() {
+            // The room the neighbour list gives before the walls narrow it (no periodic axis).
+            let far = Vec3::splat(Room::FARTHEST * 0.002);
+            let mut r = Room::between(-far, far);
+            reach.chunk(i, &pos[i..], std::slice::from_mut(&mut r), &mut one);
+            assert_eq!(r, room[i], "room of {i}");
+            let e = wc.entry_of[i];
+            if e == NONE {
+                assert!(one.entries.is_empty(), "{i} reaches a wall, has no entry");
+                continue;
+            }
+            let (e, c) = (e as usize, i / CHUNK);
+            assert!((wc.chunk_start[c] as usize..wc.chunk_start[c + 1] as usize).contains(&e));
+            let entry = wc.entries[e];
+            assert_eq!(entry.sphere as usize, i);
+            let near = &wc.near[entry.near.0 as usize..entry.near.1 as usize];
+            assert_eq!(near.len(), one.near.len(), "walls of {i}");
+            for (a, b) in near.iter().zip(&one.near) {
+                assert_eq!(a.wall, b.wall);
+                let (ta, tb) = (
+                    a.tri.0 as usize..a.tri.1 as usize,
+                    b.tri.0 as usize..b.tri.1 as usize,
+                );
+                assert_eq!(wc.triangles[ta], one.triangles[tb], "triangles of {i}");
+                triangles += b.tri.1 - b.tri.0;
+            }
+            // Carried over: the sphere kept its slot (same positions), so its own history.
+            assert_eq!(prev[i] as usize, i);
+            assert_eq!((entry.used, wc.first[e].history.x), (1, i as f64));
+        }
+        assert_eq!(old.len(), wc.entries.len());
+        assert!(triangles > 1000, "{triangles} listed triangles");
+    }
 
     /// A block of spheres falling together past a floor, a side wall and an oblique plane (and
     /// through them: nothing pushes here): at every step each sphere touching a wall has it
