@@ -592,14 +592,20 @@ impl NeighborList {
         let im = domain.images();
         let [a0, a1, a2] = grid.axes;
         let (n0, n1, n2) = (grid.n[a0], grid.n[a1], grid.n[a2]);
-        // Interior cells (one cell or more from every face) search five runs of consecutive
-        // cells: the rest of their own row from the next slot on, the row above, and the three
-        // rows of the next layer. Those runs are ranges of consecutive slots, already ascending.
-        let interior = |c: usize| {
-            let (c0, c1, c2) = (c % n0, (c / n0) % n1, c / (n0 * n1));
-            (1..n0 - 1).contains(&c0) && (1..n1 - 1).contains(&c1) && (1..n2 - 1).contains(&c2)
+        // Cells one cell or more from every periodic face search at most five runs of
+        // consecutive cells: the rest of their own row from the next slot on, the row above,
+        // and the three rows of the next layer, each cut at the open faces (B1's bed, a few
+        // cells thick, has most of its spheres in cells on the floor or the free surface).
+        // Those runs are ranges of consecutive slots, already ascending, and hold the cells
+        // of the general search (`CellGrid::around`, those after the cell itself) in order.
+        let wraps_at = [a0, a1, a2].map(|k| grid.periodic[k]);
+        let fast_cell = |c: usize| {
+            let cc = [c % n0, (c / n0) % n1, c / (n0 * n1)];
+            let n = [n0, n1, n2];
+            (0..3).all(|k| !wraps_at[k] || (1..n[k] - 1).contains(&cc[k]))
         };
         let start = |c: usize| grid.start[c];
+        let index = |c0: usize, c1: usize, c2: usize| c0 + n0 * (c1 + n1 * c2);
         // With four cells or more along every periodic axis, a pair between an interior cell
         // and its neighbours is never nearer through a face (|d| < 2 cells <= half a period),
         // so the fast path takes the plain separation.
@@ -620,13 +626,22 @@ impl NeighborList {
                     last_cell = cell;
                     ranges.clear();
                     let cu = cell as usize;
-                    fast = interior(cu);
+                    fast = fast_cell(cu);
                     if fast {
-                        let (row, slab) = (n0, n0 * n1);
-                        ranges.push((0, start(cu + 2), true));
-                        ranges.push((start(cu + row - 1), start(cu + row + 2), false));
-                        for d1 in [cu + slab - row, cu + slab, cu + slab + row] {
-                            ranges.push((start(d1 - 1), start(d1 + 2), false));
+                        let (c0, c1, c2) = (cu % n0, (cu / n0) % n1, cu / (n0 * n1));
+                        // Along the fastest axis, cells lo..=hi of a row.
+                        let (lo, hi) = (c0.saturating_sub(1), (c0 + 1).min(n0 - 1));
+                        let run = |r1, r2| (start(index(lo, r1, r2)), start(index(hi, r1, r2) + 1));
+                        ranges.push((0, start(index(hi, c1, c2) + 1), true));
+                        if c1 + 1 < n1 {
+                            let (s, e) = run(c1 + 1, c2);
+                            ranges.push((s, e, false));
+                        }
+                        if c2 + 1 < n2 {
+                            for r1 in c1.saturating_sub(1)..=(c1 + 1).min(n1 - 1) {
+                                let (s, e) = run(r1, c2 + 1);
+                                ranges.push((s, e, false));
+                            }
                         }
                     } else {
                         grid.around(cu, &mut around);
