@@ -8,7 +8,7 @@
 //! and scatters the outputs in pair order. Lanes past the batch's length hold stale values;
 //! the laws compute them anyway (it is cheaper than a remainder loop) and nobody reads them.
 
-use wide::f64x4;
+use wide::f64x8;
 
 use crate::dem::material::PairLaw;
 use crate::math::Vec3;
@@ -100,10 +100,14 @@ pub fn put(v: &mut VecColumn, k: usize, x: Vec3) {
     (v[0][k], v[1][k], v[2][k]) = (x.x, x.y, x.z);
 }
 
-/// Four lanes of one column (`wide` runs them as one AVX instruction, or two SSE2 ones).
-type F = f64x4;
+/// Lanes per vector instruction.
+const W: usize = 8;
 
-/// Four lanes of a vector column.
+/// Eight lanes of one column (`wide` runs them as one AVX-512 instruction where the build
+/// has it, else as two AVX or four SSE2 ones).
+type F = f64x8;
+
+/// Eight lanes of a vector column.
 #[derive(Clone, Copy)]
 struct V([F; 3]);
 
@@ -168,17 +172,17 @@ impl std::ops::Neg for V {
     }
 }
 
-/// Lanes 4c..4c + 4 of a column.
+/// Lanes W c..W c + W of a column.
 #[inline(always)]
 fn load(x: &[f64; LANES], c: usize) -> F {
-    let mut a = [0.0; 4];
-    a.copy_from_slice(&x[4 * c..4 * c + 4]);
+    let mut a = [0.0; W];
+    a.copy_from_slice(&x[W * c..W * c + W]);
     F::new(a)
 }
 
 #[inline(always)]
 fn store(x: &mut [f64; LANES], c: usize, v: F) {
-    x[4 * c..4 * c + 4].copy_from_slice(&v.to_array());
+    x[W * c..W * c + W].copy_from_slice(&v.to_array());
 }
 
 /// The constants of `hooke` per contact: k_n, k_t [N m⁻¹], γ_n, γ_t [s⁻¹], μ [-].
@@ -200,7 +204,7 @@ pub fn hertz_mindlin_params(law: &PairLaw) -> [f64; 5] {
     [kn_a, kt_a, c_n, c_t, law.friction]
 }
 
-/// Stores lanes 4c..4c + 4 of a law's result: the history ξ, the force on i -F_n n + F_t and
+/// Stores lanes W c..W c + W of a law's result: the history ξ, the force on i -F_n n + F_t and
 /// the torques l_i (n × F_t), l_j (n × F_t) with the lever arms (l_i, l_j).
 #[inline(always)]
 fn react(l: &mut Lanes, c: usize, xi: V, (n, f_n, f_t): (V, F, V), (l_i, l_j): (F, F)) {
@@ -220,7 +224,7 @@ fn react(l: &mut Lanes, c: usize, xi: V, (n, f_n, f_t): (V, F, V), (l_i, l_j): (
 #[inline(always)]
 pub fn hooke(l: &mut Lanes, dt: f64) {
     let (dt, zero) = (F::splat(dt), F::splat(0.0));
-    for c in 0..LANES / 4 {
+    for c in 0..LANES / W {
         let n = V::load(&l.n, c);
         let dv = V::load(&l.dv, c);
         let (delta, m) = (load(&l.delta, c), load(&l.m_star, c));
@@ -263,7 +267,7 @@ pub fn hooke(l: &mut Lanes, dt: f64) {
 #[inline(always)]
 pub fn hertz_mindlin(l: &mut Lanes, dt: f64) {
     let (dt, half, minus_one) = (F::splat(dt), F::splat(0.5), F::splat(-1.0));
-    for c in 0..LANES / 4 {
+    for c in 0..LANES / W {
         let n = V::load(&l.n, c);
         let (a, root) = (load(&l.root_a, c), load(&l.root_b, c));
         let [kn_a, kt_a, c_n, c_t, mu] = l.params.each_ref().map(|p| load(p, c));
