@@ -33,6 +33,13 @@ pub struct SavedContact {
     pub history: Vec3,
 }
 
+/// Sets `v` to `n` copies of `x`, in parallel (B1 refills 400,000 histories at each build).
+fn filled<T: Copy + Send + Sync>(v: &mut Vec<T>, n: usize, x: T) {
+    v.truncate(n);
+    v.par_iter_mut().with_min_len(1 << 14).for_each(|y| *y = x);
+    v.resize(n, x);
+}
+
 /// Per-pair state aligned with the neighbour list.
 #[derive(Clone, Debug, Default)]
 pub struct PairContacts {
@@ -54,10 +61,8 @@ impl PairContacts {
         std::mem::swap(&mut self.history, &mut self.old_history);
         std::mem::swap(&mut self.touch, &mut self.old_touch);
         let n_pairs = nl.partner.len();
-        self.history.clear();
-        self.history.resize(n_pairs, Vec3::ZERO);
-        self.touch.clear();
-        self.touch.resize(n_pairs, 0);
+        filled(&mut self.history, n_pairs, Vec3::ZERO);
+        filled(&mut self.touch, n_pairs, 0);
         if nl.old_offsets.is_empty() || self.old_touch.len() != nl.old_partner_id.len() {
             return;
         }

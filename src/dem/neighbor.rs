@@ -24,7 +24,7 @@ pub use validity::Room;
 use validity::{Bands, Moves};
 
 use super::domain::Domain;
-use super::par::MIN_SPHERES_PER_TASK;
+use super::par::{for_chunks, MIN_SPHERES_PER_TASK};
 use super::spheres::{PermuteScratch, SphereId, Spheres, NO_BODY};
 use crate::math::Vec3;
 
@@ -279,6 +279,8 @@ pub struct NeighborList {
     built_ids: Vec<SphereId>,
     grid: CellGrid,
     chunks: Vec<ChunkOut>,
+    /// The first pair of each chunk of `chunks` at the join, and the total.
+    chunk_base: Vec<u32>,
     order: Vec<u32>,
     slot_before: Vec<u32>,
     scratch: PermuteScratch,
@@ -689,19 +691,47 @@ impl NeighborList {
             }
             buf.truncate(len);
         });
-        self.offsets.clear();
-        self.offsets.push(0);
-        self.partner.clear();
-        self.owner.clear();
+        self.join_chunks(n);
+    }
+
+    /// Puts the chunks' pairs end to end (offsets, partners, owners), each chunk in parallel
+    /// from where the pairs of the chunks before it end. Every element is written, so the
+    /// columns are resized, not cleared.
+    fn join_chunks(&mut self, n: usize) {
+        self.chunk_base.clear();
         let mut total = 0u32;
-        for (c, ch) in self.chunks.iter().enumerate() {
-            for (i, &k) in (c * CHUNK..).zip(&ch.count) {
-                total += k;
-                self.offsets.push(total);
-                self.owner.extend(std::iter::repeat_n(i as u32, k as usize));
-            }
-            self.partner.extend_from_slice(&ch.partner);
+        for ch in &self.chunks {
+            self.chunk_base.push(total);
+            total += ch.partner.len() as u32;
         }
+        self.chunk_base.push(total);
+        self.offsets.resize(n + 1, 0);
+        self.offsets[0] = 0;
+        self.partner.resize(total as usize, 0);
+        self.owner.resize(total as usize, 0);
+        let (chunks, base) = (&self.chunks, &self.chunk_base);
+        let bounds = |c: usize| ((c * CHUNK).min(n), base[c] as usize);
+        let leaf = |c: usize, ends: &mut [u32], (partner, owner): (&mut [u32], &mut [u32])| {
+            let ch = &chunks[c];
+            partner.copy_from_slice(&ch.partner);
+            let (mut end, mut q) = (base[c], 0);
+            for ((i, &k), e) in (c * CHUNK..).zip(&ch.count).zip(ends) {
+                end += k;
+                *e = end;
+                owner[q..q + k as usize].fill(i as u32);
+                q += k as usize;
+            }
+        };
+        let pairs = (&mut self.partner[..], &mut self.owner[..]);
+        let chunks = 0..chunks.len();
+        for_chunks(
+            chunks,
+            &mut self.offsets[1..],
+            pairs,
+            &bounds,
+            &leaf,
+            &|(), ()| (),
+        );
     }
 }
 
