@@ -24,7 +24,7 @@ pub use validity::Room;
 use validity::{Bands, Moves};
 
 use super::domain::Domain;
-use super::par::{for_chunks, MIN_SPHERES_PER_TASK};
+use super::par::{for_chunks, gather_into, MIN_SPHERES_PER_TASK};
 use super::spheres::{PermuteScratch, SphereId, Spheres, NO_BODY};
 use crate::math::Vec3;
 
@@ -414,24 +414,10 @@ impl NeighborList {
         let identity = self.order.iter().enumerate().all(|(k, &o)| k == o as usize);
         if !identity {
             spheres.permute(&self.order, &mut self.scratch);
-            self.tmp.clear();
-            let reference = &self.reference;
-            self.tmp.par_extend(
-                self.order
-                    .par_iter()
-                    .with_min_len(MIN_SPHERES_PER_TASK)
-                    .map(|&o| reference[o as usize]),
-            );
+            gather_into(&mut self.tmp, &self.reference, &self.order);
             std::mem::swap(&mut self.reference, &mut self.tmp);
         }
-        self.previous_slot.clear();
-        let before = &self.slot_before;
-        self.previous_slot.par_extend(
-            self.order
-                .par_iter()
-                .with_min_len(MIN_SPHERES_PER_TASK)
-                .map(|&o| before[o as usize]),
-        );
+        gather_into(&mut self.previous_slot, &self.slot_before, &self.order);
         // After sorting, cell c holds slots start[c]..start[c + 1].
         let cells = self.grid.cells();
         self.grid.cell_of.clear();

@@ -13,6 +13,18 @@
 /// longer on 2 threads than on 1 before this bound).
 pub const MIN_SPHERES_PER_TASK: usize = 4096;
 
+/// `out ← [from[order[0]], from[order[1]], ...]`, in parallel: a column put in a new order.
+pub fn gather_into<T: Copy + Send + Sync>(out: &mut Vec<T>, from: &[T], order: &[u32]) {
+    use rayon::prelude::*;
+    out.clear();
+    out.par_extend(
+        order
+            .par_iter()
+            .with_min_len(MIN_SPHERES_PER_TASK)
+            .map(|&o| from[o as usize]),
+    );
+}
+
 /// Something that can be cut in two at an index: a mutable slice, or a tuple of them (cut at
 /// the same index), or `()`.
 pub trait Split: Sized + Send {

@@ -7,10 +7,10 @@
 //! `permute` keep up to date). Every column must be listed in those three methods and nowhere
 //! else may reorder them. Contact history and checkpoints are keyed by id; outputs carry ids.
 
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::fluid_load::FluidLoad;
+use super::par::gather_into;
 use crate::math::Vec3;
 
 /// Index of a material in the simulation's material table.
@@ -76,8 +76,7 @@ pub struct PermuteScratch {
 
 /// `col ← [col[order[0]], col[order[1]], ...]` through `scratch` (which then holds the old column).
 fn gather<T: Copy + Send + Sync>(col: &mut Vec<T>, order: &[u32], scratch: &mut Vec<T>) {
-    scratch.clear();
-    scratch.par_extend(order.par_iter().map(|&o| col[o as usize]));
+    gather_into(scratch, col, order);
     std::mem::swap(col, scratch);
 }
 
