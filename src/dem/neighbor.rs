@@ -594,8 +594,8 @@ impl NeighborList {
         };
         let start = |c: usize| grid.start[c];
         let index = |c0: usize, c1: usize, c2: usize| c0 + n0 * (c1 + n1 * c2);
-        // With four cells or more along every periodic axis, a pair between an interior cell
-        // and its neighbours is never nearer through a face (|d| < 2 cells <= half a period),
+        // With four cells or more along every periodic axis, a pair between a fast cell (off
+        // every periodic face) and its neighbours is never nearer through a face (|d| < 2 cells <= half a period),
         // so the fast path takes the plain separation.
         let plain = (0..3).all(|k| !grid.periodic[k] || grid.n[k] >= 4);
         self.chunks.par_iter_mut().enumerate().for_each(|(c, out)| {

@@ -16,13 +16,15 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::neighbor::{Room, NONE};
+use super::par::MIN_SPHERES_PER_TASK;
 use super::spheres::{SphereId, Spheres};
 use super::walls::{Motion, Shape, Wall, WallContact, WallSlots, WALL_SLOTS};
 use crate::geometry::ContactBuf;
 use crate::math::Vec3;
 
-/// Spheres per parallel work item of the per-sphere force pass (fixed, so that results do not
-/// depend on the thread count); `WallContacts::chunk_start` is kept for it.
+/// Spheres per parallel work item of the per-sphere force pass and of the wall lists' build
+/// (fixed, so that results do not depend on the thread count); `WallContacts::chunk_start` is
+/// kept for the first, and the build's join relies on each chunk holding these slots.
 pub const CHUNK: usize = 2048;
 
 /// History slots 1.. of an entry (`WallContacts::more`; slot 0 is in `WallContacts::first`).
@@ -237,6 +239,7 @@ impl WallContacts {
             radius: &spheres.radius,
             skin,
         };
+        assert!(room.len() >= n, "rebuild: rooms of the wrong length");
         self.chunks
             .resize_with(n.div_ceil(CHUNK), ChunkLists::default);
         self.chunks
@@ -265,6 +268,7 @@ impl WallContacts {
         };
         self.entries
             .par_iter_mut()
+            .with_min_len(MIN_SPHERES_PER_TASK)
             .map(carried)
             .unzip_into_vecs(&mut self.first, &mut self.more);
     }

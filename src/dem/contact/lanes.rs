@@ -102,6 +102,7 @@ pub fn put(v: &mut VecColumn, k: usize, x: Vec3) {
 
 /// Lanes per vector instruction.
 const W: usize = 8;
+const _: () = assert!(LANES % W == 0, "the laws run whole vectors of lanes");
 
 /// Eight lanes of one column (`wide` runs them as one AVX-512 instruction where the build
 /// has it, else as two AVX or four SSE2 ones).
