@@ -363,7 +363,6 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
         radius,
         mass,
         material,
-        fixed,
         laws: &dem.laws,
         n_mat: dem.materials.len(),
         t,

@@ -107,6 +107,9 @@ struct Reach<'a> {
     /// Each wall's displacement at the build [m].
     displacement: &'a [Vec3],
     radius: &'a [f64],
+    /// Fixed spheres get no entry: like two fixed spheres (`neighbor`), a fixed sphere and a
+    /// wall move nothing, and their law would divide by the infinite mass of both (m* = ∞/∞).
+    fixed: &'a [bool],
     skin: f64,
 }
 
@@ -131,6 +134,9 @@ impl Reach<'_> {
         let skin = self.skin;
         for (k, (&x, room)) in pos.iter().zip(room).enumerate() {
             let i = i0 + k;
+            if self.fixed[i] {
+                continue;
+            }
             let first = out.near.len() as u32;
             let r = self.radius[i];
             let reach = r + skin;
@@ -237,6 +243,7 @@ impl WallContacts {
             walls,
             displacement: &self.displacement,
             radius: &spheres.radius,
+            fixed: &spheres.fixed,
             skin,
         };
         assert!(room.len() >= n, "rebuild: rooms of the wrong length");
@@ -413,6 +420,7 @@ mod tests {
             walls: &walls,
             displacement: &[Vec3::ZERO; 2],
             radius: &s.radius,
+            fixed: &s.fixed,
             skin: 0.002,
         };
         let mut one = ChunkLists::default();

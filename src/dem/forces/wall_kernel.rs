@@ -21,7 +21,6 @@ pub(super) struct WallContext<'a> {
     pub(super) radius: &'a [f64],
     pub(super) mass: &'a [f64],
     pub(super) material: &'a [u16],
-    pub(super) fixed: &'a [bool],
     pub(super) laws: &'a [PairLaw],
     pub(super) n_mat: usize,
     /// Time [s].
@@ -70,7 +69,7 @@ impl WallContext<'_> {
     /// 1. *Geometry*, entry by entry: the contacts with the walls within reach
     ///    (`Wall::contacts`), matched to last step's (`walls::match_history`), and put in the
     ///    batch as the law sees a wall: a sphere of infinite radius and mass (R* = r_i,
-    ///    m* = m_i, or infinite for a fixed sphere; `contact::Pair::new`).
+    ///    m* = m_i; `contact::Pair::new`).
     /// 2. *Forces*: the law on all lanes at once (`Kernel::lanes`), then the scatter in
     ///    contact order: the history back to its slot, F and T_i added to the sphere.
     ///
@@ -140,11 +139,8 @@ impl WallContext<'_> {
                 (first[e], more[e]) = split(&slots);
             }
             entry.used = hits.len as u32;
-            let m = if self.fixed[i] {
-                f64::INFINITY
-            } else {
-                self.mass[i]
-            };
+            // Fixed spheres have no entries (`wall_contacts::Reach`).
+            let m = self.mass[i];
             for (s, h) in hits.iter().enumerate() {
                 let law = self.material[i] as usize * self.n_mat
                     + self.walls[h.wall as usize].material as usize;
@@ -346,7 +342,6 @@ mod tests {
             radius: &s.radius,
             mass: &s.mass,
             material: &s.material,
-            fixed: &s.fixed,
             laws: &dem.laws,
             n_mat: dem.materials.len(),
             t: 0.0,

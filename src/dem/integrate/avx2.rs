@@ -34,7 +34,16 @@ unsafe fn pattern(a: Vec3) -> [__m256d; 3] {
 /// `a`, but opaque to the compiler. A blend of a value with the number just loaded from where
 /// the result is stored would otherwise become a masked store, which AMD Zen processors run in
 /// microcode (B2, 1 thread: twice as long for this loop).
-#[inline(always)]
+///
+/// The `ymm` register class needs AVX where the `asm!` is written, not only in the caller:
+/// without it a build that does not target this processor (`RUSTFLAGS=""`, or riprap as a
+/// dependency of another crate) does not compile. `#[inline]` still inlines it into
+/// `close_and_open`, whose AVX2 includes AVX.
+///
+/// # Safety
+/// The processor must have AVX.
+#[inline]
+#[target_feature(enable = "avx")]
 unsafe fn opaque(mut a: __m256d) -> __m256d {
     std::arch::asm!("/* {0} */", inout(ymm_reg) a, options(pure, nomem, nostack, preserves_flags));
     a
