@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# riprap against LIGGGHTS and LAMMPS on the shared benchmarks (shared/bench/README.md).
+# riprap against LIGGGHTS and LAMMPS on the shared benchmarks (bench/peers/README.md).
 #
 # Usage:  bash bench/compare.sh            (from anywhere; takes about 2 to 3 hours on 2 cores)
 #
@@ -16,7 +16,7 @@
 # (median peer time / median riprap time); loop time only, as the peers report it.
 #
 # Env: BENCH_INPUTS  folder with gen_b1.py, in.b1.liggghts, in.b1.lammps, in.chute and
-#                    data.chute.gz (default: shared/bench beside the repository)
+#                    data.chute.gz (default: bench/peers)
 #      RUN_DIR       logs (default: runs/compare in the repository; git-ignored)
 #      REPEATS, CASES, B1_N, B1_STEPS, B2_STEPS, M1_STEPS, NP_LIST (default "1 2"),
 #      B1_PEERS (default "liggghts lammps"; B1's goal is against LIGGGHTS, "liggghts" alone
@@ -26,7 +26,7 @@
 set -euo pipefail
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-INPUTS=${BENCH_INPUTS:-$ROOT/../shared/bench}
+INPUTS=${BENCH_INPUTS:-$ROOT/bench/peers}
 RUN=${RUN_DIR:-$ROOT/runs/compare}
 # Absolute, as the runs start inside it (a relative RUN_DIR used to lose the riprap binary).
 mkdir -p "$RUN" && RUN=$(cd "$RUN" && pwd)

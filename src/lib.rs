@@ -3,7 +3,7 @@
 //! Sand grains and concrete armour blocks under water: a 3D discrete element method (DEM) for
 //! spheres and rigid blocks built from spheres, with a large-eddy simulation of the water coupled
 //! in both directions. The method, with its equation numbers, is
-//! `shared/spec/METHOD.md`; doc comments cite those numbers in brackets, e.g. [9].
+//! `docs/METHOD.md`; doc comments cite those numbers in brackets, e.g. [9].
 //!
 //! Module map (a module uses what is above it, never what is below):
 //!

@@ -12,7 +12,7 @@ use riprap::scenario::{build, Source};
 #[command(
     name = "riprap",
     version,
-    about = "DEM of sand, gravel and armour blocks (METHOD.md)"
+    about = "DEM of sand, gravel and armour blocks, coupled to an LES of the water (docs/METHOD.md)"
 )]
 struct Cli {
     /// Worker threads (default: all cores). Results do not depend on it.
@@ -38,7 +38,7 @@ enum Command {
         #[arg(long)]
         steps: Option<u64>,
     },
-    /// Benchmarks on problems shared with LIGGGHTS and LAMMPS (shared/bench/README.md).
+    /// Benchmarks on problems shared with LIGGGHTS and LAMMPS (bench/peers/README.md).
     Bench {
         #[command(subcommand)]
         case: BenchCase,
@@ -76,8 +76,8 @@ enum BenchCase {
     },
     /// B2 "chute": LAMMPS's bench/in.chute (32,000 spheres, Hooke with history, frozen base).
     B2 {
-        /// LAMMPS data file (shared/bench/data.chute.gz, uncompressed).
-        #[arg(long, default_value = "data.chute")]
+        /// LAMMPS data file, plain or gzipped (default: the repository's bench/peers/data.chute.gz).
+        #[arg(long, default_value = concat!(env!("CARGO_MANIFEST_DIR"), "/bench/peers/data.chute.gz"))]
         data: PathBuf,
         /// Steps (LAMMPS's benchmark runs 100).
         #[arg(long, default_value_t = 100)]
@@ -140,10 +140,22 @@ fn print_loop_summary(
     }
 }
 
+/// A text file, gunzipped when its name ends in `.gz`.
+fn read_text(path: &std::path::Path) -> std::io::Result<String> {
+    let file = std::fs::File::open(path)?;
+    let mut text = String::new();
+    if path.extension().is_some_and(|e| e == "gz") {
+        std::io::Read::read_to_string(&mut flate2::read::GzDecoder::new(file), &mut text)?;
+    } else {
+        std::io::Read::read_to_string(&mut std::io::BufReader::new(file), &mut text)?;
+    }
+    Ok(text)
+}
+
 fn bench_b2(data: &std::path::Path, steps: u64, every: u64) -> anyhow::Result<()> {
     use anyhow::Context;
     use riprap::bench::{b2_simulation, read_lammps_data, run_b2};
-    let text = std::fs::read_to_string(data)
+    let text = read_text(data)
         .with_context(|| format!("cannot read the LAMMPS data file {}", data.display()))?;
     let lammps = read_lammps_data(&text).map_err(|e| anyhow::anyhow!("{}: {e}", data.display()))?;
     let threads = rayon::current_num_threads();

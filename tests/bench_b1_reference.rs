@@ -1,4 +1,4 @@
-//! B1 "box-settle" (shared/bench/README.md) against the reference trajectory that LIGGGHTS and
+//! B1 "box-settle" (bench/peers/README.md) against the reference trajectory that LIGGGHTS and
 //! LAMMPS produced for N = 10,000 with the identical Hertz-Mindlin law.
 //!
 //! The first 4,000 steps (free fall and the first impacts on the floor) are compared, which

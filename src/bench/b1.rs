@@ -1,4 +1,4 @@
-//! Benchmarks of the DEM on problems shared with LIGGGHTS and LAMMPS (`shared/bench/README.md`).
+//! Benchmarks of the DEM on problems shared with LIGGGHTS and LAMMPS (`bench/peers/README.md`).
 //!
 //! B1 "box-settle": N Hertz-Mindlin spheres (d = 1 cm, ρ = 2500 kg m⁻³, E = 5 MPa, ν = 0.3,
 //! e = 0.5, μ = 0.5) start on a simple cubic lattice of spacing 1.5 d with deterministic

@@ -1,4 +1,4 @@
-//! B2 "chute": LAMMPS's `bench/in.chute` granular chute-flow benchmark (shared/bench/README.md),
+//! B2 "chute": LAMMPS's `bench/in.chute` granular chute-flow benchmark (bench/peers/README.md),
 //! in LJ units (sphere diameter 1, density 1).
 //!
 //! 32,000 spheres read from LAMMPS's `data.chute` (a steady dense flow after 10⁶ steps), of

@@ -1,4 +1,4 @@
-//! Benchmarks: the DEM on problems shared with LIGGGHTS and LAMMPS (`shared/bench/README.md`),
+//! Benchmarks: the DEM on problems shared with LIGGGHTS and LAMMPS (`bench/peers/README.md`),
 //! the flow solver, and coupled runs. Speed is measured here, never in tests.
 
 pub mod b1;

@@ -74,7 +74,7 @@ pub enum ContactModel {
         damping: Damping,
     },
     /// LIGGGHTS `model hertz tangential history` (= LAMMPS `hertz/material` + `mindlin`), exactly
-    /// as `shared/bench/README.md` specifies it, for users coming from those codes.
+    /// as `bench/peers/README.md` specifies it, for users coming from those codes.
     HertzMindlin,
     /// LAMMPS `pair_style gran/hooke/history k_n k_t γ_n γ_t xmu dampflag` (`contact::hooke`):
     /// a linear spring-dashpot with tangential history, for users of LAMMPS and its chute

@@ -1,5 +1,5 @@
 //! Hertz-Mindlin with tangential history, exactly as LIGGGHTS `model hertz tangential history`
-//! computes it (the law of `shared/bench/README.md`, also reached in LAMMPS with
+//! computes it (the law of `bench/peers/README.md`, also reached in LAMMPS with
 //! `hertz/material` + `mindlin`), so that users of those codes get the same answers.
 //!
 //! Symbols: E*, G* effective moduli [Pa]; R*, m* effective radius [m] and mass [kg];
