@@ -118,7 +118,8 @@ fn check_passes_on_every_example_and_prints_the_derived_quantities() {
                 file.display()
             );
         }
-        // Every example opens with a comment block that says how to run it and how long it takes.
+        // Every example opens with a comment block that says how to run it. Wall times are left
+        // out (they were 5 to 13 times off on another machine); `riprap check` gives the size.
         let head: String = body
             .lines()
             .take_while(|l| l.starts_with('#'))
@@ -135,8 +136,8 @@ fn check_passes_on_every_example_and_prints_the_derived_quantities() {
             "{name}: how to run it"
         );
         assert!(
-            head.contains("Time:") && head.contains("2 cores"),
-            "{name}: how long it takes"
+            !head.contains("Time:") && head.contains("riprap check"),
+            "{name}: a wall time in the header, or no pointer to `riprap check`"
         );
     }
     // The built-in default scenario too.
