@@ -916,3 +916,11 @@ fn sphere_files_missing_or_malformed() {
     assert_eq!(s.fixed.iter().filter(|&&f| f).count(), 1);
     assert!((s.radius[0] - 0.05).abs() < 1e-15);
 }
+
+#[test]
+fn a_run_name_with_dot_dot_cannot_write_outside_the_output_folder() {
+    for name in ["../../escape", "a/b", "a\\\\b", "..", "", ".hidden"] {
+        let text = BASE.replace("name = \"case\"", &format!("name = \"{name}\" # NAME"));
+        refused_in(&text, "# NAME", "run.name", &["single plain folder name"]);
+    }
+}

@@ -235,6 +235,7 @@ pub(super) fn material_or_default(
 /// Checks a scenario and builds the simulation.
 pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     let sc = &src.scenario;
+    run_name(src, &sc.run.name)?;
     positive(src, "run.end_time", sc.run.end_time)?;
     finite(src, "domain.min", &sc.domain.min)?;
     finite(src, "domain.max", &sc.domain.max)?;
@@ -609,6 +610,32 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         simulation,
         derived,
     })
+}
+
+/// Refuses a run name that is not one plain folder name: the results go to `output/<name>`,
+/// and a `/`, `\\` or `..` there would write elsewhere.
+fn run_name(src: &Source, name: &str) -> Result<(), ScenarioError> {
+    let why = if name.trim().is_empty() {
+        Some("is empty")
+    } else if name.contains(['/', '\\']) {
+        Some("contains a path separator (`/` or `\\`)")
+    } else if name.starts_with('.') {
+        Some("starts with a dot (`..` would leave the output folder, `.` hides it)")
+    } else if name.chars().any(char::is_control) {
+        Some("contains a control character")
+    } else {
+        None
+    };
+    match why {
+        Some(why) => Err(src.invalid(
+            "run.name",
+            format!(
+                "`{name}` {why}; the results go to the folder output/<name>, so the name must be \
+                 a single plain folder name such as \"dam_break\""
+            ),
+        )),
+        None => Ok(()),
+    }
 }
 
 /// a b / (a + b): the reduced mass or inertia of two bodies.
