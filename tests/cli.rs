@@ -391,3 +391,39 @@ fn run_without_a_scenario_runs_the_coupled_hopper_cloud() {
     assert!(last[2] >= 10.0, "spheres fed: {}", last[2]);
     assert!(last[12] > 0.0, "the water stays at rest: {last:?}");
 }
+
+/// A sphere that starts pressed 0.6 of its radius into the plate (allowed by its file set's
+/// max_overlap_ratio, so that `check` lets it through) with a step well below the stable
+/// limit: the run fails at once, and the diagnosis names the initial overlap, not the step.
+#[test]
+fn an_initial_overlap_with_a_wall_is_diagnosed_as_such_not_as_the_time_step() {
+    let dir = temp_dir("initial_overlap");
+    std::fs::write(dir.join("bead.csv"), "x,y,z,diameter\n0.0,0.0,0.002,0.01\n").unwrap();
+    let start = examples().join("single_impact.toml");
+    let body = std::fs::read_to_string(start).unwrap();
+    let list = body.find("\n[[spheres]]").unwrap() + 1;
+    let end = body.find("\n[output]").unwrap() + 1;
+    let body = format!(
+        "{}[[spheres]]\nkind = \"file\"\nmaterial = \"glass\"\nfile = \"bead.csv\"\nmax_overlap_ratio = 0.35\n\n{}",
+        &body[..list],
+        &body[end..]
+    );
+    let file = dir.join("overlap.toml");
+    std::fs::write(&file, &body).unwrap();
+    let out = riprap(&["check", path_str(&file)]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let out_dir = dir.join("out");
+    let out = riprap(&["run", path_str(&file), "--output", path_str(&out_dir)]);
+    let stderr = text(&out.stderr);
+    assert!(!out.status.success(), "the run should fail:\n{stderr}");
+    assert!(
+        stderr.contains("started overlapping a wall or another sphere"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("within the stable limit"), "{stderr}");
+    assert!(
+        !stderr.contains("too large for the step") && !stderr.contains("or the time step"),
+        "the step is blamed:\n{stderr}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -262,3 +262,13 @@ fn a_block_run_writes_its_outputs_and_a_restart_continues_bit_for_bit() {
     assert!(enc(&x) == enc(&y), "restart is bit for bit");
     assert!(!x.rigid.blocks.is_empty() && x.rigid.bonds.len() == 1);
 }
+
+#[test]
+fn a_block_whose_members_overlap_the_floor_is_refused() {
+    refused(
+        "\n[[blocks]]\nkind = \"list\"\ntemplate = \"tetrapod\"\nblocks = [ { position = [0.2, 0.2, 0.021] } ] # here\n",
+        "# here",
+        "blocks[0].blocks[0]",
+        &["starts overlapping wall `plane0` (wall[0])", "of its radius"],
+    );
+}

@@ -445,7 +445,10 @@ mod tests {
         let e = err(b"solid empty\nendsolid empty\n");
         assert_eq!(e, "bad.stl: the mesh has no triangles");
         let e = err(b"solid empty\n");
-        assert!(e.starts_with("bad.stl: line 1: file ends after 0 facets"), "{e}");
+        assert!(
+            e.starts_with("bad.stl: line 1: file ends after 0 facets"),
+            "{e}"
+        );
         let e = err(b"solid empty\nendsolid empty\n");
         assert_eq!(e, "bad.stl: the mesh has no triangles");
     }

@@ -7,6 +7,7 @@ use super::blocks::build_blocks;
 use super::fluid::build_fluid;
 use super::schema::{v3, ContactSection, DampingName, ModelName, WallSection};
 use super::spheres::{build_spheres, check_walls};
+use super::wall_overlaps::check_wall_overlaps;
 use super::{FluidDerived, ScenarioError, Source};
 use crate::dem::contacts::PairContacts;
 use crate::dem::domain::Domain;
@@ -343,6 +344,7 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     let (mut spheres, feeders, mut origin) = build_spheres(src, &names, &materials, &domain)?;
     let rigid = build_blocks(src, &names, &materials, &domain, &mut spheres, &mut origin)?;
     check_walls(src, &spheres, &origin)?;
+    check_wall_overlaps(src, &walls, &spheres, &origin)?;
 
     // Pairings present: every material with its smallest and largest radius, and the members of
     // each block template with the smallest and the largest member mass (within a step a member

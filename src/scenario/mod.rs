@@ -9,6 +9,7 @@ pub mod default;
 pub mod fluid;
 pub mod schema;
 mod spheres;
+mod wall_overlaps;
 
 use std::ops::Range;
 use std::path::{Path, PathBuf};
