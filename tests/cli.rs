@@ -427,3 +427,31 @@ fn an_initial_overlap_with_a_wall_is_diagnosed_as_such_not_as_the_time_step() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `check` of a 200³ grid (about 1.9 GB of fields) under a 1 GB address-space limit: it
+/// estimates the fields' memory and prints it, without making them.
+#[test]
+fn check_prints_the_memory_estimate_without_building_the_flow_grid() {
+    let dir = temp_dir("check_memory");
+    let file = dir.join("big_grid.toml");
+    std::fs::write(
+        &file,
+        "[run]\nname = \"big_grid\"\nend_time = 1.0\n\n[domain]\nmin = [0.0, 0.0, 0.0]\nmax = [1.0, 1.0, 1.0]\n\n[fluid]\ncells = [200, 200, 200]\n",
+    )
+    .unwrap();
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -v 1000000 && exec {BIN} --threads 1 check {}",
+            path_str(&file)
+        ))
+        .output()
+        .unwrap();
+    let stdout = text(&out.stdout);
+    assert!(out.status.success(), "{stdout}{}", text(&out.stderr));
+    assert!(
+        stdout.contains("memory estimate: 1.9 GB") && stdout.contains("8000000 fluid cells"),
+        "{stdout}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -978,3 +978,33 @@ fn a_sphere_overlapping_a_wall_by_60_percent_of_its_radius_is_refused() {
     let src = Source::from_str(&set(0.35), "case.toml", dir.clone()).unwrap();
     assert!(build(&src).is_ok(), "0.3 of the diameter is within 0.35");
 }
+
+/// Each of these would ask for terabytes: refused from the numbers, before anything is made
+/// (were they made, the test would abort).
+#[test]
+fn input_that_asks_for_more_memory_than_the_machine_has_is_refused_naming_the_key() {
+    refused(
+        "\n[[spheres]]\nkind = \"lattice\"\nmaterial = \"rock\"\nmin = [0.0, 0.0, 0.0]\nmax = [0.04, 0.04, 0.04]\nspacing = 1.0e-6 # here\ndiameter = 1.0e-6\n",
+        "# here",
+        "spheres[0].spacing",
+        &["64000000000000 spheres", "this machine has", "MemAvailable"],
+    );
+    refused(
+        "\n[[spheres]]\nkind = \"feed\"\nmaterial = \"rock\"\nmin = [0.0, 0.0, 0.8]\nmax = [0.5, 0.5, 0.9]\nrate = 10.0\ntotal = 100000000000 # here\nsizes = [ { diameter = 0.05, count = 1 } ]\n",
+        "# here",
+        "spheres[0].total",
+        &["100000000000 spheres", "this machine has"],
+    );
+    refused(
+        "\n[fluid]\ncells = [1500, 1500, 1500] # here\n",
+        "# here",
+        "fluid.cells",
+        &["1500 × 1500 × 1500 cells", "this machine has"],
+    );
+    refused(
+        "\n[[spheres]]\nkind = \"random\"\nmaterial = \"rock\"\nmin = [0.0, 0.0, 0.0]\nmax = [1.0, 1.0, 1.0]\nsizes = [ { diameter = 0.0001, count = 1000000000 } ] # here\n",
+        "# here",
+        "spheres[0].sizes",
+        &["1000000000 spheres", "this machine has"],
+    );
+}

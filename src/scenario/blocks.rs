@@ -43,7 +43,7 @@ fn random_orientation(rng: &mut Rng) -> Quat {
 }
 
 /// Builds one template, checked and sized.
-fn template(
+pub(super) fn template(
     src: &Source,
     i: usize,
     t: &BlockTemplateSection,

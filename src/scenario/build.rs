@@ -5,6 +5,7 @@ use std::fmt::Write as _;
 
 use super::blocks::build_blocks;
 use super::fluid::build_fluid;
+use super::memory::{self, MemoryEstimate};
 use super::schema::{v3, ContactSection, DampingName, ModelName, WallSection};
 use super::spheres::{build_spheres, check_walls};
 use super::wall_overlaps::check_wall_overlaps;
@@ -40,8 +41,8 @@ pub struct Derived {
     pub spheres: (usize, usize),
     /// One line per pairing: description and scales.
     pub pairings: Vec<(String, ContactScales)>,
-    /// Rough memory estimate [bytes].
-    pub memory: f64,
+    /// Memory estimate, made before anything was allocated.
+    pub memory: MemoryEstimate,
     /// Per pairing: (restitution a run at this step shows, steps in contact), from
     /// `timestep::discrete_impact` at the reference velocity.
     pub at_step: Vec<(f64, u64)>,
@@ -67,6 +68,7 @@ impl Derived {
         if let Some(c) = &self.coupling {
             s.push_str(c);
         }
+        s.push_str(&self.memory.report());
         s
     }
 
@@ -144,7 +146,6 @@ impl Derived {
             self.min_period / self.time_step,
             self.steps
         );
-        let _ = writeln!(s, "memory estimate: {:.1} MB", self.memory / 1e6);
         s
     }
 }
@@ -235,6 +236,22 @@ pub(super) fn material_or_default(
 
 /// Checks a scenario and builds the simulation.
 pub fn build(src: &Source) -> Result<Built, ScenarioError> {
+    let (simulation, derived) = build_or_check(src, true)?;
+    Ok(Built {
+        simulation: simulation.expect("built for a run"),
+        derived,
+    })
+}
+
+/// Checks a scenario and computes what `riprap check` prints, without making the flow's
+/// fields (the grid's memory is only estimated) or the simulation.
+pub fn check(src: &Source) -> Result<Derived, ScenarioError> {
+    build_or_check(src, false).map(|(_, derived)| derived)
+}
+
+/// Checks the scenario and, with `run`, builds the simulation; the memory is estimated and
+/// refused when too large before anything in proportion to it is allocated.
+fn build_or_check(src: &Source, run: bool) -> Result<(Option<Simulation>, Derived), ScenarioError> {
     let sc = &src.scenario;
     run_name(src, &sc.run.name)?;
     positive(src, "run.end_time", sc.run.end_time)?;
@@ -340,6 +357,17 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         }
     }
 
+    let templates: Vec<_> = sc
+        .block_templates
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            let m = names.iter().position(|n| *n == t.material)?;
+            super::blocks::template(src, i, t, materials[m].density).ok()
+        })
+        .collect();
+    let memory = memory::estimate(src, &names, &materials, &templates);
+    memory::refuse_if_too_big(src, &memory)?;
     let walls = build_walls(src, &names)?;
     let (mut spheres, feeders, mut origin) = build_spheres(src, &names, &materials, &domain)?;
     let rigid = build_blocks(src, &names, &materials, &domain, &mut spheres, &mut origin)?;
@@ -559,9 +587,14 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         )?,
     };
     let radii: Vec<f64> = kinds.iter().map(|k| k.1).collect();
-    let fluid = build_fluid(src, &domain, gravity, dt, &radii)?;
-    let coupling = super::coupling::coupling_parameters(src, fluid.is_some())?;
-    spheres.reserve(n_fed);
+    let (fluid, fluid_derived) = match build_fluid(src, &domain, gravity, dt, &radii, run)? {
+        Some((f, d)) => (f, Some(d)),
+        None => (None, None),
+    };
+    let coupling = super::coupling::coupling_parameters(src, fluid_derived.is_some())?;
+    if run {
+        spheres.reserve(n_fed);
+    }
     let dem = Dem {
         spheres,
         materials,
@@ -588,19 +621,20 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         steps: (sc.run.end_time / dt).round() as u64,
         spheres: (dem.spheres.len(), n_fed),
         pairings,
-        // Per sphere (ARCHITECTURE.md, "Performance and memory"): state 179 B, neighbour list
-        // and sorting ~150 B, ~4 listed pairs at 62 B, wall lists ~40 B.
-        memory: n_total as f64 * 620.0,
+        memory,
         at_step,
         block_lines,
-        fluid: fluid.as_ref().map(|f| f.1.clone()),
         coupling: coupling.map(|c| {
-            let cells = fluid.as_ref().and_then(|f| f.1.cells_per_diameter());
+            let cells = fluid_derived.as_ref().and_then(|f| f.cells_per_diameter());
             super::coupling::report(&c, cells)
         }),
+        fluid: fluid_derived,
     };
+    if !run {
+        return Ok((None, derived));
+    }
     let mut simulation = Simulation::with_bodies(dem, feeders, rigid, min_period);
-    if let Some((f, _)) = fluid {
+    if let Some(f) = fluid {
         let d_max = 2.0 * radii.iter().fold(0.0f64, |a, &r| a.max(r));
         let coupled = coupling.map(|c| crate::coupling::Coupling::new(c, &f, d_max));
         simulation = simulation.with_fluid(f);
@@ -608,14 +642,11 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             simulation = simulation.with_coupling(c);
         }
     }
-    Ok(Built {
-        simulation,
-        derived,
-    })
+    Ok((Some(simulation), derived))
 }
 
 /// Refuses a run name that is not one plain folder name: the results go to `output/<name>`,
-/// and a `/`, `\\` or `..` there would write elsewhere.
+/// and a `/`, `\` or `..` there would write elsewhere.
 fn run_name(src: &Source, name: &str) -> Result<(), ScenarioError> {
     let why = if name.trim().is_empty() {
         Some("is empty")

@@ -7,6 +7,7 @@ mod build;
 pub mod coupling;
 pub mod default;
 pub mod fluid;
+pub mod memory;
 pub mod schema;
 mod spheres;
 mod wall_overlaps;
@@ -17,7 +18,7 @@ use std::path::{Path, PathBuf};
 use toml::de::{DeTable, DeValue, ValueDeserializer};
 use toml::Spanned;
 
-pub use build::{build, Built, Derived};
+pub use build::{build, check, Built, Derived};
 pub use fluid::FluidDerived;
 pub use schema::Scenario;
 
