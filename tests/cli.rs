@@ -381,7 +381,10 @@ fn run_without_a_scenario_runs_the_coupled_hopper_cloud() {
         stderr.contains("hopper_cloud"),
         "the default is hopper_cloud:\n{stderr}"
     );
-    assert!(stderr.contains("coupling: Resolved"), "{stderr}");
+    assert!(
+        stderr.contains("coupling: resolved (spheres several cells across)"),
+        "{stderr}"
+    );
     for f in ["spheres.pvd", "flow.pvd", "series.csv", "checkpoint.ck"] {
         assert!(dir.join(f).exists(), "no {f} in {}", dir.display());
     }
@@ -452,6 +455,57 @@ fn check_prints_the_memory_estimate_without_building_the_flow_grid() {
     assert!(
         stdout.contains("memory estimate: 1.9 GB") && stdout.contains("8000000 fluid cells"),
         "{stdout}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `check` predicted about 500 fluid steps for the hopper cloud, whose run took 1073: the
+/// falling spheres stir the water and the adaptive step shrinks. It now gives the range, from
+/// the water at its own velocity scale to the water stirred to the spheres' reference speed,
+/// rounded to whole DEM steps; a short run (0.3 s) falls within it.
+#[test]
+fn check_predicts_a_range_of_fluid_steps_that_holds_the_run() {
+    let dir = temp_dir("fluid_steps");
+    let body = std::fs::read_to_string(examples().join("hopper_cloud.toml")).unwrap();
+    let at = body
+        .find("\nend_time = 1.0")
+        .expect("hopper_cloud's end_time")
+        + 1;
+    let short = format!(
+        "{}end_time = 0.3 #{}",
+        &body[..at],
+        &body[at + "end_time = 1.0".len()..]
+    );
+    let file = dir.join("short.toml");
+    std::fs::write(&file, short).unwrap();
+    let out = riprap(&["check", path_str(&file)]);
+    let stdout = text(&out.stdout);
+    assert!(out.status.success(), "{stdout}{}", text(&out.stderr));
+    let line = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("fluid steps to the end: about "))
+        .unwrap_or_else(|| panic!("no prediction of fluid steps:\n{stdout}"));
+    let words: Vec<&str> = line.split_whitespace().collect();
+    assert_eq!(words[1], "to", "a range: {line}");
+    let (fewest, most): (u64, u64) = (words[0].parse().unwrap(), words[2].parse().unwrap());
+    let out = riprap(&[
+        "run",
+        path_str(&file),
+        "--output",
+        path_str(&dir.join("out")),
+    ]);
+    let stderr = text(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    let steps: u64 = stderr
+        .lines()
+        .find_map(|l| l.strip_prefix("done: "))
+        .and_then(|l| l.split(", ").nth(1))
+        .and_then(|w| w.split_whitespace().next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("no step count in\n{stderr}"));
+    assert!(
+        (fewest..=most).contains(&steps),
+        "predicted {fewest} to {most}, the run took {steps}"
     );
     let _ = std::fs::remove_dir_all(&dir);
 }

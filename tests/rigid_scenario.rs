@@ -143,7 +143,7 @@ fn blocks_wires_and_bonds_are_built_and_reported_by_check() {
     assert!(
         report.contains("rigid blocks:")
             && report.contains("tetrapod")
-            && report.contains("1 wires, 1 bonds"),
+            && report.contains("1 wire, 1 bond"),
         "{report}"
     );
     // Mass of a stone as asked, and members with the block id as their body.

@@ -56,7 +56,7 @@ pub(super) fn template(
         } else {
             Err(src.invalid(
                 &key(k),
-                format!("`{k}` does not apply to shape {:?}", t.shape),
+                format!("`{k}` does not apply to shape \"{}\"", t.shape.name()),
             ))
         }
     };

@@ -8,6 +8,7 @@ use super::fluid::build_fluid;
 use super::memory::{self, MemoryEstimate};
 use super::schema::{v3, ContactSection, DampingName, ModelName, WallSection};
 use super::spheres::{build_spheres, check_walls};
+use super::text::count;
 use super::wall_overlaps::check_wall_overlaps;
 use super::{FluidDerived, ScenarioError, Source};
 use crate::dem::contacts::PairContacts;
@@ -529,10 +530,10 @@ fn build_or_check(src: &Source, run: bool) -> Result<(Option<Simulation>, Derive
         let m = material_of(src, &names, "", Some(&sc.block_templates[t].material))?;
         let rho = materials[m as usize].density;
         block_lines.push(format!(
-            "{:<16} {:>6} blocks, {:>3} spheres each, D_n = {:.4} m, W = {:.4e} kg, bounding diameter {:.4} m, mass representation error {:.1e}",
+            "{:<16} {:>6}, {:>3} each, D_n = {:.4} m, W = {:.4e} kg, bounding diameter {:.4} m, mass representation error {:.1e}",
             tpl.name,
-            n,
-            tpl.members.len(),
+            count(n as f64, "block"),
+            count(tpl.members.len() as f64, "sphere"),
             tpl.nominal_diameter(),
             tpl.mass(rho),
             2.0 * super::blocks::bounding_radius(tpl),
@@ -541,9 +542,9 @@ fn build_or_check(src: &Source, run: bool) -> Result<(Option<Simulation>, Derive
     }
     if !rigid.wires.is_empty() || !rigid.bonds.is_empty() {
         block_lines.push(format!(
-            "links: {} wires, {} bonds",
-            rigid.wires.len(),
-            rigid.bonds.len()
+            "links: {}, {}",
+            count(rigid.wires.len() as f64, "wire"),
+            count(rigid.bonds.len() as f64, "bond")
         ));
     }
     let n_fed: usize = feeders.iter().map(|f| f.total).sum();
@@ -592,6 +593,10 @@ fn build_or_check(src: &Source, run: bool) -> Result<(Option<Simulation>, Derive
         None => (None, None),
     };
     let coupling = super::coupling::coupling_parameters(src, fluid_derived.is_some())?;
+    let mut fluid_derived = fluid_derived;
+    if let (Some(fd), Some(c)) = (fluid_derived.as_mut(), coupling) {
+        super::fluid::note_coupling(fd, &c, gravity, v_ref);
+    }
     if run {
         spheres.reserve(n_fed);
     }

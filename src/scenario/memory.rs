@@ -6,6 +6,7 @@
 use std::fmt::Write as _;
 
 use super::schema::{BlockSet, SizeSection, SphereSet};
+use super::text::count;
 use super::{ScenarioError, Source};
 use crate::dem::material::Material;
 use crate::fluid::diagnostics::memory_for_cells;
@@ -40,15 +41,25 @@ impl MemoryEstimate {
 
     /// The line `riprap check` prints.
     pub fn report(&self) -> String {
-        let mut s = format!(
-            "memory estimate: {} ({} for {} spheres at {BYTES_PER_SPHERE:.0} B each, {} for {} \
-             fluid cells)",
-            bytes(self.total()),
-            bytes(self.dem_bytes),
-            self.spheres,
-            bytes(self.fluid_bytes),
-            self.cells
-        );
+        let mut parts = Vec::new();
+        if self.spheres > 0.0 {
+            parts.push(format!(
+                "{} for {} at {BYTES_PER_SPHERE:.0} B each",
+                bytes(self.dem_bytes),
+                count(self.spheres.round(), "sphere")
+            ));
+        }
+        if self.cells > 0.0 {
+            parts.push(format!(
+                "{} for {}",
+                bytes(self.fluid_bytes),
+                count(self.cells, "fluid cell")
+            ));
+        }
+        let mut s = format!("memory estimate: {}", bytes(self.total()));
+        if !parts.is_empty() {
+            let _ = write!(s, " ({})", parts.join(", "));
+        }
         match self.available {
             Some((b, from)) => {
                 let _ = write!(s, "; this machine has {} ({from})", bytes(b));
@@ -185,7 +196,7 @@ pub(super) fn estimate(
             SphereSet::File(f) => (format!("{key}.file"), file_rows(&src.dir.join(&f.file))),
         };
         est.spheres += n;
-        est.add(key, format!("{n} spheres"), n * BYTES_PER_SPHERE);
+        est.add(key, count(n.round(), "sphere"), n * BYTES_PER_SPHERE);
     }
     let template_of = |name: &str| {
         let t = sc.block_templates.iter().position(|t| t.name == name)?;
@@ -235,7 +246,11 @@ pub(super) fn estimate(
         est.spheres += n;
         est.add(
             key,
-            format!("{blocks} blocks of {members} spheres"),
+            format!(
+                "{} of {}",
+                count(blocks.round(), "block"),
+                count(members, "sphere")
+            ),
             n * BYTES_PER_SPHERE,
         );
     }

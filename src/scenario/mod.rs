@@ -10,6 +10,7 @@ pub mod fluid;
 pub mod memory;
 pub mod schema;
 mod spheres;
+pub mod text;
 mod wall_overlaps;
 
 use std::ops::Range;

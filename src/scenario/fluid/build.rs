@@ -149,6 +149,8 @@ pub(in crate::scenario) fn build_fluid(
             } => Some(density * velocity_amplitude.length() * TAU / period),
             _ => None,
         },
+        resolved_from: None,
+        stirred: None,
     };
     Ok(Some((fluid, derived)))
 }
