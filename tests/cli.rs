@@ -509,3 +509,32 @@ fn check_predicts_a_range_of_fluid_steps_that_holds_the_run() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// An STL file cut at a facet boundary was read without a word, short of its triangles: `check`
+/// refuses it naming the file and the line, and prints the triangles of each mesh wall.
+#[test]
+fn check_refuses_a_truncated_stl_and_prints_the_triangles_of_each_mesh_wall() {
+    let out = riprap(&["check", path_str(&examples().join("mesh_chute.toml"))]);
+    let stdout = text(&out.stdout);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert!(
+        stdout.contains("wall[0] `chute`: mesh of 8 triangles from chute.stl"),
+        "{stdout}"
+    );
+    let dir = temp_dir("truncated_stl");
+    let stl = std::fs::read_to_string(examples().join("chute.stl")).unwrap();
+    let cut = stl.rfind("endfacet").unwrap() + "endfacet".len();
+    std::fs::write(dir.join("chute.stl"), &stl[..cut]).unwrap();
+    let scenario = std::fs::read_to_string(examples().join("mesh_chute.toml")).unwrap();
+    std::fs::write(dir.join("mesh_chute.toml"), scenario).unwrap();
+    let out = riprap(&["check", path_str(&dir.join("mesh_chute.toml"))]);
+    let stderr = text(&out.stderr);
+    assert!(!out.status.success(), "accepted a truncated STL");
+    assert!(
+        stderr.contains("wall[0].file")
+            && stderr.contains("chute.stl: line")
+            && stderr.contains("without 'endsolid'"),
+        "{stderr}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

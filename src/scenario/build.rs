@@ -53,6 +53,8 @@ pub struct Derived {
     pub fluid: Option<FluidDerived>,
     /// The coupling's line of the report, if the scenario couples spheres and water.
     pub coupling: Option<String>,
+    /// One line per mesh wall: its triangles, so that a file cut short shows.
+    pub mesh_lines: Vec<String>,
 }
 
 impl Derived {
@@ -68,6 +70,9 @@ impl Derived {
         }
         if let Some(c) = &self.coupling {
             s.push_str(c);
+        }
+        for l in &self.mesh_lines {
+            let _ = writeln!(s, "{l}");
         }
         s.push_str(&self.memory.report());
         s
@@ -634,6 +639,7 @@ fn build_or_check(src: &Source, run: bool) -> Result<(Option<Simulation>, Derive
             super::coupling::report(&c, cells)
         }),
         fluid: fluid_derived,
+        mesh_lines: mesh_lines(src, &dem.walls),
     };
     if !run {
         return Ok((None, derived));
@@ -648,6 +654,24 @@ fn build_or_check(src: &Source, run: bool) -> Result<(Option<Simulation>, Derive
         }
     }
     Ok((Some(simulation), derived))
+}
+
+/// `wall[i] `name`: mesh of N triangles from FILE` for each mesh wall.
+fn mesh_lines(src: &Source, walls: &[Wall]) -> Vec<String> {
+    walls
+        .iter()
+        .zip(&src.scenario.walls)
+        .enumerate()
+        .filter_map(|(i, (w, section))| match (&w.shape, section) {
+            (Shape::Mesh(m), WallSection::Mesh(f)) => Some(format!(
+                "wall[{i}] `{}`: mesh of {} from {}",
+                w.name,
+                count(m.triangles().len() as f64, "triangle"),
+                f.file
+            )),
+            _ => None,
+        })
+        .collect()
 }
 
 /// Refuses a run name that is not one plain folder name: the results go to `output/<name>`,
