@@ -40,13 +40,13 @@ pub(super) fn check_wall_overlaps(
     // (overlap / radius, sphere slot, wall index)
     let mut worst: Option<(f64, usize, usize)> = None;
     let mut ratio_of_set: Option<(&str, f64)> = None;
-    for k in 0..s.len() {
+    for (k, from) in origin.iter().enumerate().take(s.len()) {
         let (c, r) = (s.position[k], s.radius[k]);
         let allowed = match ratio_of_set {
-            Some((o, a)) if o == origin[k] => a,
+            Some((o, a)) if o == from => a,
             _ => {
-                let a = allowed_ratio(src, &origin[k]);
-                ratio_of_set = Some((&origin[k], a));
+                let a = allowed_ratio(src, from);
+                ratio_of_set = Some((from, a));
                 a
             }
         };
