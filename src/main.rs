@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 use riprap::run::{execute, RunOptions};
 use riprap::scenario::default::DEFAULT_SCENARIO;
-use riprap::scenario::{build, Source};
+use riprap::scenario::{check, Source};
 
 #[derive(Parser)]
 #[command(
@@ -309,9 +309,9 @@ fn dispatch(command: Command) -> anyhow::Result<()> {
         })(),
         Command::Check { scenario } => (|| {
             let src = source(&scenario)?;
-            let built = build(&src)?;
+            let derived = check(&src)?;
             println!("{}: valid", src.file);
-            print!("{}", built.derived.report());
+            print!("{}", derived.report());
             Ok(())
         })(),
     }

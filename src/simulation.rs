@@ -38,6 +38,7 @@ use crate::dem::forces::{compute_forces, start_forces, Kick};
 use crate::dem::insertion::Feeder;
 use crate::dem::integrate::{half_kick, open_step, Opener, Opening};
 use crate::dem::spheres::Spheres;
+use crate::dem::timestep::MIN_STEPS_PER_PERIOD;
 use crate::dem::wall_contacts::SavedWallContacts;
 use crate::dem::Dem;
 use crate::fluid::Fluid;
@@ -334,13 +335,35 @@ impl Simulation {
         let s = &self.dem.spheres;
         let lim = self.dem.limits;
         // Built only when a check fails: this runs every step.
+        let per_period = self.min_period / self.dem.dt;
+        let stable = per_period >= MIN_STEPS_PER_PERIOD;
         let steps = || {
             format!(
                 "the time step Δt = {:.3e} s is {:.1} steps per contact period T = {:.3e} s ([22] \
                  asks for 10-20)",
-                self.dem.dt,
-                self.min_period / self.dem.dt,
-                self.min_period
+                self.dem.dt, per_period, self.min_period
+            )
+        };
+        // Within the first half contact period, a contact that started touching cannot yet
+        // be deep: a large overlap then was there from the start (or came with a fed sphere).
+        let early = self.time <= 0.5 * self.min_period;
+        let overlap = self.dem.stats.max_overlap_ratio;
+        let started_overlapping = || {
+            format!(
+                "spheres that started overlapping a wall or another sphere: an overlap of {overlap:.2} \
+                 of the radius within the first {} steps cannot come from the motion; move them \
+                 apart (`riprap check` names initial overlaps); the time step Δt = {:.3e} s is \
+                 within the stable limit ({per_period:.1} steps per contact period, [22] asks for \
+                 10-20)",
+                self.step.max(1),
+                self.dem.dt
+            )
+        };
+        let within = || {
+            format!(
+                "the time step Δt = {:.3e} s is within the stable limit ({per_period:.1} steps per \
+                 contact period, [22] asks for 10-20)",
+                self.dem.dt
             )
         };
         let fail = |what: String, cause: String| {
@@ -358,10 +381,18 @@ impl Simulation {
             {
                 return fail(
                     format!("sphere {} has a non-finite position or velocity", s.id[i]),
-                    format!(
-                        "numerical blow-up: {}; or a sphere of zero size or mass",
-                        steps()
-                    ),
+                    if stable {
+                        format!(
+                            "numerical blow-up: spheres that started overlapping, or a sphere of \
+                             zero size or mass; {}",
+                            within()
+                        )
+                    } else {
+                        format!(
+                            "numerical blow-up: {}; or a sphere of zero size or mass",
+                            steps()
+                        )
+                    },
                 );
             }
             let v = s.velocity[i].length();
@@ -371,11 +402,22 @@ impl Simulation {
                         "sphere {} moves at {:.3e} m/s, above the limit {} m/s, at ({:.4}, {:.4}, {:.4}) m",
                         s.id[i], v, lim.max_speed, s.position[i].x, s.position[i].y, s.position[i].z
                     ),
-                    format!(
-                        "contact forces too large for the step: {}; or spheres that overlapped \
-                         heavily when inserted",
-                        steps()
-                    ),
+                    if stable && early && overlap > 0.0 {
+                        started_overlapping()
+                    } else if stable {
+                        format!(
+                            "contact forces too large: spheres that overlapped heavily when \
+                             inserted or fed, or an impact far faster than the reference velocity; \
+                             {}",
+                            within()
+                        )
+                    } else {
+                        format!(
+                            "contact forces too large for the step: {}; or spheres that \
+                             overlapped heavily when inserted",
+                            steps()
+                        )
+                    },
                 );
             }
         }
@@ -387,11 +429,21 @@ impl Simulation {
                     "an overlap at sphere {id} reached {:.2} of the smaller radius (limit {})",
                     st.max_overlap_ratio, lim.max_overlap_ratio
                 ),
-                format!(
-                    "springs too soft for the loads or speeds (raise the Young's modulus or \
-                     stiffness), or {}",
-                    steps()
-                ),
+                if stable && early {
+                    started_overlapping()
+                } else if stable {
+                    format!(
+                        "springs too soft for the loads or speeds (raise the Young's modulus or \
+                         stiffness), or spheres fed into place overlapping; {}",
+                        within()
+                    )
+                } else {
+                    format!(
+                        "springs too soft for the loads or speeds (raise the Young's modulus or \
+                         stiffness), or {}",
+                        steps()
+                    )
+                },
             );
         }
         Ok(())

@@ -382,7 +382,10 @@ fn run_without_a_scenario_runs_the_coupled_hopper_cloud() {
         stderr.contains("hopper_cloud"),
         "the default is hopper_cloud:\n{stderr}"
     );
-    assert!(stderr.contains("coupling: Resolved"), "{stderr}");
+    assert!(
+        stderr.contains("coupling: resolved (spheres several cells across)"),
+        "{stderr}"
+    );
     for f in ["spheres.pvd", "flow.pvd", "series.csv", "checkpoint.ck"] {
         assert!(dir.join(f).exists(), "no {f} in {}", dir.display());
     }
@@ -391,4 +394,148 @@ fn run_without_a_scenario_runs_the_coupled_hopper_cloud() {
     // Columns: time, step, spheres, ..., fluid_kinetic_energy (11), fluid_max_speed (12).
     assert!(last[2] >= 10.0, "spheres fed: {}", last[2]);
     assert!(last[12] > 0.0, "the water stays at rest: {last:?}");
+}
+
+/// A sphere that starts pressed 0.6 of its radius into the plate (allowed by its file set's
+/// max_overlap_ratio, so that `check` lets it through) with a step well below the stable
+/// limit: the run fails at once, and the diagnosis names the initial overlap, not the step.
+#[test]
+fn an_initial_overlap_with_a_wall_is_diagnosed_as_such_not_as_the_time_step() {
+    let dir = temp_dir("initial_overlap");
+    std::fs::write(dir.join("bead.csv"), "x,y,z,diameter\n0.0,0.0,0.002,0.01\n").unwrap();
+    let start = examples().join("single_impact.toml");
+    let body = std::fs::read_to_string(start).unwrap();
+    let list = body.find("\n[[spheres]]").unwrap() + 1;
+    let end = body.find("\n[output]").unwrap() + 1;
+    let body = format!(
+        "{}[[spheres]]\nkind = \"file\"\nmaterial = \"glass\"\nfile = \"bead.csv\"\nmax_overlap_ratio = 0.35\n\n{}",
+        &body[..list],
+        &body[end..]
+    );
+    let file = dir.join("overlap.toml");
+    std::fs::write(&file, &body).unwrap();
+    let out = riprap(&["check", path_str(&file)]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let out_dir = dir.join("out");
+    let out = riprap(&["run", path_str(&file), "--output", path_str(&out_dir)]);
+    let stderr = text(&out.stderr);
+    assert!(!out.status.success(), "the run should fail:\n{stderr}");
+    assert!(
+        stderr.contains("started overlapping a wall or another sphere"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("within the stable limit"), "{stderr}");
+    assert!(
+        !stderr.contains("too large for the step") && !stderr.contains("or the time step"),
+        "the step is blamed:\n{stderr}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `check` of a 200³ grid (about 1.9 GB of fields) under a 1 GB address-space limit: it
+/// estimates the fields' memory and prints it, without making them.
+#[test]
+fn check_prints_the_memory_estimate_without_building_the_flow_grid() {
+    let dir = temp_dir("check_memory");
+    let file = dir.join("big_grid.toml");
+    std::fs::write(
+        &file,
+        "[run]\nname = \"big_grid\"\nend_time = 1.0\n\n[domain]\nmin = [0.0, 0.0, 0.0]\nmax = [1.0, 1.0, 1.0]\n\n[fluid]\ncells = [200, 200, 200]\n",
+    )
+    .unwrap();
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -v 1000000 && exec {BIN} --threads 1 check {}",
+            path_str(&file)
+        ))
+        .output()
+        .unwrap();
+    let stdout = text(&out.stdout);
+    assert!(out.status.success(), "{stdout}{}", text(&out.stderr));
+    assert!(
+        stdout.contains("memory estimate: 1.9 GB") && stdout.contains("8000000 fluid cells"),
+        "{stdout}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `check` predicted about 500 fluid steps for the hopper cloud, whose run took 1073: the
+/// falling spheres stir the water and the adaptive step shrinks. It now gives the range, from
+/// the water at its own velocity scale to the water stirred to the spheres' reference speed,
+/// rounded to whole DEM steps; a short run (0.3 s) falls within it.
+#[test]
+fn check_predicts_a_range_of_fluid_steps_that_holds_the_run() {
+    let dir = temp_dir("fluid_steps");
+    let body = std::fs::read_to_string(examples().join("hopper_cloud.toml")).unwrap();
+    let at = body
+        .find("\nend_time = 1.0")
+        .expect("hopper_cloud's end_time")
+        + 1;
+    let short = format!(
+        "{}end_time = 0.3 #{}",
+        &body[..at],
+        &body[at + "end_time = 1.0".len()..]
+    );
+    let file = dir.join("short.toml");
+    std::fs::write(&file, short).unwrap();
+    let out = riprap(&["check", path_str(&file)]);
+    let stdout = text(&out.stdout);
+    assert!(out.status.success(), "{stdout}{}", text(&out.stderr));
+    let line = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("fluid steps to the end: about "))
+        .unwrap_or_else(|| panic!("no prediction of fluid steps:\n{stdout}"));
+    let words: Vec<&str> = line.split_whitespace().collect();
+    assert_eq!(words[1], "to", "a range: {line}");
+    let (fewest, most): (u64, u64) = (words[0].parse().unwrap(), words[2].parse().unwrap());
+    let out = riprap(&[
+        "run",
+        path_str(&file),
+        "--output",
+        path_str(&dir.join("out")),
+    ]);
+    let stderr = text(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    let steps: u64 = stderr
+        .lines()
+        .find_map(|l| l.strip_prefix("done: "))
+        .and_then(|l| l.split(", ").nth(1))
+        .and_then(|w| w.split_whitespace().next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("no step count in\n{stderr}"));
+    assert!(
+        (fewest..=most).contains(&steps),
+        "predicted {fewest} to {most}, the run took {steps}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// An STL file cut at a facet boundary was read without a word, short of its triangles: `check`
+/// refuses it naming the file and the line, and prints the triangles of each mesh wall.
+#[test]
+fn check_refuses_a_truncated_stl_and_prints_the_triangles_of_each_mesh_wall() {
+    let out = riprap(&["check", path_str(&examples().join("mesh_chute.toml"))]);
+    let stdout = text(&out.stdout);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert!(
+        stdout.contains("wall[0] `chute`: mesh of 8 triangles from chute.stl"),
+        "{stdout}"
+    );
+    let dir = temp_dir("truncated_stl");
+    let stl = std::fs::read_to_string(examples().join("chute.stl")).unwrap();
+    let cut = stl.rfind("endfacet").unwrap() + "endfacet".len();
+    std::fs::write(dir.join("chute.stl"), &stl[..cut]).unwrap();
+    let scenario = std::fs::read_to_string(examples().join("mesh_chute.toml")).unwrap();
+    std::fs::write(dir.join("mesh_chute.toml"), scenario).unwrap();
+    let out = riprap(&["check", path_str(&dir.join("mesh_chute.toml"))]);
+    let stderr = text(&out.stderr);
+    assert!(!out.status.success(), "accepted a truncated STL");
+    assert!(
+        stderr.contains("wall[0].file")
+            && stderr.contains("chute.stl: line")
+            && stderr.contains("without 'endsolid'"),
+        "{stderr}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
 }

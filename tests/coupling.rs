@@ -362,7 +362,7 @@ fn coupling_section_is_checked_and_reported() {
     let report = build(&src).unwrap().derived.report();
     println!("{report}");
     assert!(
-        report.contains("coupling: Auto") && report.contains("d/Δ = 4.00: resolved"),
+        report.contains("coupling: automatic") && report.contains("d/Δ = 4.00: resolved"),
         "{report}"
     );
 }

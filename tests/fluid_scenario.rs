@@ -180,11 +180,32 @@ fn spheres_beside_a_fluid_report_their_resolution() {
     for needle in [
         "contact pairings",
         "cells per sphere diameter d/Δ",
-        "warning: the smallest spheres",
-        "d/Δ = 4 to 8",
+        "the source uses 4 to 8",
         "fluid step with spheres: k =",
     ] {
         assert!(report.contains(needle), "no `{needle}` in\n{report}");
+    }
+}
+
+/// d/Δ = 2: too coarse for a resolved sphere, fine for one under a drag law, and moot when the
+/// spheres do not feel the water (no [coupling]): `check` warned in all three cases.
+#[test]
+fn the_cells_per_diameter_warning_is_only_for_resolved_spheres() {
+    let warning = "warning: the smallest spheres";
+    for (coupling, warned) in [
+        ("", false),
+        ("\n[coupling]\nmode = \"unresolved\"\n", false),
+        ("\n[coupling]\nmode = \"auto\"\n", false),
+        ("\n[coupling]\nmode = \"resolved\"\n", true),
+        (
+            "\n[coupling]\nmode = \"auto\"\nresolved_cells_per_diameter = 1.5\n",
+            true,
+        ),
+    ] {
+        let report = accepted(&format!("{BASE}{SPHERE}{coupling}"))
+            .derived
+            .report();
+        assert_eq!(report.contains(warning), warned, "{coupling}:\n{report}");
     }
 }
 

@@ -143,7 +143,7 @@ fn blocks_wires_and_bonds_are_built_and_reported_by_check() {
     assert!(
         report.contains("rigid blocks:")
             && report.contains("tetrapod")
-            && report.contains("1 wires, 1 bonds"),
+            && report.contains("1 wire, 1 bond"),
         "{report}"
     );
     // Mass of a stone as asked, and members with the block id as their body.
@@ -261,4 +261,14 @@ fn a_block_run_writes_its_outputs_and_a_restart_continues_bit_for_bit() {
     let enc = |c: &Checkpoint| postcard::to_stdvec(c).unwrap();
     assert!(enc(&x) == enc(&y), "restart is bit for bit");
     assert!(!x.rigid.blocks.is_empty() && x.rigid.bonds.len() == 1);
+}
+
+#[test]
+fn a_block_whose_members_overlap_the_floor_is_refused() {
+    refused(
+        "\n[[blocks]]\nkind = \"list\"\ntemplate = \"tetrapod\"\nblocks = [ { position = [0.2, 0.2, 0.021] } ] # here\n",
+        "# here",
+        "blocks[0].blocks[0]",
+        &["starts overlapping wall `plane0` (wall[0])", "of its radius"],
+    );
 }

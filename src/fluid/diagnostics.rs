@@ -18,7 +18,15 @@ const CELL_FIELDS: f64 = 5.0;
 /// Memory a [`Fluid`] on `grid` needs [bytes]: (24 padded fields + 5 per cell) × 8 B; the
 /// transform plans and line scratch add a few per cent.
 pub fn memory_estimate(grid: &StaggeredGrid) -> f64 {
-    8.0 * (PADDED_FIELDS * grid.len() as f64 + CELL_FIELDS * grid.cell_count() as f64)
+    memory_for_cells(grid.n.map(|c| c as f64))
+}
+
+/// [`memory_estimate`] for a grid of `n` cells along each axis, before making one (in f64, so
+/// that no count overflows).
+pub fn memory_for_cells(n: [f64; 3]) -> f64 {
+    let padded: f64 = n.iter().map(|c| c + 2.0).product();
+    let cells: f64 = n.iter().product();
+    8.0 * (PADDED_FIELDS * padded + CELL_FIELDS * cells)
 }
 
 impl Fluid {

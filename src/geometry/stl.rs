@@ -107,7 +107,16 @@ fn parse_binary(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
             reason: format!("file truncated: the header announces {n} triangles ({size} bytes) but the file has {} bytes", bytes.len()),
         });
     }
-    // Trailing bytes after the announced triangles are tolerated (some exporters pad).
+    // A few trailing bytes after the announced triangles are tolerated (some exporters pad);
+    // a whole record or more means the header's count is wrong and triangles would be lost.
+    let extra = bytes.len() as u64 - size;
+    if extra >= 50 {
+        return Err(StlError::Binary {
+            file: file.into(),
+            triangle: n,
+            reason: format!("the header announces {n} triangles ({size} bytes) but the file has {} bytes, room for {} more: a wrong triangle count in the header", bytes.len(), extra / 50),
+        });
+    }
     let f =
         |b: &[u8], k: usize| f64::from(f32::from_le_bytes(b[4 * k..4 * k + 4].try_into().unwrap()));
     let mut tris = Vec::with_capacity(n);
@@ -156,6 +165,14 @@ fn parse_ascii(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
     }
     if matches!(state, State::Facet | State::Loop(_) | State::EndFacet) {
         let reason = format!("file ends inside a facet, expected {}", expected(state));
+        return Err(err(last, reason));
+    }
+    // A file cut between two facets parses up to its end: only the missing `endsolid` tells.
+    if state == State::Solid {
+        let reason = format!(
+            "file ends after {} facets without 'endsolid': it looks truncated (triangles missing)",
+            tris.len()
+        );
         return Err(err(last, reason));
     }
     Ok(tris)
@@ -427,6 +444,27 @@ mod tests {
         );
         let e = err(b"solid empty\nendsolid empty\n");
         assert_eq!(e, "bad.stl: the mesh has no triangles");
+        let e = err(b"solid empty\n");
+        assert!(
+            e.starts_with("bad.stl: line 1: file ends after 0 facets"),
+            "{e}"
+        );
+        let e = err(b"solid empty\nendsolid empty\n");
+        assert_eq!(e, "bad.stl: the mesh has no triangles");
+    }
+
+    #[test]
+    fn an_ascii_stl_cut_at_a_facet_boundary_is_refused() {
+        let good = String::from_utf8(ascii(&square_grid(2))).unwrap();
+        let lines: Vec<&str> = good.lines().collect();
+        // Each facet takes 7 lines after "solid": cut after the second facet.
+        let cut = lines[..1 + 2 * 7].join("\n");
+        let e = err(cut.as_bytes());
+        assert_eq!(
+            e,
+            "bad.stl: line 15: file ends after 2 facets without 'endsolid': it looks truncated \
+             (triangles missing)"
+        );
     }
 
     #[test]
@@ -443,6 +481,9 @@ mod tests {
         let e = err(&binary(&random_soup(5))[..84 + 3 * 50 + 20]);
         assert_eq!(e, "bad.stl: binary STL, triangle 3 (from 0): file truncated: the header announces 5 triangles (334 bytes) but the file has 254 bytes");
         assert_eq!(err(b""), "bad.stl: empty file");
+        let mut long = binary(&random_soup(5));
+        long[80..84].copy_from_slice(&3u32.to_le_bytes());
+        assert!(err(&long).contains("room for 2 more"), "{}", err(&long));
         assert!(err(b"\x00\x01garbage").contains("too short for a binary STL"));
         let missing = Path::new("/nonexistent/riprap/missing.stl");
         let e = TriMesh::from_stl(missing).unwrap_err().to_string();

@@ -43,7 +43,7 @@ fn random_orientation(rng: &mut Rng) -> Quat {
 }
 
 /// Builds one template, checked and sized.
-fn template(
+pub(super) fn template(
     src: &Source,
     i: usize,
     t: &BlockTemplateSection,
@@ -56,7 +56,7 @@ fn template(
         } else {
             Err(src.invalid(
                 &key(k),
-                format!("`{k}` does not apply to shape {:?}", t.shape),
+                format!("`{k}` does not apply to shape \"{}\"", t.shape.name()),
             ))
         }
     };

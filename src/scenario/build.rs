@@ -5,8 +5,11 @@ use std::fmt::Write as _;
 
 use super::blocks::build_blocks;
 use super::fluid::build_fluid;
+use super::memory::{self, MemoryEstimate};
 use super::schema::{v3, ContactSection, DampingName, ModelName, WallSection};
 use super::spheres::{build_spheres, check_walls};
+use super::text::count;
+use super::wall_overlaps::check_wall_overlaps;
 use super::{FluidDerived, ScenarioError, Source};
 use crate::dem::contacts::PairContacts;
 use crate::dem::domain::Domain;
@@ -39,8 +42,8 @@ pub struct Derived {
     pub spheres: (usize, usize),
     /// One line per pairing: description and scales.
     pub pairings: Vec<(String, ContactScales)>,
-    /// Rough memory estimate [bytes].
-    pub memory: f64,
+    /// Memory estimate, made before anything was allocated.
+    pub memory: MemoryEstimate,
     /// Per pairing: (restitution a run at this step shows, steps in contact), from
     /// `timestep::discrete_impact` at the reference velocity.
     pub at_step: Vec<(f64, u64)>,
@@ -50,6 +53,8 @@ pub struct Derived {
     pub fluid: Option<FluidDerived>,
     /// The coupling's line of the report, if the scenario couples spheres and water.
     pub coupling: Option<String>,
+    /// One line per mesh wall: its triangles, so that a file cut short shows.
+    pub mesh_lines: Vec<String>,
 }
 
 impl Derived {
@@ -66,6 +71,10 @@ impl Derived {
         if let Some(c) = &self.coupling {
             s.push_str(c);
         }
+        for l in &self.mesh_lines {
+            let _ = writeln!(s, "{l}");
+        }
+        s.push_str(&self.memory.report());
         s
     }
 
@@ -143,7 +152,6 @@ impl Derived {
             self.min_period / self.time_step,
             self.steps
         );
-        let _ = writeln!(s, "memory estimate: {:.1} MB", self.memory / 1e6);
         s
     }
 }
@@ -234,7 +242,24 @@ pub(super) fn material_or_default(
 
 /// Checks a scenario and builds the simulation.
 pub fn build(src: &Source) -> Result<Built, ScenarioError> {
+    let (simulation, derived) = build_or_check(src, true)?;
+    Ok(Built {
+        simulation: simulation.expect("built for a run"),
+        derived,
+    })
+}
+
+/// Checks a scenario and computes what `riprap check` prints, without making the flow's
+/// fields (the grid's memory is only estimated) or the simulation.
+pub fn check(src: &Source) -> Result<Derived, ScenarioError> {
+    build_or_check(src, false).map(|(_, derived)| derived)
+}
+
+/// Checks the scenario and, with `run`, builds the simulation; the memory is estimated and
+/// refused when too large before anything in proportion to it is allocated.
+fn build_or_check(src: &Source, run: bool) -> Result<(Option<Simulation>, Derived), ScenarioError> {
     let sc = &src.scenario;
+    run_name(src, &sc.run.name)?;
     positive(src, "run.end_time", sc.run.end_time)?;
     finite(src, "domain.min", &sc.domain.min)?;
     finite(src, "domain.max", &sc.domain.max)?;
@@ -338,10 +363,22 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         }
     }
 
+    let templates: Vec<_> = sc
+        .block_templates
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            let m = names.iter().position(|n| *n == t.material)?;
+            super::blocks::template(src, i, t, materials[m].density).ok()
+        })
+        .collect();
+    let memory = memory::estimate(src, &names, &materials, &templates);
+    memory::refuse_if_too_big(src, &memory)?;
     let walls = build_walls(src, &names)?;
     let (mut spheres, feeders, mut origin) = build_spheres(src, &names, &materials, &domain)?;
     let rigid = build_blocks(src, &names, &materials, &domain, &mut spheres, &mut origin)?;
     check_walls(src, &spheres, &origin)?;
+    check_wall_overlaps(src, &walls, &spheres, &origin)?;
 
     // Pairings present: every material with its smallest and largest radius, and the members of
     // each block template with the smallest and the largest member mass (within a step a member
@@ -498,10 +535,10 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         let m = material_of(src, &names, "", Some(&sc.block_templates[t].material))?;
         let rho = materials[m as usize].density;
         block_lines.push(format!(
-            "{:<16} {:>6} blocks, {:>3} spheres each, D_n = {:.4} m, W = {:.4e} kg, bounding diameter {:.4} m, mass representation error {:.1e}",
+            "{:<16} {:>6}, {:>3} each, D_n = {:.4} m, W = {:.4e} kg, bounding diameter {:.4} m, mass representation error {:.1e}",
             tpl.name,
-            n,
-            tpl.members.len(),
+            count(n as f64, "block"),
+            count(tpl.members.len() as f64, "sphere"),
             tpl.nominal_diameter(),
             tpl.mass(rho),
             2.0 * super::blocks::bounding_radius(tpl),
@@ -510,9 +547,9 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     }
     if !rigid.wires.is_empty() || !rigid.bonds.is_empty() {
         block_lines.push(format!(
-            "links: {} wires, {} bonds",
-            rigid.wires.len(),
-            rigid.bonds.len()
+            "links: {}, {}",
+            count(rigid.wires.len() as f64, "wire"),
+            count(rigid.bonds.len() as f64, "bond")
         ));
     }
     let n_fed: usize = feeders.iter().map(|f| f.total).sum();
@@ -556,9 +593,18 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         )?,
     };
     let radii: Vec<f64> = kinds.iter().map(|k| k.1).collect();
-    let fluid = build_fluid(src, &domain, gravity, dt, &radii)?;
-    let coupling = super::coupling::coupling_parameters(src, fluid.is_some())?;
-    spheres.reserve(n_fed);
+    let (fluid, fluid_derived) = match build_fluid(src, &domain, gravity, dt, &radii, run)? {
+        Some((f, d)) => (f, Some(d)),
+        None => (None, None),
+    };
+    let coupling = super::coupling::coupling_parameters(src, fluid_derived.is_some())?;
+    let mut fluid_derived = fluid_derived;
+    if let (Some(fd), Some(c)) = (fluid_derived.as_mut(), coupling) {
+        super::fluid::note_coupling(fd, &c, gravity, v_ref);
+    }
+    if run {
+        spheres.reserve(n_fed);
+    }
     let dem = Dem {
         spheres,
         materials,
@@ -585,19 +631,21 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         steps: (sc.run.end_time / dt).round() as u64,
         spheres: (dem.spheres.len(), n_fed),
         pairings,
-        // Per sphere (ARCHITECTURE.md, "Performance and memory"): state 179 B, neighbour list
-        // and sorting ~150 B, ~4 listed pairs at 62 B, wall lists ~40 B.
-        memory: n_total as f64 * 620.0,
+        memory,
         at_step,
         block_lines,
-        fluid: fluid.as_ref().map(|f| f.1.clone()),
         coupling: coupling.map(|c| {
-            let cells = fluid.as_ref().and_then(|f| f.1.cells_per_diameter());
+            let cells = fluid_derived.as_ref().and_then(|f| f.cells_per_diameter());
             super::coupling::report(&c, cells)
         }),
+        fluid: fluid_derived,
+        mesh_lines: mesh_lines(src, &dem.walls),
     };
+    if !run {
+        return Ok((None, derived));
+    }
     let mut simulation = Simulation::with_bodies(dem, feeders, rigid, min_period);
-    if let Some((f, _)) = fluid {
+    if let Some(f) = fluid {
         let d_max = 2.0 * radii.iter().fold(0.0f64, |a, &r| a.max(r));
         let coupled = coupling.map(|c| crate::coupling::Coupling::new(c, &f, d_max));
         simulation = simulation.with_fluid(f);
@@ -605,10 +653,51 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             simulation = simulation.with_coupling(c);
         }
     }
-    Ok(Built {
-        simulation,
-        derived,
-    })
+    Ok((Some(simulation), derived))
+}
+
+/// `wall[i] `name`: mesh of N triangles from FILE` for each mesh wall.
+fn mesh_lines(src: &Source, walls: &[Wall]) -> Vec<String> {
+    walls
+        .iter()
+        .zip(&src.scenario.walls)
+        .enumerate()
+        .filter_map(|(i, (w, section))| match (&w.shape, section) {
+            (Shape::Mesh(m), WallSection::Mesh(f)) => Some(format!(
+                "wall[{i}] `{}`: mesh of {} from {}",
+                w.name,
+                count(m.triangles().len() as f64, "triangle"),
+                f.file
+            )),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Refuses a run name that is not one plain folder name: the results go to `output/<name>`,
+/// and a `/`, `\` or `..` there would write elsewhere.
+fn run_name(src: &Source, name: &str) -> Result<(), ScenarioError> {
+    let why = if name.trim().is_empty() {
+        Some("is empty")
+    } else if name.contains(['/', '\\']) {
+        Some("contains a path separator (`/` or `\\`)")
+    } else if name.starts_with('.') {
+        Some("starts with a dot (`..` would leave the output folder, `.` hides it)")
+    } else if name.chars().any(char::is_control) {
+        Some("contains a control character")
+    } else {
+        None
+    };
+    match why {
+        Some(why) => Err(src.invalid(
+            "run.name",
+            format!(
+                "`{name}` {why}; the results go to the folder output/<name>, so the name must be \
+                 a single plain folder name such as \"dam_break\""
+            ),
+        )),
+        None => Ok(()),
+    }
 }
 
 /// a b / (a + b): the reduced mass or inertia of two bodies.

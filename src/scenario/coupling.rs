@@ -13,6 +13,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::build::positive;
+use super::text::sig4;
 use super::{ScenarioError, Source};
 use crate::coupling::{CouplingMode, CouplingParameters, DragLaw};
 
@@ -68,24 +69,43 @@ pub(super) fn coupling_parameters(
 }
 
 /// The line `riprap check` prints: the mode and how the smallest and largest spheres are
-/// treated. `cells_per_diameter` is d/Δ of the smallest and largest sphere.
+/// treated, in words. `cells_per_diameter` is d/Δ of the smallest and largest sphere.
 pub fn report(p: &CouplingParameters, cells_per_diameter: Option<(f64, f64)>) -> String {
+    let threshold = p.resolved_cells_per_diameter;
+    let resolved = |r: f64| match p.mode {
+        CouplingMode::Resolved => true,
+        CouplingMode::Unresolved => false,
+        CouplingMode::Auto => r >= threshold,
+    };
     let treat = |r: f64| {
-        let resolved = match p.mode {
-            CouplingMode::Resolved => true,
-            CouplingMode::Unresolved => false,
-            CouplingMode::Auto => r >= p.resolved_cells_per_diameter,
-        };
-        if resolved {
+        if resolved(r) {
             "resolved [53][59]-[63]"
         } else {
             "unresolved, drag [5]"
         }
     };
-    let mut s = format!(
-        "coupling: {:?} (resolved from d/Δ = {}), drag law {:?}, φ sub-samples {}³",
-        p.mode, p.resolved_cells_per_diameter, p.drag_law, p.subsamples
-    );
+    let mode = match p.mode {
+        CouplingMode::Resolved => "resolved (spheres several cells across)".to_string(),
+        CouplingMode::Unresolved => "unresolved (spheres smaller than a cell, drag law)".into(),
+        CouplingMode::Auto => format!(
+            "automatic (spheres resolved from d/Δ = {}, unresolved with a drag law below)",
+            sig4(threshold)
+        ),
+    };
+    let drag = match p.drag_law {
+        DragLaw::SchillerNaumann => "Schiller-Naumann drag",
+        DragLaw::Stokes => "Stokes drag",
+    };
+    // The drag law matters only where some sphere is unresolved.
+    let any_unresolved = cells_per_diameter.is_none_or(|(lo, _)| !resolved(lo));
+    let mut s = format!("coupling: {mode}");
+    if any_unresolved {
+        s.push_str(&format!(", {drag} for unresolved spheres"));
+    }
+    s.push_str(&format!(
+        ", {} sub-samples per axis in cells cut by a sphere surface",
+        p.subsamples
+    ));
     if let Some((lo, hi)) = cells_per_diameter {
         s.push_str(&format!(
             "; smallest sphere d/Δ = {lo:.2}: {}, largest d/Δ = {hi:.2}: {}",
@@ -95,4 +115,51 @@ pub fn report(p: &CouplingParameters, cells_per_diameter: Option<(f64, f64)>) ->
     }
     s.push('\n');
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn coupling_report_has_no_rust_names() {
+        for mode in [
+            CouplingMode::Resolved,
+            CouplingMode::Unresolved,
+            CouplingMode::Auto,
+        ] {
+            for drag_law in [DragLaw::SchillerNaumann, DragLaw::Stokes] {
+                let p = CouplingParameters {
+                    mode,
+                    drag_law,
+                    ..CouplingParameters::default()
+                };
+                for cells in [None, Some((1.0, 6.0))] {
+                    let s = report(&p, cells);
+                    for rust in [
+                        "Resolved",
+                        "Unresolved",
+                        "Auto",
+                        "SchillerNaumann",
+                        "Stokes,",
+                    ] {
+                        assert!(!s.contains(rust), "{s}");
+                    }
+                }
+            }
+        }
+        let p = CouplingParameters {
+            mode: CouplingMode::Resolved,
+            ..CouplingParameters::default()
+        };
+        let s = report(&p, Some((4.0, 4.0)));
+        assert!(
+            s.starts_with("coupling: resolved (spheres several cells across)"),
+            "{s}"
+        );
+        assert!(
+            !s.contains("drag"),
+            "no unresolved sphere, no drag law: {s}"
+        );
+    }
 }

@@ -7,8 +7,11 @@ mod build;
 pub mod coupling;
 pub mod default;
 pub mod fluid;
+pub mod memory;
 pub mod schema;
 mod spheres;
+pub mod text;
+mod wall_overlaps;
 
 use std::ops::Range;
 use std::path::{Path, PathBuf};
@@ -16,7 +19,7 @@ use std::path::{Path, PathBuf};
 use toml::de::{DeTable, DeValue, ValueDeserializer};
 use toml::Spanned;
 
-pub use build::{build, Built, Derived};
+pub use build::{build, check, Built, Derived};
 pub use fluid::FluidDerived;
 pub use schema::Scenario;
 

@@ -592,6 +592,19 @@ pub enum ShapeName {
     Spheres,
 }
 
+impl ShapeName {
+    /// The name a scenario gives it.
+    pub fn name(self) -> &'static str {
+        match self {
+            ShapeName::ThreeSphereRod => "three_sphere_rod",
+            ShapeName::Cube => "cube",
+            ShapeName::Tetrapod => "tetrapod",
+            ShapeName::Rock => "rock",
+            ShapeName::Spheres => "spheres",
+        }
+    }
+}
+
 /// One block of a `list` set.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

@@ -26,15 +26,17 @@ fn face_key(a: usize, side: usize) -> String {
     format!("fluid.boundaries.{}_{}", AXES[a], SIDES[side])
 }
 
-/// Checks `[fluid]` and builds the fluid at t = 0. `dem_dt` is the DEM step [s] and `radii`
-/// the sphere radii present or to be fed [m] (empty without spheres).
+/// Checks `[fluid]` and, with `make`, builds the fluid at t = 0 (without, only the derived
+/// quantities: `riprap check` does not allocate the fields). `dem_dt` is the DEM step [s] and
+/// `radii` the sphere radii present or to be fed [m] (empty without spheres).
 pub(in crate::scenario) fn build_fluid(
     src: &Source,
     domain: &Domain,
     gravity: Vec3,
     dem_dt: f64,
     radii: &[f64],
-) -> Result<Option<(Fluid, FluidDerived)>, ScenarioError> {
+    make: bool,
+) -> Result<Option<(Option<Fluid>, FluidDerived)>, ScenarioError> {
     let Some(f) = &src.scenario.fluid else {
         return Ok(None);
     };
@@ -86,18 +88,23 @@ pub(in crate::scenario) fn build_fluid(
         time_step,
         pressure_passes: 1,
     };
-    let mut fluid =
-        Fluid::new(grid, boundaries, parameters).map_err(|e| src.invalid("fluid", e))?;
-    let seed = f.perturbation_seed;
-    fluid.set_velocity(|x| u0 + amplitude * perturbation(seed, x));
-    let open = boundaries
-        .faces
-        .iter()
-        .flatten()
-        .any(|b| matches!(b, Boundary::Inflow(_) | Boundary::Outflow));
-    if amplitude > 0.0 || open {
-        fluid.project();
-    }
+    let fluid = if make {
+        let mut fluid =
+            Fluid::new(grid, boundaries, parameters).map_err(|e| src.invalid("fluid", e))?;
+        let seed = f.perturbation_seed;
+        fluid.set_velocity(|x| u0 + amplitude * perturbation(seed, x));
+        let open = boundaries
+            .faces
+            .iter()
+            .flatten()
+            .any(|b| matches!(b, Boundary::Inflow(_) | Boundary::Outflow));
+        if amplitude > 0.0 || open {
+            fluid.project();
+        }
+        Some(fluid)
+    } else {
+        None
+    };
 
     let scale = velocity_scale(f, &boundaries, &driving);
     let limits_only = |cfl: bool| {
@@ -142,6 +149,8 @@ pub(in crate::scenario) fn build_fluid(
             } => Some(density * velocity_amplitude.length() * TAU / period),
             _ => None,
         },
+        resolved_from: None,
+        stirred: None,
     };
     Ok(Some((fluid, derived)))
 }
@@ -231,7 +240,13 @@ fn grid(
             } else {
                 "fluid.cell_size"
             },
-            format!("{n:?} cells are more than this machine can hold"),
+            format!(
+                "{} × {} × {} cells are more than the solver can index (at most {} in all)",
+                n[0],
+                n[1],
+                n[2],
+                u32::MAX
+            ),
         ));
     }
     Ok(StaggeredGrid::new(n, lengths, lo))

@@ -37,7 +37,7 @@ mod build;
 mod report;
 
 pub(super) use build::build_fluid;
-pub use report::{FluidDerived, CELLS_PER_DIAMETER};
+pub use report::{note_coupling, FluidDerived, CELLS_PER_DIAMETER};
 
 use serde::{Deserialize, Serialize};
 

@@ -3,8 +3,13 @@
 
 use std::fmt::Write as _;
 
-use crate::fluid::{Boundaries, Boundary, DrivingPressureGradient, FluidParameters, StaggeredGrid};
+use crate::coupling::{CouplingMode, CouplingParameters};
+use crate::fluid::timestep::stable_time_step;
+use crate::fluid::{
+    Boundaries, Boundary, DrivingPressureGradient, FluidParameters, StaggeredGrid, TimeStepLimits,
+};
 use crate::math::Vec3;
+use crate::scenario::text::{sig4, vec4};
 
 /// The source's range of sphere diameter over cell size (METHOD.md §5: Δ = d/4 to d/8).
 pub const CELLS_PER_DIAMETER: (f64, f64) = (4.0, 8.0);
@@ -40,6 +45,34 @@ pub struct FluidDerived {
     pub samples: usize,
     /// Peak −∇P of an oscillatory drive, ρ_w |U_max| 2π/T [Pa m⁻¹].
     pub oscillatory_peak: Option<f64>,
+    /// With coupled spheres, d/Δ from which they are resolved (0: all are; `None`: none is,
+    /// or the spheres do not feel the water): the d/Δ advice applies to resolved spheres only.
+    pub resolved_from: Option<f64>,
+    /// With coupled spheres: their reference speed [m s⁻¹] and the fluid step [s] if they stir
+    /// the water to that speed along gravity (the step then shrinks; the run adapts to it).
+    pub stirred: Option<(f64, f64)>,
+}
+
+/// Tells the flow's report about coupled spheres: which the grid resolves, and the fluid step
+/// if they stir the water to their reference speed `v_ref` [m s⁻¹] along `gravity`.
+pub fn note_coupling(fd: &mut FluidDerived, c: &CouplingParameters, gravity: Vec3, v_ref: f64) {
+    fd.resolved_from = match c.mode {
+        CouplingMode::Resolved => Some(0.0),
+        CouplingMode::Unresolved => None,
+        CouplingMode::Auto => Some(c.resolved_cells_per_diameter),
+    };
+    if fd.diameters.is_some() {
+        let speed = fd
+            .velocity_scale
+            .max(gravity.normalize_or_zero().abs() * v_ref);
+        let limits = TimeStepLimits {
+            max: f64::INFINITY,
+            ..fd.parameters.time_step
+        };
+        let cfl = stable_time_step(&fd.grid, speed.to_array(), 0.0, &limits);
+        let step = cfl.min(fd.viscous_step).min(fd.parameters.time_step.max);
+        fd.stirred = Some((v_ref, step));
+    }
 }
 
 /// A boundary in words.
@@ -47,12 +80,16 @@ fn describe(b: Boundary) -> String {
     match b {
         Boundary::Periodic => "periodic".into(),
         Boundary::Wall { velocity } if velocity == Vec3::ZERO => "wall".into(),
-        Boundary::Wall { velocity } => format!("wall sliding at {velocity} m/s"),
+        Boundary::Wall { velocity } => format!("wall sliding at {} m/s", vec4(velocity)),
         Boundary::FreeSlip => "free slip".into(),
-        Boundary::Inflow(v) if v.amplitude == Vec3::ZERO => format!("inflow {} m/s", v.mean),
+        Boundary::Inflow(v) if v.amplitude == Vec3::ZERO => {
+            format!("inflow {} m/s", vec4(v.mean))
+        }
         Boundary::Inflow(v) => format!(
             "inflow {} + {} sin(2π t / {} s) m/s",
-            v.mean, v.amplitude, v.period
+            vec4(v.mean),
+            vec4(v.amplitude),
+            sig4(v.period)
         ),
         Boundary::Outflow => "outflow".into(),
     }
@@ -71,13 +108,39 @@ impl FluidDerived {
             .map(|dt| (self.fluid_step / dt).floor().max(0.0) as u64)
     }
 
+    /// Fluid steps to the end with a fluid step of `step` [s]: rounded down to whole DEM steps
+    /// with spheres (at least one), as the run does.
+    fn steps_to_end(&self, step: f64) -> f64 {
+        let step = match self.dem_step {
+            Some(dt) => (step / dt).floor().max(1.0) * dt,
+            None => step,
+        };
+        (self.end_time / step).ceil()
+    }
+
+    /// The predicted number of fluid steps to the end: (fewest, most). The fewest holds while
+    /// the water keeps to its velocity scale; the most if coupled spheres stir it to their
+    /// reference speed (equal without coupled spheres).
+    pub fn predicted_steps(&self) -> (f64, f64) {
+        let fewest = self.steps_to_end(self.fluid_step);
+        let most = self.stirred.map_or(fewest, |(_, step)| {
+            self.steps_to_end(step.min(self.fluid_step))
+        });
+        (fewest, most.max(fewest))
+    }
+
     /// Things that will go wrong or are outside the source's practice.
     pub fn warnings(&self) -> Vec<String> {
         let mut w = Vec::new();
-        if let (Some((lo, hi)), Some((dlo, dhi))) = (self.cells_per_diameter(), self.diameters) {
+        if let (Some((lo, hi)), Some((dlo, dhi)), Some(from)) = (
+            self.cells_per_diameter(),
+            self.diameters,
+            self.resolved_from,
+        ) {
             let (a, b) = CELLS_PER_DIAMETER;
             for (what, d, r) in [("smallest", dlo, lo), ("largest", dhi, hi)] {
-                if !(a..=b).contains(&r) {
+                // Only where the grid resolves the spheres: unresolved ones feel a drag law.
+                if r >= from && !(a..=b).contains(&r) {
                     w.push(format!(
                         "the {what} spheres (d = {d:.4e} m) span {r:.2} cells of Δ = {:.4e} m; \
                          the source resolves spheres with d/Δ = {a} to {b}",
@@ -109,18 +172,20 @@ impl FluidDerived {
         let _ = write!(
             s,
             "fluid: density {} kg/m³, kinematic viscosity {:.4e} m²/s; ",
-            p.density, p.kinematic_viscosity
+            sig4(p.density),
+            p.kinematic_viscosity
         );
         let _ = match &p.smagorinsky {
             Some(m) if m.van_driest => writeln!(
                 s,
                 "Smagorinsky C_s = {} with van Driest damping, A⁺ = {} [56]-[58]",
-                m.coefficient, m.van_driest_constant
+                sig4(m.coefficient),
+                sig4(m.van_driest_constant)
             ),
             Some(m) => writeln!(
                 s,
                 "Smagorinsky C_s = {}, no wall damping [56][57]",
-                m.coefficient
+                sig4(m.coefficient)
             ),
             None => writeln!(s, "no subgrid model (laminar or fully resolved flow)"),
         };
@@ -134,8 +199,8 @@ impl FluidDerived {
             g.spacing.x,
             g.spacing.y,
             g.spacing.z,
-            g.origin,
-            g.origin + g.lengths()
+            vec4(g.origin),
+            vec4(g.origin + g.lengths())
         );
         let mut faces = Vec::new();
         for (a, name) in ["x", "y", "z"].iter().enumerate() {
@@ -160,12 +225,15 @@ impl FluidDerived {
                 Some(peak),
             ) => writeln!(
                 s,
-                "fluid driving pressure gradient: oscillatory, U_max = {velocity_amplitude} m/s, \
-                 T = {period} s (peak −∇P = ρ U_max 2π/T = {peak:.4e} Pa/m)"
+                "fluid driving pressure gradient: oscillatory, U_max = {} m/s, T = {} s (peak \
+                 −∇P = ρ U_max 2π/T = {peak:.4e} Pa/m)",
+                vec4(velocity_amplitude),
+                sig4(period)
             ),
             (DrivingPressureGradient::Constant { force_density }, _) => writeln!(
                 s,
-                "fluid driving pressure gradient: steady, −∇P = {force_density} Pa/m"
+                "fluid driving pressure gradient: steady, −∇P = {} Pa/m",
+                vec4(force_density)
             ),
             _ => Ok(()),
         };
@@ -174,7 +242,7 @@ impl FluidDerived {
             s,
             "fluid velocity scale: {} m/s (initial velocity and perturbation, oscillatory U_max, \
              boundary velocities)",
-            self.velocity_scale
+            vec4(self.velocity_scale)
         );
         let cfl = if self.cfl_step.is_finite() {
             format!("{:.4e} s", self.cfl_step)
@@ -182,20 +250,30 @@ impl FluidDerived {
             "none (no velocity scale: the flow starts at rest)".into()
         };
         let bound = if p.time_step.max.is_finite() {
-            format!("{:e} s", p.time_step.max)
+            format!("{} s", sig4(p.time_step.max))
         } else {
             "none".into()
         };
         let _ = writeln!(
             s,
             "fluid time step: CFL limit {cfl} (C = {}), viscous limit {:.4e} s (C = {}, molecular \
-             ν), bound {bound}: Δt_f ≈ {:.4e} s, about {:.0} steps to the end",
-            p.time_step.cfl,
+             ν), bound {bound}: Δt_f ≈ {:.4e} s",
+            sig4(p.time_step.cfl),
             self.viscous_step,
-            p.time_step.viscous,
+            sig4(p.time_step.viscous),
             self.fluid_step,
-            (self.end_time / self.fluid_step).ceil()
         );
+        let (fewest, most) = self.predicted_steps();
+        let _ = match self.stirred {
+            Some((speed, _)) if most > fewest => writeln!(
+                s,
+                "fluid steps to the end: about {fewest:.0} to {most:.0} ({fewest:.0} while the \
+                 water keeps to its velocity scale, {most:.0} if the spheres stir it to their \
+                 reference speed {} m/s; the run adapts the step to the flow)",
+                sig4(speed)
+            ),
+            _ => writeln!(s, "fluid steps to the end: about {fewest:.0}"),
+        };
         if let DrivingPressureGradient::Constant { .. } = p.driving_pressure_gradient {
             let _ = writeln!(
                 s,

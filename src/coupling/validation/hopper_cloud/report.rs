@@ -96,10 +96,14 @@ pub fn section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool>
     write_csv(&out.join("hopper_cloud_samples.csv"), &cloud)?;
     eprintln!(
         "hopper cloud: front {:.3} m/s, lone sphere {:.3} m/s (ratio {ratio:.3}), standard \
-         {w:.3} m/s, settled at {:?} s -> {}",
+         {w:.3} m/s, {} -> {}",
         cloud.front_speed,
         lone.front_speed,
-        cloud.settling_time,
+        cloud
+            .settling_time
+            .map_or("did not settle".to_string(), |t| format!(
+                "settled at {t:.3} s"
+            )),
         if ok { "pass" } else { "FAIL" }
     );
     Ok(ok)
