@@ -288,7 +288,7 @@ fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
             let s = execute(&src, &opts)?;
             if let Some(sig) = s.interrupted_by {
                 eprintln!(
-                    "interrupted by {} at t = {} s, step {}; checkpoint written to {}; the \
+                    "interrupted by {} at t = {:.6} s, step {}; checkpoint written to {}; the \
                      output so far is complete up to there. Continue with:\n  {}",
                     signal_name(sig),
                     s.time,

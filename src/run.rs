@@ -3,7 +3,9 @@
 //! Output folder: `spheres.pvd` + `spheres_NNNNNN.vtu` (ParaView), `walls.pvd` + `walls_*.vtp`,
 //! `series.csv` (energies, contacts), `probe_<id>.csv` (full state of selected spheres at every
 //! step), `energy.png`, and `checkpoint.ck`. A run that fails keeps all of these as they were
-//! at the last write, and adds `spheres_failed.vtu` with the state that failed.
+//! at the last write, and adds `spheres_failed.vtu` with the state that failed. A fresh run
+//! first removes these files left by an earlier run in its folder ([`owned`]); a run stopped
+//! by a signal ([`RunOptions::stop`]) writes its checkpoint and keeps the rest as they are.
 //!
 //! With a fluid (`[fluid]`): `flow.pvd` + `flow_NNNNNN.vti`, `sample_<name>.csv` and fluid
 //! columns in `series.csv` ([`flow`]); every output then follows simulated time (the steps
@@ -173,7 +175,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         sim = restore(sim, ck);
         if opts.progress {
             eprintln!(
-                "continuing from t = {} s, step {} ({})",
+                "continuing from t = {:.6} s, step {} ({})",
                 sim.time,
                 sim.step,
                 path.display()
