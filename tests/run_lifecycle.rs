@@ -119,6 +119,15 @@ fn step_in(message: &str) -> u64 {
         .unwrap()
 }
 
+/// Sends `signal` (`-INT`, `-TERM`) to process `pid` with the shell's own `kill`, which every
+/// system has (no signal crate for the test).
+fn send(signal: &str, pid: u32) -> std::process::ExitStatus {
+    Command::new("sh")
+        .args(["-c", &format!("kill {signal} {pid}")])
+        .status()
+        .unwrap()
+}
+
 /// Rows of a CSV file, header dropped.
 fn rows(path: &Path) -> usize {
     std::fs::read_to_string(path)
@@ -148,10 +157,7 @@ fn ctrl_c_writes_a_checkpoint_says_where_and_the_restart_ends_bit_for_bit() {
         assert!(child.try_wait().unwrap().is_none(), "the run ended early");
         std::thread::sleep(Duration::from_millis(20));
     }
-    let kill = Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
+    let kill = send(&format!("-INT"), child.id());
     assert!(kill.success());
     let out = child.wait_with_output().unwrap();
     let stderr = text(&out.stderr);
@@ -214,6 +220,32 @@ fn ctrl_c_writes_a_checkpoint_says_where_and_the_restart_ends_bit_for_bit() {
             == std::fs::read(b.join("checkpoint.ck")).unwrap(),
         "the final states differ"
     );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn sigterm_stops_a_run_like_ctrl_c_with_status_143() {
+    let dir = temp_dir("sigterm");
+    let scenario = examples().join("hopper_feed.toml");
+    let mut child = Command::new(BIN)
+        .args(["--threads", "2", "run", s(&scenario), "--output", s(&dir)])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let waiting = Instant::now();
+    while rows(&dir.join("series.csv")) < 3 {
+        assert!(waiting.elapsed() < Duration::from_secs(120), "no progress");
+        assert!(child.try_wait().unwrap().is_none(), "the run ended early");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let kill = send(&format!("-TERM"), child.id());
+    assert!(kill.success());
+    let out = child.wait_with_output().unwrap();
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(143), "exit status:\n{stderr}");
+    assert!(stderr.contains("interrupted by SIGTERM"), "{stderr}");
+    assert!(dir.join("checkpoint.ck").is_file());
     let _ = std::fs::remove_dir_all(&dir);
 }
 

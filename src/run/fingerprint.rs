@@ -4,7 +4,7 @@
 //! Covered: the time step, the run's settings that shape the state (skin, reference velocity),
 //! the domain, contact law, materials, walls (with their STL files), sphere sets and feeders,
 //! block templates, blocks with their wires and bonds, the fluid and the coupling, and the
-//! spheres the scenario creates at the start. Not covered, so that a run can be extended or
+//! spheres the scenario creates at the start (so an edited sphere file counts as well). Not covered, so that a run can be extended or
 //! its output changed between restarts: the run's name and end time, `max_speed` and
 //! `max_overlap_ratio` (checks, not state), `[output]` and the fluid's samples.
 
@@ -37,7 +37,7 @@ pub fn fingerprint(src: &Source, sim: &Simulation) -> Fingerprint {
         f.samples.clear();
         f
     });
-    let start = (sim.dem.spheres.len(), &sim.dem.spheres.id);
+
     [
         ("time step", hash(&sim.dem.dt.to_bits())),
         (
@@ -49,7 +49,8 @@ pub fn fingerprint(src: &Source, sim: &Simulation) -> Fingerprint {
         ("materials", hash(&sc.materials)),
         ("walls", walls),
         ("spheres", hash(&sc.spheres)),
-        ("spheres created at the start", hash(&start)),
+        // Their positions, sizes and ids: this covers a sphere file (`kind = "file"`) too.
+        ("spheres created at the start", hash(&sim.dem.spheres)),
         ("block templates", hash(&sc.block_templates)),
         (
             "blocks, wires and bonds",
@@ -79,7 +80,24 @@ pub fn differences(saved: &Fingerprint, now: &Fingerprint) -> Vec<String> {
 }
 
 /// CRC-32 of the settings' postcard bytes: the parsed values, so that comments, layout and
-/// the order of keys do not count.
+/// the order of keys do not count. Streamed into the hasher: the spheres of a large run would
+/// be hundreds of MB as one buffer.
 fn hash<T: Serialize + ?Sized>(value: &T) -> u32 {
-    crc32fast::hash(&postcard::to_stdvec(value).expect("scenario settings serialise"))
+    let hasher = postcard::to_io(value, Crc(crc32fast::Hasher::new()))
+        .expect("hashing cannot fail to write");
+    hasher.0.finalize()
+}
+
+/// A CRC-32 as an `io::Write`.
+struct Crc(crc32fast::Hasher);
+
+impl std::io::Write for Crc {
+    fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
+        self.0.update(bytes);
+        Ok(bytes.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
 }
