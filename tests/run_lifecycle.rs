@@ -157,7 +157,7 @@ fn ctrl_c_writes_a_checkpoint_says_where_and_the_restart_ends_bit_for_bit() {
         assert!(child.try_wait().unwrap().is_none(), "the run ended early");
         std::thread::sleep(Duration::from_millis(20));
     }
-    let kill = send(&format!("-INT"), child.id());
+    let kill = send("-INT", child.id());
     assert!(kill.success());
     let out = child.wait_with_output().unwrap();
     let stderr = text(&out.stderr);
@@ -239,7 +239,7 @@ fn sigterm_stops_a_run_like_ctrl_c_with_status_143() {
         assert!(child.try_wait().unwrap().is_none(), "the run ended early");
         std::thread::sleep(Duration::from_millis(20));
     }
-    let kill = send(&format!("-TERM"), child.id());
+    let kill = send("-TERM", child.id());
     assert!(kill.success());
     let out = child.wait_with_output().unwrap();
     let stderr = text(&out.stderr);
