@@ -2,6 +2,8 @@
 
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicBool, AtomicUsize};
+use std::sync::Arc;
 
 use clap::{Parser, Subcommand};
 use riprap::run::{execute, RunOptions};
@@ -37,6 +39,11 @@ enum Command {
         /// Stop after this many steps.
         #[arg(long)]
         steps: Option<u64>,
+        /// End time in seconds, instead of the scenario's `[run] end_time` (with --restart:
+        /// extends a finished run). Output intervals left at their defaults keep following the
+        /// scenario's end time.
+        #[arg(long, value_name = "SECONDS")]
+        end_time: Option<f64>,
     },
     /// Benchmarks on problems shared with LIGGGHTS and LAMMPS (bench/peers/README.md).
     Bench {
@@ -98,7 +105,8 @@ fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
     use riprap::bench::{b1_lattice, run_b1};
     let lattice = b1_lattice(n);
     let threads = rayon::current_num_threads();
-    println!("B1 box-settle: lattice {lattice:?}, {steps} steps, {threads} thread(s)");
+    let [nx, ny, nz] = lattice;
+    println!("B1 box-settle: lattice {nx} × {ny} × {nz}, {steps} steps, {threads} thread(s)");
     let r = run_b1(lattice, steps, 2000)?;
     println!(
         "{:>6} {:>12} {:>12} {:>10} {:>10} {:>10}",
@@ -211,7 +219,8 @@ fn main() -> ExitCode {
     // without on 1 thread, 21 and 15 ms on 2).
     let result = rayon::scope(|_| dispatch(cli.command));
     match result {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(Some(status)) => ExitCode::from(status),
+        Ok(None) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e:#}");
             ExitCode::FAILURE
@@ -219,14 +228,62 @@ fn main() -> ExitCode {
     }
 }
 
-/// Runs one subcommand.
-fn dispatch(command: Command) -> anyhow::Result<()> {
+/// The flag a run polls between steps ([`RunOptions::stop`]): SIGINT (Ctrl-C) and SIGTERM
+/// set it to their number; a second one, while the run finishes its step and writes its
+/// checkpoint, ends the process at once with 128 + the signal's number.
+fn stop_on_signals() -> anyhow::Result<Arc<AtomicUsize>> {
+    use signal_hook::consts::{SIGINT, SIGTERM};
+    use signal_hook::flag;
+    let stop = Arc::new(AtomicUsize::new(0));
+    let seen = Arc::new(AtomicBool::new(false));
+    for sig in [SIGINT, SIGTERM] {
+        // In this order: the shutdown checks the flag the first signal has not set yet.
+        flag::register_conditional_shutdown(sig, 128 + sig, Arc::clone(&seen))?;
+        flag::register(sig, Arc::clone(&seen))?;
+        flag::register_usize(sig, Arc::clone(&stop), sig as usize)?;
+    }
+    Ok(stop)
+}
+
+/// The usual name of a signal that stops a run.
+fn signal_name(sig: usize) -> String {
+    match sig as i32 {
+        signal_hook::consts::SIGINT => "Ctrl-C (SIGINT)".to_string(),
+        signal_hook::consts::SIGTERM => "SIGTERM".to_string(),
+        n => format!("signal {n}"),
+    }
+}
+
+/// The command line that continues a run from `checkpoint`.
+fn continue_command(
+    scenario: &Option<PathBuf>,
+    end_time: Option<f64>,
+    output: &std::path::Path,
+    checkpoint: &std::path::Path,
+) -> String {
+    let mut c = String::from("riprap run");
+    if let Some(s) = scenario {
+        c += &format!(" {}", s.display());
+    }
+    if let Some(e) = end_time {
+        c += &format!(" --end-time {e}");
+    }
+    format!(
+        "{c} --restart {} --output {}",
+        checkpoint.display(),
+        output.display()
+    )
+}
+
+/// Runs one subcommand; `Some(status)` for a run stopped by a signal (128 + its number).
+fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
     match command {
         Command::Run {
             scenario,
             restart,
             output,
             steps,
+            end_time,
         } => (|| {
             let src = source(&scenario)?;
             eprintln!(
@@ -238,20 +295,34 @@ fn dispatch(command: Command) -> anyhow::Result<()> {
                 restart,
                 progress: true,
                 max_steps: steps,
+                end_time,
+                stop: Some(stop_on_signals()?),
             };
             let s = execute(&src, &opts)?;
+            if let Some(sig) = s.interrupted_by {
+                eprintln!(
+                    "interrupted by {} at t = {:.6} s, step {}; checkpoint written to {}; the \
+                     output so far is complete up to there. Continue with:\n  {}",
+                    signal_name(sig),
+                    s.time,
+                    s.step,
+                    s.checkpoint.display(),
+                    continue_command(&scenario, end_time, &s.output_dir, &s.checkpoint)
+                );
+                return Ok(Some(128 + sig as u8));
+            }
             let (items, what) = if s.fluid_cells > 0 && s.spheres == 0 {
                 (s.fluid_cells, "cell")
             } else {
                 (s.spheres, "sphere")
             };
             eprintln!(
-                "done: t = {:.4} s, {} steps in {:.1} s ({:.3e} {what}-steps/s), {} spheres; results in {}",
+                "done: t = {:.4} s, {} in {:.1} s ({:.3e} {what}-steps/s), {}; results in {}",
                 s.time,
-                s.steps,
+                riprap::scenario::text::count(s.steps as f64, "step"),
                 s.wall_seconds,
                 s.steps as f64 * items as f64 / s.wall_seconds.max(1e-9),
-                s.spheres,
+                riprap::scenario::text::count(s.spheres as f64, "sphere"),
                 s.output_dir.display()
             );
             if s.fluid_cells > 0 {
@@ -280,20 +351,20 @@ fn dispatch(command: Command) -> anyhow::Result<()> {
                     eprintln!("view: paraview {}/{file}", s.output_dir.display());
                 }
             }
-            Ok::<(), anyhow::Error>(())
+            Ok(None)
         })(),
         Command::Bench {
             case: BenchCase::B1 { n, steps },
-        } => bench_b1(n, steps),
+        } => bench_b1(n, steps).map(|()| None),
         Command::Bench {
             case: BenchCase::B2 { data, steps, every },
-        } => bench_b2(&data, steps, every),
+        } => bench_b2(&data, steps, every).map(|()| None),
         Command::Bench {
             case: BenchCase::Fluid(args),
-        } => riprap::bench::fluid::run_cli(&args),
+        } => riprap::bench::fluid::run_cli(&args).map(|()| None),
         Command::Bench {
             case: BenchCase::Coupled(args),
-        } => riprap::bench::coupled::run_cli(&args),
+        } => riprap::bench::coupled::run_cli(&args).map(|()| None),
         Command::Validate {
             quick,
             output,
@@ -302,7 +373,7 @@ fn dispatch(command: Command) -> anyhow::Result<()> {
             let (_, ok) = riprap::validate::run_validation_cases(&output, quick, only.as_deref())?;
             eprintln!("report: {}", output.join("report.md").display());
             if ok {
-                Ok(())
+                Ok(None)
             } else {
                 anyhow::bail!("a validation case fell outside its tolerance")
             }
@@ -312,7 +383,7 @@ fn dispatch(command: Command) -> anyhow::Result<()> {
             let derived = check(&src)?;
             println!("{}: valid", src.file);
             print!("{}", derived.report());
-            Ok(())
+            Ok(None)
         })(),
     }
 }

@@ -3,16 +3,23 @@
 //! Output folder: `spheres.pvd` + `spheres_NNNNNN.vtu` (ParaView), `walls.pvd` + `walls_*.vtp`,
 //! `series.csv` (energies, contacts), `probe_<id>.csv` (full state of selected spheres at every
 //! step), `energy.png`, and `checkpoint.ck`. A run that fails keeps all of these as they were
-//! at the last write, and adds `spheres_failed.vtu` with the state that failed.
+//! at the last write, and adds `spheres_failed.vtu` with the state that failed. A fresh run
+//! first removes these files left by an earlier run in its folder ([`owned`]); a run stopped
+//! by a signal ([`RunOptions::stop`]) writes its checkpoint and keeps the rest as they are.
 //!
 //! With a fluid (`[fluid]`): `flow.pvd` + `flow_NNNNNN.vti`, `sample_<name>.csv` and fluid
 //! columns in `series.csv` ([`flow`]); every output then follows simulated time (the steps
 //! vary), see [`schedule`]. A flow-only scenario writes no sphere or wall files.
 
+pub mod fingerprint;
 pub mod flow;
+pub mod owned;
+mod progress;
 pub mod schedule;
 
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Arc;
 use std::time::Instant;
 
 use anyhow::{bail, Context};
@@ -26,7 +33,9 @@ use crate::io::pvd::PvdSeries;
 use crate::io::vtk::{write_points, write_surface, Array};
 use crate::scenario::{build, Source};
 use crate::simulation::Simulation;
+use fingerprint::Fingerprint;
 use flow::FlowOutput;
+use progress::Progress;
 use schedule::Schedule;
 
 /// The most steps a run takes in one `Simulation::advance` between outputs: the progress bar
@@ -46,6 +55,12 @@ pub struct RunOptions {
     pub progress: bool,
     /// Stop after this many steps (for tests), whatever the end time.
     pub max_steps: Option<u64>,
+    /// End time [s] instead of the scenario's `[run] end_time` (to extend a run on restart).
+    /// Output intervals left at their defaults still follow the scenario's end time.
+    pub end_time: Option<f64>,
+    /// Set to a signal's number (by a signal handler) to stop the run: it finishes the step,
+    /// writes a checkpoint and returns with [`RunSummary::interrupted_by`] set.
+    pub stop: Option<Arc<AtomicUsize>>,
 }
 
 /// What a finished run reports.
@@ -57,6 +72,8 @@ pub struct RunSummary {
     pub steps: u64,
     /// Final time [s].
     pub time: f64,
+    /// Final step number (counted from the start of the run, restarts included).
+    pub step: u64,
     /// Wall-clock seconds.
     pub wall_seconds: f64,
     /// Spheres at the end.
@@ -69,6 +86,10 @@ pub struct RunSummary {
     pub phase_times: crate::simulation::timing::PhaseTimes,
     /// Of `phase_times.fluid`, the pressure projection [s].
     pub pressure_seconds: f64,
+    /// The signal that stopped the run before its end ([`RunOptions::stop`]), if one did.
+    pub interrupted_by: Option<usize>,
+    /// The last checkpoint written.
+    pub checkpoint: PathBuf,
 }
 
 /// Columns of `series.csv`.
@@ -93,33 +114,42 @@ const PROBE_COLUMNS: [&str; 17] = [
 
 /// Runs a scenario to its end time (or from a checkpoint), writing the outputs.
 pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
+    let file_end = src.scenario.run.end_time;
+    let overridden;
+    let src = match opts.end_time {
+        Some(e) => {
+            if !(e.is_finite() && e > 0.0) {
+                bail!("--end-time must be a positive number of seconds, not {e}");
+            }
+            let mut s = src.clone();
+            s.scenario.run.end_time = e;
+            overridden = s;
+            &overridden
+        }
+        None => src,
+    };
     let sc = &src.scenario;
     let out = opts
         .output_dir
         .clone()
         .or_else(|| sc.output.directory.as_ref().map(PathBuf::from))
         .unwrap_or_else(|| PathBuf::from("output").join(&sc.run.name));
-    std::fs::create_dir_all(&out).with_context(|| format!("cannot create {}", out.display()))?;
+    std::fs::create_dir_all(&out)
+        .with_context(|| format!("cannot create the output folder {}", out.display()))?;
     let built = build(src)?;
     if opts.progress {
         eprint!("{}", built.derived.report());
     }
     let mut sim = built.simulation;
+    let fingerprint = fingerprint::fingerprint(src, &sim);
     let end = sc.run.end_time;
     let dt = sim.dem.dt;
     let by_time = sim.fluid.is_some();
     let particles = !by_time || built.derived.spheres != (0, 0);
-    let mut vtk_every = Schedule::new(sc.output.vtk_interval.unwrap_or(end / 50.0), dt, by_time);
-    let mut csv_every = Schedule::new(
-        sc.output.series_interval.unwrap_or(end / 500.0),
-        dt,
-        by_time,
-    );
-    let mut ck_every = Schedule::new(
-        sc.output.checkpoint_interval.unwrap_or(end / 4.0),
-        dt,
-        by_time,
-    );
+    let interval = |given: Option<f64>, per_run: f64| given.unwrap_or(file_end / per_run);
+    let mut vtk_every = Schedule::new(interval(sc.output.vtk_interval, 50.0), dt, by_time);
+    let mut csv_every = Schedule::new(interval(sc.output.series_interval, 500.0), dt, by_time);
+    let mut ck_every = Schedule::new(interval(sc.output.checkpoint_interval, 4.0), dt, by_time);
 
     let resuming = opts.restart.is_some();
     if let Some(path) = &opts.restart {
@@ -132,8 +162,38 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
                 dt
             );
         }
+        let differ = fingerprint::differences(&ck.fingerprint, &fingerprint);
+        if !differ.is_empty() {
+            bail!(
+                "{}: written by a different scenario; these parts differ: {}. A checkpoint \
+                 continues only the scenario that wrote it (end_time and [output] may change).",
+                path.display(),
+                differ.join(", ")
+            );
+        }
         flow::check_restart(&sim, &ck, path)?;
         sim = restore(sim, ck);
+        if opts.progress {
+            eprintln!(
+                "continuing from t = {:.6} s, step {} ({})",
+                sim.time,
+                sim.step,
+                path.display()
+            );
+        }
+    } else {
+        let samples: Vec<String> = (sc.fluid.iter())
+            .flat_map(|f| f.samples.iter().enumerate().map(|(i, s)| s.file_name(i)))
+            .collect();
+        let removed = owned::clear(&out, &samples)?;
+        if opts.progress && !removed.is_empty() {
+            eprintln!(
+                "removed {} file(s) of a previous run from {} ({}); a fresh run starts there",
+                removed.len(),
+                out.display(),
+                owned::describe(&removed)
+            );
+        }
     }
     let t0 = sim.time;
     for s in [&mut vtk_every, &mut csv_every, &mut ck_every] {
@@ -142,12 +202,15 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     let mut spheres_pvd = open_pvd(&out.join("spheres.pvd"), resuming, t0)?;
     let mut walls_pvd = open_pvd(&out.join("walls.pvd"), resuming, t0)?;
     let columns = flow::series_columns(&sim);
+    let series_path = out.join("series.csv");
     let mut series = if resuming {
-        CsvSeries::resume(&out.join("series.csv"), &columns, t0)?
+        CsvSeries::resume(&series_path, &columns, t0)
     } else {
-        CsvSeries::create(&out.join("series.csv"), &columns)?
-    };
-    let mut block_out = BlockOutput::open(&sim, &out, resuming, t0)?;
+        CsvSeries::create(&series_path, &columns)
+    }
+    .context("cannot open the time series")?;
+    let mut block_out =
+        BlockOutput::open(&sim, &out, resuming, t0).context("cannot open the block files")?;
     let samples = sc.fluid.as_ref().map_or(&[][..], |f| &f.samples[..]);
     let mut flow_out = FlowOutput::open(&sim, samples, &out, resuming)?;
     let mut probes = Vec::new();
@@ -156,19 +219,21 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         probes.push((
             id,
             if resuming {
-                CsvSeries::resume(&p, &PROBE_COLUMNS, t0)?
+                CsvSeries::resume(&p, &PROBE_COLUMNS, t0)
             } else {
-                CsvSeries::create(&p, &PROBE_COLUMNS)?
-            },
+                CsvSeries::create(&p, &PROBE_COLUMNS)
+            }
+            .with_context(|| format!("cannot open the probe of sphere {id}"))?,
         ));
     }
+    let ck_path = out.join("checkpoint.ck");
     if !resuming {
         if particles {
             snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
-            block_out.write(&sim, &out)?;
+            block_out.write(&sim, &out).context(BLOCKS)?;
         }
-        series.row(&series_row(&sim))?;
-        record_probes(&sim, &mut probes)?;
+        series.row(&series_row(&sim)).context(SERIES)?;
+        record_probes(&sim, &mut probes).context(PROBES)?;
     }
 
     // With a fluid the steps vary: run to the end time, the bar counts per mille of it.
@@ -178,13 +243,25 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         ((end - t0) / dt).round().max(0.0) as u64
     };
     let total_steps = opts.max_steps.map_or(total_steps, |m| m.min(total_steps));
-    let bar = opts
-        .progress
-        .then(|| progress_bar(if by_time { 1000 } else { total_steps }, by_time));
+    // The simulated time this invocation runs to, for the progress and its ETA.
+    let t_goal = if by_time {
+        end
+    } else {
+        t0 + total_steps as f64 * dt
+    };
+    let mut progress = opts.progress.then(|| Progress::new(t0, t_goal));
     let started = Instant::now();
-    let mut last_line = Instant::now();
     let mut k = 0;
+    let mut interrupted_by = None;
     while k < total_steps && !(by_time && sim.reached(end)) {
+        // A signal stops the run between steps, with every output of the last one written.
+        if let Some(sig) = (opts.stop.as_ref())
+            .map(|s| s.load(Ordering::Relaxed))
+            .filter(|&s| s != 0)
+        {
+            interrupted_by = Some(sig);
+            break;
+        }
         // Without a fluid or probes, the steps up to the next output run as one stretch
         // (`Simulation::advance`, which is faster), at most `STRETCH` for the progress bar.
         let stretch = if by_time || !probes.is_empty() {
@@ -204,99 +281,85 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             let _ = write_spheres(&sim, &out.join("spheres_failed.vtu"));
             let _ = block_out.write(&sim, &out);
             flow::write_failed(&sim, &out);
-            if let Some(b) = &bar {
-                b.abandon();
+            if let Some(p) = &progress {
+                p.abandon();
             }
             bail!(
                 "{e}\nThe output written so far is in {} (last checkpoint: {}); the failing state is in spheres_failed.vtu{}.",
                 out.display(),
-                if out.join("checkpoint.ck").exists() { "checkpoint.ck" } else { "none yet" },
+                if ck_path.exists() { "checkpoint.ck" } else { "none yet" },
                 if by_time { " and flow_failed.vti" } else { "" }
             );
         }
         k += stretch;
-        record_probes(&sim, &mut probes)?;
+        record_probes(&sim, &mut probes).context(PROBES)?;
         let (n, t) = (sim.step, sim.time);
         if csv_every.due(t, n) {
-            series.row(&series_row(&sim))?;
+            series.row(&series_row(&sim)).context(SERIES)?;
         }
         let frame = vtk_every.due(t, n);
         if frame && particles {
             snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
-            block_out.write(&sim, &out)?;
+            block_out.write(&sim, &out).context(BLOCKS)?;
         }
         if let Some(f) = &mut flow_out {
             f.after_step(&sim, frame)?;
         }
         if ck_every.due(t, n) {
-            save(&sim, &out.join("checkpoint.ck"))?;
+            save(&sim, &fingerprint, &ck_path)?;
         }
-        if let Some(b) = &bar {
-            if by_time {
-                let done = ((t - t0) / (end - t0) * 1000.0).clamp(0.0, 1000.0) as u64;
-                if done != b.position() {
-                    b.set_position(done);
-                    b.set_message(format!("t = {t:.4} s, step {n}"));
-                }
-            } else {
-                b.set_position(k);
+        if let Some(p) = &mut progress {
+            p.update(&sim);
+        }
+    }
+    if let Some(p) = &progress {
+        if interrupted_by.is_some() {
+            p.abandon();
+        } else {
+            p.finish();
+        }
+    }
+    save(&sim, &fingerprint, &ck_path)?;
+    // An interrupted run adds no closing frame or row: its restart writes them where an
+    // uninterrupted run would.
+    if interrupted_by.is_none() {
+        if !vtk_every.fired_at(sim.step) {
+            if particles {
+                snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+                block_out.write(&sim, &out).context(BLOCKS)?;
             }
-            if b.is_hidden() && last_line.elapsed().as_secs_f64() > 10.0 {
-                last_line = Instant::now();
-                eprintln!(
-                    "  t = {:.4} s of {end} s, step {} of {}, {} spheres, {} contacts, {:.0} s elapsed",
-                    sim.time,
-                    k,
-                    if by_time { "?".to_string() } else { total_steps.to_string() },
-                    sim.dem.spheres.len(),
-                    sim.dem.stats.pair_contacts,
-                    started.elapsed().as_secs_f64()
-                );
+            if let Some(f) = &mut flow_out {
+                f.finish(&sim)?;
             }
         }
-    }
-    if let Some(b) = &bar {
-        b.finish();
-    }
-    save(&sim, &out.join("checkpoint.ck"))?;
-    if !vtk_every.fired_at(sim.step) {
-        if particles {
-            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
-            block_out.write(&sim, &out)?;
+        if !csv_every.fired_at(sim.step) {
+            series.row(&series_row(&sim)).context(SERIES)?;
         }
-        if let Some(f) = &mut flow_out {
-            f.finish(&sim)?;
-        }
-    }
-    if !csv_every.fired_at(sim.step) {
-        series.row(&series_row(&sim))?;
     }
     if sc.output.plots && particles {
-        plot_energy(&out)?;
+        plot_energy(&out)
+            .with_context(|| format!("cannot draw {}", out.join("energy.png").display()))?;
     }
     Ok(RunSummary {
         output_dir: out,
         steps: k,
         time: sim.time,
+        step: sim.step,
         wall_seconds: started.elapsed().as_secs_f64(),
         spheres: sim.dem.spheres.len(),
         spheres_lost: sim.dem.stats.spheres_lost,
         fluid_cells: sim.fluid.as_ref().map_or(0, |f| f.grid().cell_count()),
         phase_times: sim.times,
         pressure_seconds: sim.fluid.as_ref().map_or(0.0, |f| f.pressure_seconds()),
+        interrupted_by,
+        checkpoint: ck_path,
     })
 }
 
-fn progress_bar(n: u64, by_time: bool) -> indicatif::ProgressBar {
-    let bar = indicatif::ProgressBar::new(n);
-    let template = if by_time {
-        "{bar:40} {percent:>3}% {msg} elapsed {elapsed} ETA {eta}"
-    } else {
-        "{bar:40} {percent:>3}% step {pos}/{len} elapsed {elapsed} ETA {eta}"
-    };
-    bar.set_style(indicatif::ProgressStyle::with_template(template).expect("valid template"));
-    bar
-}
+/// What was being written, for the errors of the files written at every output.
+const SERIES: &str = "cannot write a row of the time series";
+const PROBES: &str = "cannot write a row of a probe";
+const BLOCKS: &str = "cannot write the block files";
 
 fn open_pvd(path: &Path, resuming: bool, t0: f64) -> std::io::Result<PvdSeries> {
     if resuming && path.exists() {
@@ -321,13 +384,14 @@ pub fn checkpoint_of(sim: &Simulation) -> Checkpoint {
         stats: sim.dem.stats,
         rigid: sim.rigid.clone(),
         fluid: sim.fluid.as_ref().map(|f| f.state().clone()),
+        fingerprint: Vec::new(),
     }
 }
 
-fn save(sim: &Simulation, path: &Path) -> anyhow::Result<()> {
-    checkpoint_of(sim)
-        .write(path)
-        .with_context(|| format!("cannot write {}", path.display()))
+fn save(sim: &Simulation, fingerprint: &Fingerprint, path: &Path) -> anyhow::Result<()> {
+    let mut ck = checkpoint_of(sim);
+    ck.fingerprint = fingerprint.clone();
+    ck.write(path).context("cannot write the checkpoint")
 }
 
 /// Puts a checkpoint's state into a freshly built simulation of the same scenario.
@@ -497,15 +561,20 @@ fn snapshot(
 ) -> anyhow::Result<()> {
     let k = spheres.entries().len();
     let name = format!("spheres_{k:06}.vtu");
-    write_spheres(sim, &out.join(&name))?;
-    spheres.add(sim.time, &name, 0)?;
+    write_spheres(sim, &out.join(&name)).context("cannot write the spheres' frame")?;
+    spheres
+        .add(sim.time, &name, 0)
+        .context("cannot update the spheres' series")?;
     let d = &sim.dem.domain;
     for (w, wall) in sim.dem.walls.iter().enumerate() {
         let (v, tri) = wall.surface(sim.time, d.min, d.max);
         let name = format!("walls_{k:06}_{w}.vtp");
         let id = vec![w as i64; tri.len()];
-        write_surface(&out.join(&name), &v, &tri, &[Array::ints("wall", &id)])?;
-        walls.add(sim.time, &name, w)?;
+        write_surface(&out.join(&name), &v, &tri, &[Array::ints("wall", &id)])
+            .context("cannot write a wall's frame")?;
+        walls
+            .add(sim.time, &name, w)
+            .context("cannot update the walls' series")?;
     }
     Ok(())
 }

@@ -229,6 +229,7 @@ fn a_block_run_writes_its_outputs_and_a_restart_continues_bit_for_bit() {
         restart,
         progress: false,
         max_steps,
+        ..Default::default()
     };
     let a = execute(&src, &opts(&whole, None, None)).unwrap_or_else(|e| panic!("{e}"));
     for f in [

@@ -20,8 +20,8 @@ use crate::rigid::bodies::RigidBodies;
 const MAGIC: &[u8; 8] = b"RIPRAPCK";
 /// 2: blocks and links; 3: the fluid state; 4: the storage order, the neighbour-build
 /// positions, the contact history by pair, and the fluid's held load on each sphere
-/// (`Spheres::fluid`).
-const VERSION: u32 = 4;
+/// (`Spheres::fluid`); 5: the scenario's fingerprint (`run::fingerprint`).
+const VERSION: u32 = 5;
 
 /// The saved state.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -51,6 +51,9 @@ pub struct Checkpoint {
     pub rigid: RigidBodies,
     /// The flow, Adams-Bashforth history included (`Fluid::state`), if the run has one.
     pub fluid: Option<FluidState>,
+    /// What the state means: a hash per part of the scenario that wrote it
+    /// (`run::fingerprint`), checked on restart; empty when written outside a run.
+    pub fingerprint: Vec<(String, u32)>,
 }
 
 /// What can go wrong reading a checkpoint.
@@ -88,7 +91,8 @@ impl Checkpoint {
         let version = u32::from_le_bytes(bytes[8..12].try_into().expect("4 bytes"));
         if version != VERSION {
             return Err(bad(&format!(
-                "format version {version}, this riprap reads {VERSION}"
+                "written in checkpoint format {version}, and this riprap reads format {VERSION} \
+                 only; run the scenario again from the start"
             )));
         }
         let len = u64::from_le_bytes(bytes[12..20].try_into().expect("8 bytes")) as usize;
@@ -137,6 +141,7 @@ mod tests {
             stats: Stats::default(),
             rigid: Default::default(),
             fluid: None,
+            fingerprint: vec![("time step".to_string(), 7)],
         }
     }
 
@@ -153,6 +158,7 @@ mod tests {
             c.spheres.velocity[0].y.to_bits()
         );
         assert_eq!(r.step, 7);
+        assert_eq!(r.fingerprint, c.fingerprint);
         let mut bytes = std::fs::read(&path).unwrap();
         bytes[30] ^= 1;
         std::fs::write(&path, &bytes).unwrap();
@@ -165,5 +171,24 @@ mod tests {
             .unwrap_err()
             .to_string()
             .contains("truncated"));
+    }
+
+    #[test]
+    fn a_checkpoint_of_an_older_format_gets_a_clear_error() {
+        let dir = std::env::temp_dir().join(format!("riprap-ck-old-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("old.ck");
+        sample().write(&path).unwrap();
+        let mut bytes = std::fs::read(&path).unwrap();
+        bytes[8..12].copy_from_slice(&(VERSION - 1).to_le_bytes());
+        std::fs::write(&path, &bytes).unwrap();
+        let e = Checkpoint::read(&path).unwrap_err().to_string();
+        assert!(e.contains("old.ck"), "{e}");
+        assert!(
+            e.contains(&format!("checkpoint format {}", VERSION - 1)),
+            "{e}"
+        );
+        assert!(e.contains("from the start"), "{e}");
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

@@ -2,12 +2,15 @@
 //!
 //! Each row goes to the file in a single write as soon as it is given, so a
 //! crashed run keeps every row it produced (no fsync per row: that would cost
-//! far more than the row, and the OS flushes the page cache anyway). Numbers
-//! use Rust's `{:?}` formatting, the shortest text that parses back to the very
-//! same f64 (with an exponent for very large or small values, which `{}` would
-//! spell out digit by digit), so [`read_csv`] returns exactly what was written.
+//! far more than the row, and the OS flushes the page cache anyway). Whole
+//! numbers (steps, counts) are written as integers (`3`, not `3.0`) and zero
+//! without its sign (`0`, not `-0.0`); other numbers use Rust's `{:?}`
+//! formatting, the shortest text that parses back to the very same f64 (with an
+//! exponent for very large or small values, which `{}` would spell out digit by
+//! digit). So [`read_csv`] returns exactly what was written, but for the sign of
+//! a zero.
 
-use super::{invalid_data, invalid_input};
+use super::{invalid_data, invalid_input, naming};
 use std::fmt::Write as _;
 use std::fs::{File, OpenOptions};
 use std::io::{Read, Seek, SeekFrom, Write};
@@ -31,8 +34,8 @@ impl CsvSeries {
     /// comma, quote or line break (they would break the plain CSV format).
     pub fn create(path: &Path, columns: &[&str]) -> std::io::Result<Self> {
         let header = header_line(columns)?;
-        let mut file = File::create(path)?;
-        file.write_all(header.as_bytes())?;
+        let mut file = File::create(path).map_err(naming(path))?;
+        file.write_all(header.as_bytes()).map_err(naming(path))?;
         Ok(Self::with_file(file, path, columns.len()))
     }
 
@@ -50,10 +53,10 @@ impl CsvSeries {
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
                 return Self::create(path, columns)
             }
-            Err(e) => return Err(e),
+            Err(e) => return Err(naming(path)(e)),
         };
         let mut text = String::new();
-        file.read_to_string(&mut text)?;
+        file.read_to_string(&mut text).map_err(naming(path))?;
         if text.is_empty() {
             drop(file);
             return Self::create(path, columns);
@@ -77,8 +80,8 @@ impl CsvSeries {
                 _ => break,
             }
         }
-        file.set_len(keep as u64)?;
-        file.seek(SeekFrom::End(0))?;
+        file.set_len(keep as u64).map_err(naming(path))?;
+        file.seek(SeekFrom::End(0)).map_err(naming(path))?;
         Ok(Self::with_file(file, path, columns.len()))
     }
 
@@ -103,19 +106,35 @@ impl CsvSeries {
             )));
         }
         self.line.clear();
-        for (i, v) in values.iter().enumerate() {
-            let sep = if i == 0 { "" } else { "," };
-            let _ = write!(self.line, "{sep}{v:?}");
+        for (i, &v) in values.iter().enumerate() {
+            if i > 0 {
+                self.line.push(',');
+            }
+            write_number(&mut self.line, v);
         }
         self.line.push('\n');
         // One write call per row: a crash loses at most the row being written.
-        self.file.write_all(self.line.as_bytes())?;
-        self.file.flush()
+        (self.file.write_all(self.line.as_bytes()))
+            .and_then(|()| self.file.flush())
+            .map_err(naming(&self.path))
     }
 
     /// The file's path.
     pub fn path(&self) -> &Path {
         &self.path
+    }
+}
+
+/// Below 2^53 every whole number is an exact f64, so its integer text parses back to it.
+const EXACT_INTEGERS: f64 = 9_007_199_254_740_992.0;
+
+/// Appends `v` as the module docs say: whole numbers as integers, zero as `0`, anything else
+/// as the shortest text that parses back to the same f64.
+fn write_number(line: &mut String, v: f64) {
+    if v.fract() == 0.0 && v.abs() < EXACT_INTEGERS {
+        let _ = write!(line, "{}", v as i64);
+    } else {
+        let _ = write!(line, "{v:?}");
     }
 }
 
@@ -155,7 +174,7 @@ fn parse_row(line: &str, n: usize) -> Result<Vec<f64>, String> {
 /// back as (column names, rows). Blank lines are skipped; any other line
 /// that does not parse is an `InvalidData` error naming its line number.
 pub fn read_csv(path: &Path) -> std::io::Result<(Vec<String>, Vec<Vec<f64>>)> {
-    let text = std::fs::read_to_string(path)?;
+    let text = std::fs::read_to_string(path).map_err(naming(path))?;
     let mut lines = text.lines();
     let header = lines
         .next()
@@ -193,7 +212,8 @@ mod tests {
         let rows = vec![
             vec![0.0, 1.0 / 3.0, 5.0],
             vec![0.1 + 0.2, -1e-300, f64::MAX],
-            vec![1e-7, f64::MIN_POSITIVE, -0.0],
+            vec![1e-7, f64::MIN_POSITIVE, -1.5],
+            vec![-1e300, 9.007199254740991e15, 9.007199254740993e15],
             vec![2.5e15, 6.02214076e23, f64::INFINITY],
         ];
         let mut s = CsvSeries::create(&path, &COLS).unwrap();
@@ -209,7 +229,24 @@ mod tests {
         assert_eq!(err.kind(), std::io::ErrorKind::InvalidInput);
         assert!(std::fs::read_to_string(&path)
             .unwrap()
-            .starts_with("time_s,energy_J,n\n0.0,"));
+            .starts_with("time_s,energy_J,n\n0,"));
+    }
+
+    #[test]
+    fn counts_are_written_as_integers_and_negative_zero_as_zero() {
+        let dir = test_dir("csv_integers");
+        let path = dir.join("s.csv");
+        let mut s = CsvSeries::create(&path, &COLS).unwrap();
+        s.row(&[0.25, -0.0, 3.0]).unwrap();
+        s.row(&[-2.0, 1e20, f64::NAN]).unwrap();
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert_eq!(
+            text, "time_s,energy_J,n\n0.25,0,3\n-2,1e20,NaN\n",
+            "counts without '.0', zero without its sign"
+        );
+        let (_, back) = read_csv(&path).unwrap();
+        assert_eq!(back[0][1].to_bits(), 0.0f64.to_bits());
+        assert_eq!(back[1][..2], [-2.0, 1e20]);
     }
 
     #[test]

@@ -37,7 +37,7 @@ pub(crate) fn write_replacing(path: &Path, bytes: &[u8]) -> std::io::Result<()> 
 
 fn write_via_tmp(path: &Path, bytes: &[u8], durable: bool) -> std::io::Result<()> {
     let tmp = tmp_path(path, ".tmp");
-    let result = (|| {
+    let result = (|| -> std::io::Result<()> {
         let mut file = File::create(&tmp)?;
         file.write_all(bytes)?;
         if durable {
@@ -46,15 +46,21 @@ fn write_via_tmp(path: &Path, bytes: &[u8], durable: bool) -> std::io::Result<()
         drop(file);
         fs::rename(&tmp, path)
     })();
-    if result.is_err() {
+    if let Err(e) = result {
         // Best effort: the original error is the one worth reporting.
         let _ = fs::remove_file(&tmp);
-        return result;
+        return Err(naming(path)(e));
     }
     if durable {
         sync_parent_dir(path);
     }
     result
+}
+
+/// Puts `path` into an I/O error's message, keeping its kind: the OS's message names no file
+/// ("Permission denied (os error 13)"), and an output folder holds many.
+pub(crate) fn naming(path: &Path) -> impl Fn(std::io::Error) -> std::io::Error + '_ {
+    move |e| std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
 }
 
 /// `path` with `suffix` appended to its file name (`a/b.vtu` -> `a/b.vtu.tmp`).
@@ -169,8 +175,9 @@ mod tests {
     fn write_atomically_fails_cleanly_in_missing_dir() {
         let dir = test_dir("atomic_missing");
         let path = dir.join("no_such_dir").join("a.txt");
-        assert!(write_atomically(&path, b"x").is_err());
+        let e = write_atomically(&path, b"x").unwrap_err();
         assert!(!path.exists());
+        assert!(e.to_string().contains("no_such_dir"), "{e}");
     }
 
     #[test]

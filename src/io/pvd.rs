@@ -63,7 +63,7 @@ impl PvdSeries {
         let text = match std::fs::read_to_string(&path) {
             Ok(t) => t,
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Self::new(path)),
-            Err(e) => return Err(e),
+            Err(e) => return Err(super::naming(&path)(e)),
         };
         let mut entries =
             parse(&text).map_err(|m| invalid_data(format!("{}: {m}", path.display())))?;

@@ -3,7 +3,10 @@
 //! columns of `series.csv`, and the fluid part of a restart.
 //!
 //! Image arrays: `velocity` [m s⁻¹], `pressure` (less hydrostatic) [Pa], `vorticity` [s⁻¹],
-//! `eddy_viscosity` μ_SGS [Pa s], `mixture_density` ρ̄ [kg m⁻³] [53], `divergence` [s⁻¹].
+//! `eddy_viscosity` μ_SGS [Pa s], `mixture_density` ρ̄ [kg m⁻³] [53], and
+//! `divergence_end_of_step` [s⁻¹], ∇·u of the velocity written: with spheres that is after the
+//! coupling's correction [62], which is not divergence-free (up to tens of s⁻¹ where spheres
+//! move), unlike `series.csv`'s `fluid_max_divergence_after_projection`.
 //! Sample rows: one per cell per time, cells in storage order (x fastest), with the columns of
 //! [`SAMPLE_COLUMNS`]; `pandas.read_csv(...).groupby("time")` gives one profile per time.
 
@@ -23,11 +26,12 @@ use crate::scenario::fluid::{SampleKind, SampleSection};
 use crate::simulation::Simulation;
 
 /// The fluid's columns of `series.csv`, after [`SERIES_COLUMNS`]: kinetic energy of the flow
-/// [J], largest speed at a cell centre [m s⁻¹], largest |∇·u| [s⁻¹], last fluid step [s].
+/// [J], largest speed at a cell centre [m s⁻¹], largest |∇·u| of the projected flow (with
+/// spheres: before the correction [62], so near round-off) [s⁻¹], last fluid step [s].
 pub const FLUID_SERIES_COLUMNS: [&str; 4] = [
     "fluid_kinetic_energy",
     "fluid_max_speed",
-    "fluid_max_divergence",
+    "fluid_max_divergence_after_projection",
     "fluid_time_step",
 ];
 
@@ -114,7 +118,7 @@ pub fn write_flow(fluid: &Fluid, fields: &CellFields, path: &Path) -> std::io::R
             Array::vectors("vorticity", &fields.vorticity),
             Array::scalars("eddy_viscosity", &fields.eddy_viscosity),
             Array::scalars("mixture_density", &fields.mixture_density),
-            Array::scalars("divergence", &fields.divergence),
+            Array::scalars("divergence_end_of_step", &fields.divergence),
         ],
     )
 }
@@ -221,7 +225,7 @@ impl FlowOutput {
             } else {
                 CsvSeries::create(&path, &SAMPLE_COLUMNS)
             }
-            .with_context(|| format!("cannot open {}", path.display()))?;
+            .context("cannot open a sample file")?;
             let (cells, centres) = Sample::cells(fluid, s);
             let mut schedule = Schedule::new(s.interval, 0.0, true);
             schedule.start(t0, sim.step);
@@ -278,8 +282,7 @@ impl FlowOutput {
         };
         let name = format!("flow_{:06}.vti", self.pvd.entries().len());
         let path = self.dir.join(&name);
-        write_flow(fluid, fields, &path)
-            .with_context(|| format!("cannot write {}", path.display()))?;
+        write_flow(fluid, fields, &path).context("cannot write a flow image")?;
         self.pvd.add(sim.time, &name, 0)?;
         Ok(())
     }
