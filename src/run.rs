@@ -18,12 +18,14 @@ use std::time::Instant;
 use anyhow::{bail, Context};
 
 use crate::dem::spheres::NO_BODY;
-use crate::io::blocks::{block_rows, write_block_points, write_breakages, BLOCK_COLUMNS};
+use crate::io::blocks::{
+    block_rows, write_block_points, write_breakages, DisplacementReference, BLOCK_COLUMNS,
+};
 use crate::io::checkpoint::Checkpoint;
 use crate::io::csv::{read_csv, CsvSeries};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
 use crate::io::pvd::PvdSeries;
-use crate::io::vtk::{write_points, write_surface, Array};
+use crate::io::vtk::{write_points, write_surface, Array, Format};
 use crate::scenario::{build, Source};
 use crate::simulation::Simulation;
 use flow::FlowOutput;
@@ -109,7 +111,9 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     let dt = sim.dem.dt;
     let by_time = sim.fluid.is_some();
     let particles = !by_time || built.derived.spheres != (0, 0);
-    let mut vtk_every = Schedule::new(sc.output.vtk_interval.unwrap_or(end / 50.0), dt, by_time);
+    let vtk_interval = sc.output.vtk_interval.unwrap_or(end / 50.0);
+    let format = sc.output.vtk_format();
+    let mut vtk_every = Schedule::new(vtk_interval, dt, by_time);
     let mut csv_every = Schedule::new(
         sc.output.series_interval.unwrap_or(end / 500.0),
         dt,
@@ -147,9 +151,12 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     } else {
         CsvSeries::create(&out.join("series.csv"), &columns)?
     };
-    let mut block_out = BlockOutput::open(&sim, &out, resuming, t0)?;
+    let mut block_out = BlockOutput::open(&sim, &out, resuming, t0, format)?;
+    let mut reference =
+        DisplacementReference::new(sc.output.displacement_reference_time, t0, &sim.rigid);
     let samples = sc.fluid.as_ref().map_or(&[][..], |f| &f.samples[..]);
-    let mut flow_out = FlowOutput::open(&sim, samples, &out, resuming)?;
+    let flow_interval = sc.output.flow_interval.unwrap_or(vtk_interval);
+    let mut flow_out = FlowOutput::open(&sim, samples, &out, resuming, flow_interval, format)?;
     let mut probes = Vec::new();
     for &id in &sc.output.probes {
         let p = out.join(format!("probe_{id}.csv"));
@@ -164,7 +171,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     }
     if !resuming {
         if particles {
-            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd, format)?;
             block_out.write(&sim, &out)?;
         }
         series.row(&series_row(&sim))?;
@@ -187,7 +194,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     while k < total_steps && !(by_time && sim.reached(end)) {
         // Without a fluid or probes, the steps up to the next output run as one stretch
         // (`Simulation::advance`, which is faster), at most `STRETCH` for the progress bar.
-        let stretch = if by_time || !probes.is_empty() {
+        let stretch = if by_time || !probes.is_empty() || reference.pending() {
             1
         } else {
             [&vtk_every, &csv_every, &ck_every]
@@ -201,9 +208,9 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             sim.advance(stretch)
         };
         if let Err(e) = stepped {
-            let _ = write_spheres(&sim, &out.join("spheres_failed.vtu"));
+            let _ = write_spheres(&sim, &out.join("spheres_failed.vtu"), format);
             let _ = block_out.write(&sim, &out);
-            flow::write_failed(&sim, &out);
+            flow::write_failed(&sim, &out, format);
             if let Some(b) = &bar {
                 b.abandon();
             }
@@ -215,6 +222,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             );
         }
         k += stretch;
+        reference.after_step(&mut sim.rigid, sim.time);
         record_probes(&sim, &mut probes)?;
         let (n, t) = (sim.step, sim.time);
         if csv_every.due(t, n) {
@@ -222,11 +230,11 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         }
         let frame = vtk_every.due(t, n);
         if frame && particles {
-            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd, format)?;
             block_out.write(&sim, &out)?;
         }
         if let Some(f) = &mut flow_out {
-            f.after_step(&sim, frame)?;
+            f.after_step(&sim)?;
         }
         if ck_every.due(t, n) {
             save(&sim, &out.join("checkpoint.ck"))?;
@@ -259,14 +267,12 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         b.finish();
     }
     save(&sim, &out.join("checkpoint.ck"))?;
-    if !vtk_every.fired_at(sim.step) {
-        if particles {
-            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
-            block_out.write(&sim, &out)?;
-        }
-        if let Some(f) = &mut flow_out {
-            f.finish(&sim)?;
-        }
+    if !vtk_every.fired_at(sim.step) && particles {
+        snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd, format)?;
+        block_out.write(&sim, &out)?;
+    }
+    if let Some(f) = &mut flow_out {
+        f.finish(&sim)?;
     }
     if !csv_every.fired_at(sim.step) {
         series.row(&series_row(&sim))?;
@@ -433,10 +439,16 @@ fn record_probes(sim: &Simulation, probes: &mut [(u32, CsvSeries)]) -> std::io::
 }
 
 /// The block files of a run (`io::blocks`); nothing when the scenario has no blocks.
-struct BlockOutput(Option<(PvdSeries, CsvSeries)>);
+struct BlockOutput(Option<(PvdSeries, CsvSeries, Format)>);
 
 impl BlockOutput {
-    fn open(sim: &Simulation, out: &Path, resuming: bool, t0: f64) -> std::io::Result<Self> {
+    fn open(
+        sim: &Simulation,
+        out: &Path,
+        resuming: bool,
+        t0: f64,
+        format: Format,
+    ) -> std::io::Result<Self> {
         if sim.rigid.is_empty() {
             return Ok(BlockOutput(None));
         }
@@ -449,22 +461,23 @@ impl BlockOutput {
         Ok(BlockOutput(Some((
             open_pvd(&out.join("blocks.pvd"), resuming, t0)?,
             csv,
+            format,
         ))))
     }
 
     fn write(&mut self, sim: &Simulation, out: &Path) -> std::io::Result<()> {
-        let Some((pvd, csv)) = &mut self.0 else {
+        let Some((pvd, csv, format)) = &mut self.0 else {
             return Ok(());
         };
         let name = format!("blocks_{:06}.vtu", pvd.entries().len());
-        write_block_points(&sim.rigid, &out.join(&name))?;
+        write_block_points(&sim.rigid, &out.join(&name), *format)?;
         pvd.add(sim.time, &name, 0)?;
         block_rows(&sim.rigid, sim.time, csv)?;
         write_breakages(&sim.rigid, &out.join("breakages.csv"))
     }
 }
 
-fn write_spheres(sim: &Simulation, path: &Path) -> std::io::Result<()> {
+fn write_spheres(sim: &Simulation, path: &Path, format: Format) -> std::io::Result<()> {
     let s = &sim.dem.spheres;
     let body: Vec<i64> = s
         .body
@@ -486,6 +499,7 @@ fn write_spheres(sim: &Simulation, path: &Path) -> std::io::Result<()> {
             Array::ints("material", &material),
             Array::ints("body", &body),
         ],
+        format,
     )
 }
 
@@ -494,17 +508,19 @@ fn snapshot(
     out: &Path,
     spheres: &mut PvdSeries,
     walls: &mut PvdSeries,
+    format: Format,
 ) -> anyhow::Result<()> {
     let k = spheres.entries().len();
     let name = format!("spheres_{k:06}.vtu");
-    write_spheres(sim, &out.join(&name))?;
+    write_spheres(sim, &out.join(&name), format)?;
     spheres.add(sim.time, &name, 0)?;
     let d = &sim.dem.domain;
     for (w, wall) in sim.dem.walls.iter().enumerate() {
         let (v, tri) = wall.surface(sim.time, d.min, d.max);
         let name = format!("walls_{k:06}_{w}.vtp");
         let id = vec![w as i64; tri.len()];
-        write_surface(&out.join(&name), &v, &tri, &[Array::ints("wall", &id)])?;
+        let wall_id = [Array::ints("wall", &id)];
+        write_surface(&out.join(&name), &v, &tri, &wall_id, format)?;
         walls.add(sim.time, &name, w)?;
     }
     Ok(())

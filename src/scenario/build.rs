@@ -535,12 +535,16 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
     }
     for (k, v) in [
         ("output.vtk_interval", sc.output.vtk_interval),
+        ("output.flow_interval", sc.output.flow_interval),
         ("output.series_interval", sc.output.series_interval),
         ("output.checkpoint_interval", sc.output.checkpoint_interval),
     ] {
         if let Some(v) = v {
             positive(src, k, v)?;
         }
+    }
+    if let Some(t) = sc.output.displacement_reference_time {
+        non_negative(src, "output.displacement_reference_time", t)?;
     }
     let limits = Limits {
         // An impact at 20 times the expected speed means the integration has failed.
