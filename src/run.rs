@@ -9,6 +9,7 @@
 //! columns in `series.csv` ([`flow`]); every output then follows simulated time (the steps
 //! vary), see [`schedule`]. A flow-only scenario writes no sphere or wall files.
 
+pub mod estimate;
 pub mod flow;
 pub mod schedule;
 

@@ -50,6 +50,8 @@ pub struct Derived {
     pub fluid: Option<FluidDerived>,
     /// The coupling's line of the report, if the scenario couples spheres and water.
     pub coupling: Option<String>,
+    /// The line estimating the output's size (`run::estimate`).
+    pub output: String,
 }
 
 impl Derived {
@@ -66,6 +68,7 @@ impl Derived {
         if let Some(c) = &self.coupling {
             s.push_str(c);
         }
+        s.push_str(&self.output);
         s
     }
 
@@ -581,7 +584,7 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
         .iter()
         .map(|(_, c)| discrete_impact(&c.law, c.r_star, c.m_star, v_ref, dt))
         .collect();
-    let derived = Derived {
+    let mut derived = Derived {
         reference_velocity: v_ref,
         min_period,
         max_time_step: max_dt,
@@ -599,6 +602,7 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             let cells = fluid.as_ref().and_then(|f| f.1.cells_per_diameter());
             super::coupling::report(&c, cells)
         }),
+        output: String::new(),
     };
     let mut simulation = Simulation::with_bodies(dem, feeders, rigid, min_period);
     if let Some((f, _)) = fluid {
@@ -609,6 +613,8 @@ pub fn build(src: &Source) -> Result<Built, ScenarioError> {
             simulation = simulation.with_coupling(c);
         }
     }
+    let estimate = crate::run::estimate::OutputEstimate::of(sc, &simulation);
+    derived.output = estimate.line(sc.output.vtk_format());
     Ok(Built {
         simulation,
         derived,
