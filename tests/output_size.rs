@@ -142,10 +142,12 @@ fn the_disk_estimate_matches_the_files_a_run_writes() {
                 "blocks",
             );
             near(e.walls * frames, walls.1, 0.03, "walls");
-            near(e.csv, csv, 0.25, "CSV");
+            // 20 characters a value: an upper bound (zeros and counts are shorter).
+            assert!(csv <= e.csv && e.csv < 3 * csv, "CSV: {csv} B, {e:?}");
         } else {
-            // Compressed: an upper bound.
-            assert!(spheres < frames * e.spheres && blocks.1 < frames * e.blocks);
+            // Compressed: an upper bound, but for files of a few arrays of a few values,
+            // where zlib's block headers outweigh what it saves (the two blocks here).
+            assert!(spheres < frames * e.spheres, "{spheres} B, {e:?}");
         }
         let written = spheres + blocks.1 + walls.1 + csv;
         assert!(written <= e.total(), "written {written} B, estimated {e:?}");
