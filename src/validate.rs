@@ -257,7 +257,11 @@ fn sphere_drag_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Resu
             log_y: false,
         },
         &[
-            Series::new("riprap (resolved coupling)", &measured, LineStyle::Markers),
+            Series::new(
+                "riprap (resolved coupling)",
+                &measured,
+                LineStyle::Highlight,
+            ),
             Series::new(
                 "standard curve, Clift, Grace & Weber 1978",
                 &curve,
