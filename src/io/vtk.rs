@@ -354,7 +354,7 @@ impl VtkFile {
     }
 
     /// Writes the `<Points>` section, always in Float64: positions keep every
-    /// digit (a 1e-7 relative error is 10 um at 100 m, the size of contact
+    /// digit (a 1e-7 relative error is 10 µm at 100 m, the size of contact
     /// overlaps), and they are a small part of a file.
     fn points(&mut self, positions: &[DVec3]) {
         self.xml.push_str("      <Points>\n");
