@@ -25,12 +25,14 @@ use std::time::Instant;
 use anyhow::{bail, Context};
 
 use crate::dem::spheres::NO_BODY;
-use crate::io::blocks::{block_rows, write_block_points, write_breakages, BLOCK_COLUMNS};
+use crate::io::blocks::{
+    block_rows, write_block_points, write_breakages, DisplacementReference, BLOCK_COLUMNS,
+};
 use crate::io::checkpoint::Checkpoint;
 use crate::io::csv::{read_csv, CsvSeries};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
 use crate::io::pvd::PvdSeries;
-use crate::io::vtk::{write_points, write_surface, Array};
+use crate::io::vtk::{write_points, write_surface, Array, Format};
 use crate::scenario::{build, Source};
 use crate::simulation::Simulation;
 use fingerprint::Fingerprint;
@@ -147,7 +149,9 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     let by_time = sim.fluid.is_some();
     let particles = !by_time || built.derived.spheres != (0, 0);
     let interval = |given: Option<f64>, per_run: f64| given.unwrap_or(file_end / per_run);
-    let mut vtk_every = Schedule::new(interval(sc.output.vtk_interval, 50.0), dt, by_time);
+    let vtk_interval = interval(sc.output.vtk_interval, 50.0);
+    let format = sc.output.vtk_format();
+    let mut vtk_every = Schedule::new(vtk_interval, dt, by_time);
     let mut csv_every = Schedule::new(interval(sc.output.series_interval, 500.0), dt, by_time);
     let mut ck_every = Schedule::new(interval(sc.output.checkpoint_interval, 4.0), dt, by_time);
 
@@ -209,10 +213,13 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         CsvSeries::create(&series_path, &columns)
     }
     .context("cannot open the time series")?;
-    let mut block_out =
-        BlockOutput::open(&sim, &out, resuming, t0).context("cannot open the block files")?;
+    let mut block_out = BlockOutput::open(&sim, &out, resuming, t0, format)
+        .context("cannot open the block files")?;
+    let mut reference =
+        DisplacementReference::new(sc.output.displacement_reference_time, t0, &sim.rigid);
     let samples = sc.fluid.as_ref().map_or(&[][..], |f| &f.samples[..]);
-    let mut flow_out = FlowOutput::open(&sim, samples, &out, resuming)?;
+    let flow_interval = sc.output.flow_interval.unwrap_or(vtk_interval);
+    let mut flow_out = FlowOutput::open(&sim, samples, &out, resuming, flow_interval, format)?;
     let mut probes = Vec::new();
     for &id in &sc.output.probes {
         let p = out.join(format!("probe_{id}.csv"));
@@ -229,7 +236,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     let ck_path = out.join("checkpoint.ck");
     if !resuming {
         if particles {
-            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd, format)?;
             block_out.write(&sim, &out).context(BLOCKS)?;
         }
         series.row(&series_row(&sim)).context(SERIES)?;
@@ -264,7 +271,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         }
         // Without a fluid or probes, the steps up to the next output run as one stretch
         // (`Simulation::advance`, which is faster), at most `STRETCH` for the progress bar.
-        let stretch = if by_time || !probes.is_empty() {
+        let stretch = if by_time || !probes.is_empty() || reference.pending() {
             1
         } else {
             [&vtk_every, &csv_every, &ck_every]
@@ -278,9 +285,9 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             sim.advance(stretch)
         };
         if let Err(e) = stepped {
-            let _ = write_spheres(&sim, &out.join("spheres_failed.vtu"));
+            let _ = write_spheres(&sim, &out.join("spheres_failed.vtu"), format);
             let _ = block_out.write(&sim, &out);
-            flow::write_failed(&sim, &out);
+            flow::write_failed(&sim, &out, format);
             if let Some(p) = &progress {
                 p.abandon();
             }
@@ -292,6 +299,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             );
         }
         k += stretch;
+        reference.after_step(&mut sim.rigid, sim.time);
         record_probes(&sim, &mut probes).context(PROBES)?;
         let (n, t) = (sim.step, sim.time);
         if csv_every.due(t, n) {
@@ -299,11 +307,11 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         }
         let frame = vtk_every.due(t, n);
         if frame && particles {
-            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
+            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd, format)?;
             block_out.write(&sim, &out).context(BLOCKS)?;
         }
         if let Some(f) = &mut flow_out {
-            f.after_step(&sim, frame)?;
+            f.after_step(&sim)?;
         }
         if ck_every.due(t, n) {
             save(&sim, &fingerprint, &ck_path)?;
@@ -323,14 +331,13 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     // An interrupted run adds no closing frame or row: its restart writes them where an
     // uninterrupted run would.
     if interrupted_by.is_none() {
-        if !vtk_every.fired_at(sim.step) {
-            if particles {
-                snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd)?;
-                block_out.write(&sim, &out).context(BLOCKS)?;
-            }
-            if let Some(f) = &mut flow_out {
-                f.finish(&sim)?;
-            }
+        if !vtk_every.fired_at(sim.step) && particles {
+            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd, format)?;
+            block_out.write(&sim, &out).context(BLOCKS)?;
+        }
+        // The flow keeps its own schedule (`flow_interval`).
+        if let Some(f) = &mut flow_out {
+            f.finish(&sim)?;
         }
         if !csv_every.fired_at(sim.step) {
             series.row(&series_row(&sim)).context(SERIES)?;
@@ -497,10 +504,16 @@ fn record_probes(sim: &Simulation, probes: &mut [(u32, CsvSeries)]) -> std::io::
 }
 
 /// The block files of a run (`io::blocks`); nothing when the scenario has no blocks.
-struct BlockOutput(Option<(PvdSeries, CsvSeries)>);
+struct BlockOutput(Option<(PvdSeries, CsvSeries, Format)>);
 
 impl BlockOutput {
-    fn open(sim: &Simulation, out: &Path, resuming: bool, t0: f64) -> std::io::Result<Self> {
+    fn open(
+        sim: &Simulation,
+        out: &Path,
+        resuming: bool,
+        t0: f64,
+        format: Format,
+    ) -> std::io::Result<Self> {
         if sim.rigid.is_empty() {
             return Ok(BlockOutput(None));
         }
@@ -513,22 +526,23 @@ impl BlockOutput {
         Ok(BlockOutput(Some((
             open_pvd(&out.join("blocks.pvd"), resuming, t0)?,
             csv,
+            format,
         ))))
     }
 
     fn write(&mut self, sim: &Simulation, out: &Path) -> std::io::Result<()> {
-        let Some((pvd, csv)) = &mut self.0 else {
+        let Some((pvd, csv, format)) = &mut self.0 else {
             return Ok(());
         };
         let name = format!("blocks_{:06}.vtu", pvd.entries().len());
-        write_block_points(&sim.rigid, &out.join(&name))?;
+        write_block_points(&sim.rigid, &out.join(&name), *format)?;
         pvd.add(sim.time, &name, 0)?;
         block_rows(&sim.rigid, sim.time, csv)?;
         write_breakages(&sim.rigid, &out.join("breakages.csv"))
     }
 }
 
-fn write_spheres(sim: &Simulation, path: &Path) -> std::io::Result<()> {
+fn write_spheres(sim: &Simulation, path: &Path, format: Format) -> std::io::Result<()> {
     let s = &sim.dem.spheres;
     let body: Vec<i64> = s
         .body
@@ -550,6 +564,7 @@ fn write_spheres(sim: &Simulation, path: &Path) -> std::io::Result<()> {
             Array::ints("material", &material),
             Array::ints("body", &body),
         ],
+        format,
     )
 }
 
@@ -558,10 +573,11 @@ fn snapshot(
     out: &Path,
     spheres: &mut PvdSeries,
     walls: &mut PvdSeries,
+    format: Format,
 ) -> anyhow::Result<()> {
     let k = spheres.entries().len();
     let name = format!("spheres_{k:06}.vtu");
-    write_spheres(sim, &out.join(&name)).context("cannot write the spheres' frame")?;
+    write_spheres(sim, &out.join(&name), format).context("cannot write the spheres' frame")?;
     spheres
         .add(sim.time, &name, 0)
         .context("cannot update the spheres' series")?;
@@ -570,8 +586,14 @@ fn snapshot(
         let (v, tri) = wall.surface(sim.time, d.min, d.max);
         let name = format!("walls_{k:06}_{w}.vtp");
         let id = vec![w as i64; tri.len()];
-        write_surface(&out.join(&name), &v, &tri, &[Array::ints("wall", &id)])
-            .context("cannot write a wall's frame")?;
+        write_surface(
+            &out.join(&name),
+            &v,
+            &tri,
+            &[Array::ints("wall", &id)],
+            format,
+        )
+        .context("cannot write a wall's frame")?;
         walls
             .add(sim.time, &name, w)
             .context("cannot update the walls' series")?;

@@ -101,7 +101,8 @@ pub fn run_validation_cases(
     if let Some(name) = only {
         anyhow::ensure!(
             CASES.contains(&name),
-            "unknown validation case `{name}`; the cases are {CASES:?}"
+            "unknown validation case `{name}`; the cases are {}",
+            CASES.join(", ")
         );
     }
     let run = |name: &str| only.is_none_or(|o| o == name);
@@ -257,7 +258,11 @@ fn sphere_drag_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Resu
             log_y: false,
         },
         &[
-            Series::new("riprap (resolved coupling)", &measured, LineStyle::Markers),
+            Series::new(
+                "riprap (resolved coupling)",
+                &measured,
+                LineStyle::Highlight,
+            ),
             Series::new(
                 "standard curve, Clift, Grace & Weber 1978",
                 &curve,

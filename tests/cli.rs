@@ -454,7 +454,7 @@ fn check_prints_the_memory_estimate_without_building_the_flow_grid() {
     let stdout = text(&out.stdout);
     assert!(out.status.success(), "{stdout}{}", text(&out.stderr));
     assert!(
-        stdout.contains("memory estimate: 1.9 GB") && stdout.contains("8000000 fluid cells"),
+        stdout.contains("memory estimate: 1.90 GB") && stdout.contains("8000000 fluid cells"),
         "{stdout}"
     );
     let _ = std::fs::remove_dir_all(&dir);

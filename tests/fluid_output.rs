@@ -6,7 +6,7 @@
 use glam::DVec3;
 use riprap::fluid::operators::cell_vorticity;
 use riprap::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
-use riprap::io::vtk::{write_image, Array, Values};
+use riprap::io::vtk::{write_image, Array, Format, Values};
 
 #[test]
 fn cell_fields_write_as_a_vtk_image() {
@@ -59,11 +59,17 @@ fn cell_fields_write_as_a_vtk_image() {
                 values: Values::Scalars(&f.divergence),
             },
         ],
+        Format::default(),
     )
     .unwrap();
     let bytes = std::fs::read(&path).unwrap();
     let head = String::from_utf8_lossy(&bytes[..bytes.len().min(2000)]);
     assert!(head.contains("ImageData") && head.contains("velocity_m_s"));
+    assert!(
+        head.contains(r#"type="Float32" Name="pressure_Pa""#),
+        "{head}"
+    );
+    assert!(head.contains(r#"compressor="vtkZLibDataCompressor""#));
     assert!(head.contains(r#"WholeExtent="0 8 0 4 0 6""#));
     std::fs::remove_dir_all(&dir).unwrap();
 }

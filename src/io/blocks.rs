@@ -2,11 +2,14 @@
 //! damage counting, and the log of broken links.
 //!
 //! * `blocks_NNNNNN.vtu` (series `blocks.pvd`): one point per block at its centre, with id,
-//!   template, mass, velocity, angular velocity, displacement and rotation since placement, and
-//!   the three body axes (for oriented glyphs). The member spheres are in `spheres_*.vtu`,
-//!   whose `body` array names their block (−1: a free sphere).
-//! * `blocks.csv`: per output time and block, the centre, the displacement from the start and the
-//!   rotation angle from the start: what armour-damage counting (displaced units) needs.
+//!   template, mass, velocity, angular velocity, displacement and rotation since the reference
+//!   (below), and the three body axes (for oriented glyphs). The member spheres are in
+//!   `spheres_*.vtu`, whose `body` array names their block (−1: a free sphere).
+//! * `blocks.csv`: per output time and block, the centre, the displacement and the rotation
+//!   angle since the reference: what armour-damage counting (displaced units) needs.
+//!
+//! The reference is the placement, or the first step at `[output] displacement_reference_time`
+//! (e.g. the end of a settling phase), when [`DisplacementReference`] restarts the counts.
 //! * `breakages.csv`: time, kind, index and place of every link that broke.
 
 use std::fmt::Write as _;
@@ -16,7 +19,7 @@ use crate::math::Vec3;
 use crate::rigid::bodies::{LinkKind, RigidBodies};
 
 use super::csv::CsvSeries;
-use super::vtk::{write_points, Array};
+use super::vtk::{write_points, Array, Format};
 
 /// Columns of `blocks.csv`.
 pub const BLOCK_COLUMNS: [&str; 11] = [
@@ -33,8 +36,42 @@ pub const BLOCK_COLUMNS: [&str; 11] = [
     "rotation_angle",
 ];
 
+/// When block displacements and rotations start to count: at the first step that reaches the
+/// reference time, every block's displacement is set to zero and its rotation is measured from
+/// its orientation then. Both live in the blocks' state, so a checkpoint taken after the
+/// reference carries the new origin and a restart continues bit for bit; the motion itself is
+/// untouched.
+#[derive(Clone, Debug)]
+pub struct DisplacementReference(Option<f64>);
+
+impl DisplacementReference {
+    /// For a run (re)started at `t0` [s] with blocks `r` and the reference `time` [s]: none
+    /// pending without blocks, or when `time` is not after `t0` (at the start of a fresh run
+    /// the counts are zero anyway; a restarted run's checkpoint already holds them).
+    pub fn new(time: Option<f64>, t0: f64, r: &RigidBodies) -> Self {
+        DisplacementReference(time.filter(|&t| t > t0 && !r.blocks.is_empty()))
+    }
+
+    /// True until the reference is reached: the steps must then be taken one by one, so that
+    /// the reference falls on the same step however the run is cut into stretches.
+    pub fn pending(&self) -> bool {
+        self.0.is_some()
+    }
+
+    /// After the step that reached time `t` [s]: restarts the counts when it reached the
+    /// reference.
+    pub fn after_step(&mut self, r: &mut RigidBodies, t: f64) {
+        if self.0.is_some_and(|reference| t >= reference) {
+            let b = &mut r.blocks;
+            b.displacement.fill(Vec3::ZERO);
+            b.initial_orientation.clone_from(&b.orientation);
+            self.0 = None;
+        }
+    }
+}
+
 /// Writes the block centres as points with their state (module doc).
-pub fn write_block_points(r: &RigidBodies, path: &Path) -> std::io::Result<()> {
+pub fn write_block_points(r: &RigidBodies, path: &Path, format: Format) -> std::io::Result<()> {
     let b = &r.blocks;
     let id: Vec<i64> = b.id.iter().map(|&i| i as i64).collect();
     let template: Vec<i64> = b.template.iter().map(|&t| t as i64).collect();
@@ -56,6 +93,7 @@ pub fn write_block_points(r: &RigidBodies, path: &Path) -> std::io::Result<()> {
             Array::vectors("axis_2", &a2),
             Array::vectors("axis_3", &a3),
         ],
+        format,
     )
 }
 

@@ -53,6 +53,9 @@ pub enum LineStyle {
     Markers,
     /// A dashed line (typically a reference or analytical solution).
     Dashed,
+    /// A large filled circle ringed in black at each point, drawn over every other series:
+    /// the result a plot is about (e.g. riprap's points on a reference curve).
+    Highlight,
 }
 
 /// Titles and scaling of a plot.
@@ -304,7 +307,7 @@ where
         let pts = s.points.iter().filter(inside).copied();
         let line = move |(x, y): (i32, i32)| PathElement::new(vec![(x, y), (x + 20, y)], style);
         match s.style {
-            LineStyle::Markers => {
+            LineStyle::Markers | LineStyle::Highlight => {
                 chart
                     .draw_series(pts.map(|p| Circle::new(p, 6, color.filled())))
                     .map_err(drawing)?
@@ -399,7 +402,7 @@ where
     // values are clipped to +-1e300 (and to >= 1e-300 on a log axis).
     let x = padded(min_max(pts().map(|p| p.0.clamp(-LIMIT, LIMIT))), 0.02);
     if axes.log_y {
-        let ys = min_max(pts().map(|p| p.1.clamp(1.0 / LIMIT, LIMIT).log10()));
+        let ys = log_span(pts().map(|p| p.1));
         // Pad in decades so the padding looks the same at every scale.
         let mut y = padded(Some(ys.unwrap_or((0.0, 1.0))), 0.05);
         // Its tick search also needs the ratio end/start to stay finite.
@@ -454,11 +457,10 @@ where
         .draw()
         .map_err(drawing)?;
 
-    for (i, s) in series.iter().enumerate() {
-        let c = PALETTE[i % PALETTE.len()];
-        let color = rgb(c);
-        let style = color.stroke_width(2);
-        if series.len() > 1 {
+    let color = |i: usize| rgb(PALETTE[i % PALETTE.len()]);
+    if series.len() > 1 {
+        for (i, s) in series.iter().enumerate() {
+            let (color, style) = (color(i), color(i).stroke_width(2));
             // An empty series carries the legend entry, drawn once however
             // many pieces the data is drawn in below.
             let anno = chart.draw_series(LineSeries::new(std::iter::empty(), style));
@@ -467,6 +469,11 @@ where
                 LineStyle::Markers => {
                     anno.legend(move |(x, y)| Circle::new((x + 10, y), 4, color.filled()))
                 }
+                LineStyle::Highlight => anno.legend(move |(x, y)| {
+                    EmptyElement::at((x + 10, y))
+                        + Circle::new((0, 0), 8, BLACK.filled())
+                        + Circle::new((0, 0), 6, color.filled())
+                }),
                 LineStyle::Line => {
                     anno.legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style))
                 }
@@ -477,6 +484,15 @@ where
                 }),
             };
         }
+    }
+    // Highlighted series last, so that no other covers them.
+    let top = |i: &usize| series[*i].style == LineStyle::Highlight;
+    let order = (0..series.len())
+        .filter(|i| !top(i))
+        .chain((0..series.len()).filter(top));
+    for i in order {
+        let s = &series[i];
+        let (color, style) = (color(i), color(i).stroke_width(2));
         // Runs of shown points; a skipped point breaks the line.
         let runs = s.points.split(|p| !shown(p)).filter(|r| !r.is_empty());
         for run in runs {
@@ -485,6 +501,11 @@ where
                 LineStyle::Markers => {
                     chart.draw_series(pts.map(|p| Circle::new(p, 4, color.filled())))
                 }
+                LineStyle::Highlight => chart.draw_series(pts.map(|p| {
+                    EmptyElement::at(p)
+                        + Circle::new((0, 0), 8, BLACK.filled())
+                        + Circle::new((0, 0), 6, color.filled())
+                })),
                 LineStyle::Line => chart.draw_series(LineSeries::new(pts, style)),
                 LineStyle::Dashed => chart.draw_series(DashedLineSeries::new(pts, 12, 7, style)),
             }
@@ -495,6 +516,19 @@ where
         draw_legend(&mut chart)?;
     }
     Ok(())
+}
+
+/// Decades a log axis spans at most, below its largest value: a kinetic energy that decays to
+/// 1e-67 J would otherwise squeeze the motion worth seeing into the top of the plot.
+const LOG_DECADES: f64 = 8.0;
+
+/// The (min, max) of log10 y over positive `ys` on a log axis, the min raised to at most
+/// [`LOG_DECADES`] below the max (what lies below is left out); subnormal values are ignored.
+fn log_span(ys: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    let logs = ys
+        .filter(|&y| y >= f64::MIN_POSITIVE)
+        .map(|y| y.clamp(1.0 / LIMIT, LIMIT).log10());
+    min_max(logs).map(|(lo, hi)| (lo.max(hi - LOG_DECADES), hi))
 }
 
 /// The (min, max) of finite values, or None when there are none.
@@ -571,7 +605,7 @@ fn trim(s: &str) -> String {
 mod tests {
     use super::*;
     use crate::io::test_dir;
-    use LineStyle::{Dashed, Line, Markers};
+    use LineStyle::{Dashed, Highlight, Line, Markers};
 
     const AXES: Axes = Axes {
         title: "Wave gauge 3",
@@ -694,6 +728,63 @@ mod tests {
         assert!(svg.contains("Wave gauge 3 (colour"), "title with the range");
         assert_eq!(ramp(0.0), RGBColor(255, 255, 255));
         assert_eq!(ramp(1.0), RGBColor(90, 0, 0));
+    }
+
+    /// The tetrapod example's energy plot had a log axis down to 1e-67 J (a kinetic energy
+    /// decaying to rest): the axis now spans at most eight decades below the largest value, and
+    /// subnormal values do not widen it.
+    #[test]
+    fn a_log_axis_spans_at_most_eight_decades_below_its_largest_value() {
+        let energy = [3.0, 1e-3, 1e-67, 0.0, 5e-324];
+        assert_eq!(
+            log_span(energy.into_iter()),
+            Some((3f64.log10() - 8.0, 3f64.log10()))
+        );
+        assert_eq!(log_span([1e-3, 1e-5].into_iter()), Some((-5.0, -3.0)));
+        assert_eq!(log_span([0.0, -1.0, 1e-310].into_iter()), None);
+        let dir = test_dir("plot_log_decay");
+        let decay: Vec<_> = (0..200).map(|i| (i as f64, 10f64.powi(-i / 3))).collect();
+        png(
+            &dir,
+            "energy.png",
+            &LOG,
+            &[Series::new("kinetic", &decay, Line)],
+        );
+    }
+
+    /// In the quick sphere-drag plot riprap's point hid under the reference table's marker at
+    /// the same place: a highlighted series is drawn over all the others, in a larger marker
+    /// ringed in black, whatever its place in the list.
+    #[test]
+    fn riprap_points_are_drawn_over_reference_markers() {
+        let dir = test_dir("plot_highlight");
+        let curve = [(0.0, 1.0), (2.0, 0.0)];
+        let point = [(1.0, 0.5)];
+        let series = [
+            Series::new("riprap", &point, Highlight),
+            Series::new("reference table", &point, Markers),
+            Series::new("standard curve", &curve, Line),
+        ];
+        let path = dir.join("drag.svg");
+        line_plot(&path, &AXES, &series).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        // The data's circles, then the legend's three (ring and disc, reference marker): the
+        // last of the data are riprap's black ring and disc in its colour, over the reference.
+        let circles: Vec<&str> = svg.lines().filter(|l| l.contains("<circle")).collect();
+        let data = &circles[..circles.len() - 3];
+        let [reference, ring, disc] = data else {
+            panic!("{circles:?}")
+        };
+        assert!(reference.contains("#FF7F0E") && reference.contains(r#"r="4""#));
+        assert!(
+            ring.contains(r#"r="8""#) && ring.contains("#000000"),
+            "{ring}"
+        );
+        assert!(
+            disc.contains(r#"r="6""#) && disc.contains("#1F77B4"),
+            "{disc}"
+        );
+        png(&dir, "drag.png", &AXES, &series);
     }
 
     #[test]

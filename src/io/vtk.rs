@@ -2,15 +2,65 @@
 //! grids (.vti).
 //!
 //! All files use "raw appended" encoding: a small XML header followed by one
-//! binary block of little-endian data, each array prefixed by its byte count
-//! as a UInt64. That is the most compact form ParaView reads without a
-//! compression library, and it stores every f64 exactly. Each file is written
-//! atomically, so ParaView never loads a half-written frame.
+//! binary block of little-endian data, each array either prefixed by its byte
+//! count or zlib-compressed in blocks ([`Format`], `appended`). Field data is
+//! Float32 or Float64 as asked; point coordinates are always Float64. Each
+//! file is written atomically, so ParaView never loads a half-written frame.
+
+mod appended;
 
 use super::{invalid_input, write_replacing, xml_escape};
 use glam::DVec3;
+use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
 use std::path::Path;
+
+/// Whether the binary data is compressed (`[output] compression`).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Compression {
+    /// zlib in 32 KiB blocks, as VTK's `vtkZLibDataCompressor` (ParaView reads it).
+    #[default]
+    Zlib,
+    /// Plain bytes: larger, but readable by simple parsers.
+    None,
+}
+
+/// The precision of the floating-point field data (`[output] precision`).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Precision {
+    /// 4 bytes a value, 7 significant digits: plenty for viewing and plotting.
+    #[default]
+    Float32,
+    /// 8 bytes a value, every f64 exactly.
+    Float64,
+}
+
+/// How a VTK file stores its binary data.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Format {
+    /// Compressed or not.
+    pub compression: Compression,
+    /// Precision of the float arrays other than the point coordinates.
+    pub precision: Precision,
+}
+
+impl Format {
+    /// Uncompressed Float64: every value exactly, as plain bytes.
+    pub const EXACT: Format = Format {
+        compression: Compression::None,
+        precision: Precision::Float64,
+    };
+
+    /// Bytes of one float of field data.
+    pub fn float_bytes(self) -> usize {
+        match self.precision {
+            Precision::Float32 => 4,
+            Precision::Float64 => 8,
+        }
+    }
+}
 
 /// The values of one data array: one entry per point or per cell.
 #[derive(Debug, Clone, Copy)]
@@ -85,10 +135,15 @@ const VTK_VERTEX: u8 = 1;
 ///
 /// Errors with `InvalidInput`, naming the array, when an array's length is not
 /// `positions.len()`. An empty `positions` gives a valid file with no points.
-pub fn write_points(path: &Path, positions: &[DVec3], point_data: &[Array]) -> std::io::Result<()> {
+pub fn write_points(
+    path: &Path,
+    positions: &[DVec3],
+    point_data: &[Array],
+    format: Format,
+) -> std::io::Result<()> {
     let n = positions.len();
     check_lengths(point_data, n, "points")?;
-    let mut f = VtkFile::new("UnstructuredGrid", "");
+    let mut f = VtkFile::new("UnstructuredGrid", "", format);
     let _ = writeln!(
         f.xml,
         r#"    <Piece NumberOfPoints="{n}" NumberOfCells="{n}">"#
@@ -97,10 +152,9 @@ pub fn write_points(path: &Path, positions: &[DVec3], point_data: &[Array]) -> s
     f.xml.push_str("      <CellData>\n      </CellData>\n");
     f.points(positions);
     f.xml.push_str("      <Cells>\n");
-    f.array_i64("connectivity", 1, n, 0..n as i64);
-    f.array_i64("offsets", 1, n, 1..=n as i64);
-    f.begin_array("UInt8", Some("types"), 1, n);
-    f.data.resize(f.data.len() + n, VTK_VERTEX);
+    f.array_i64("connectivity", 1, 0..n as i64);
+    f.array_i64("offsets", 1, 1..=n as i64);
+    f.array("UInt8", Some("types"), 1, |b| b.resize(n, VTK_VERTEX));
     f.xml.push_str("      </Cells>\n    </Piece>\n");
     f.finish(path)
 }
@@ -117,6 +171,7 @@ pub fn write_surface(
     vertices: &[DVec3],
     triangles: &[[u32; 3]],
     cell_data: &[Array],
+    format: Format,
 ) -> std::io::Result<()> {
     check_lengths(cell_data, triangles.len(), "triangles")?;
     if let Some((i, t)) = triangles
@@ -130,7 +185,7 @@ pub fn write_surface(
         )));
     }
     let (nv, nt) = (vertices.len(), triangles.len());
-    let mut f = VtkFile::new("PolyData", "");
+    let mut f = VtkFile::new("PolyData", "", format);
     let _ = writeln!(
         f.xml,
         r#"    <Piece NumberOfPoints="{nv}" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="{nt}">"#
@@ -140,8 +195,8 @@ pub fn write_surface(
     f.points(vertices);
     f.xml.push_str("      <Polys>\n");
     let conn = triangles.iter().flat_map(|t| t.map(i64::from));
-    f.array_i64("connectivity", 1, 3 * nt, conn);
-    f.array_i64("offsets", 1, nt, (1..=nt as i64).map(|i| 3 * i));
+    f.array_i64("connectivity", 1, conn);
+    f.array_i64("offsets", 1, (1..=nt as i64).map(|i| 3 * i));
     f.xml.push_str("      </Polys>\n    </Piece>\n");
     f.finish(path)
 }
@@ -159,6 +214,7 @@ pub fn write_image(
     origin: DVec3,
     spacing: DVec3,
     cell_data: &[Array],
+    format: Format,
 ) -> std::io::Result<()> {
     if !origin.is_finite() || !spacing.is_finite() {
         return Err(invalid_input(format!(
@@ -176,7 +232,7 @@ pub fn write_image(
         r#"WholeExtent="{extent}" Origin="{} {} {}" Spacing="{} {} {}""#,
         origin.x, origin.y, origin.z, spacing.x, spacing.y, spacing.z
     );
-    let mut f = VtkFile::new("ImageData", &grid);
+    let mut f = VtkFile::new("ImageData", &grid, format);
     let _ = writeln!(f.xml, r#"    <Piece Extent="{extent}">"#);
     f.xml.push_str("      <PointData>\n      </PointData>\n");
     f.attributes("CellData", cell_data);
@@ -204,15 +260,22 @@ struct VtkFile {
     xml: String,
     data: Vec<u8>,
     kind: &'static str,
+    format: Format,
+    /// One array's bytes before they are appended (compressed or not).
+    raw: Vec<u8>,
 }
 
 impl VtkFile {
     /// Starts a file of dataset type `kind`; `attrs` go on the dataset element.
-    fn new(kind: &'static str, attrs: &str) -> Self {
+    fn new(kind: &'static str, attrs: &str, format: Format) -> Self {
         let mut xml = String::from("<?xml version=\"1.0\"?>\n");
+        let compressor = match format.compression {
+            Compression::Zlib => r#" compressor="vtkZLibDataCompressor""#,
+            Compression::None => "",
+        };
         let _ = writeln!(
             xml,
-            r#"<VTKFile type="{kind}" version="1.0" byte_order="LittleEndian" header_type="UInt64">"#
+            r#"<VTKFile type="{kind}" version="1.0" byte_order="LittleEndian" header_type="UInt64"{compressor}>"#
         );
         let sep = if attrs.is_empty() { "" } else { " " };
         let _ = writeln!(xml, "  <{kind}{sep}{attrs}>");
@@ -220,16 +283,20 @@ impl VtkFile {
             xml,
             data: Vec::new(),
             kind,
+            format,
+            raw: Vec::new(),
         }
     }
 
-    /// Declares a DataArray at the current end of the binary block and writes
-    /// its UInt64 byte-count header; the caller appends the values next.
-    fn begin_array(&mut self, ty: &str, name: Option<&str>, comps: usize, tuples: usize) {
-        let width = match ty {
-            "UInt8" => 1,
-            _ => 8,
-        };
+    /// Declares a DataArray of VTK type `ty` at the current end of the binary
+    /// block and appends the bytes that `fill` writes, in the file's format.
+    fn array(
+        &mut self,
+        ty: &str,
+        name: Option<&str>,
+        comps: usize,
+        fill: impl FnOnce(&mut Vec<u8>),
+    ) {
         let name = name
             .map(|n| format!(r#" Name="{}""#, xml_escape(n)))
             .unwrap_or_default();
@@ -238,49 +305,60 @@ impl VtkFile {
             r#"        <DataArray type="{ty}"{name} NumberOfComponents="{comps}" format="appended" offset="{}"/>"#,
             self.data.len()
         );
-        let bytes = (tuples * comps * width) as u64;
-        self.data.extend_from_slice(&bytes.to_le_bytes());
-        self.data.reserve(bytes as usize);
+        self.raw.clear();
+        fill(&mut self.raw);
+        match self.format.compression {
+            Compression::None => appended::append_raw(&self.raw, &mut self.data),
+            Compression::Zlib => appended::append_zlib(&self.raw, &mut self.data),
+        }
     }
 
-    fn array_f64(
+    /// A float array, Float32 or Float64 by `precision`.
+    fn array_float(
         &mut self,
         name: Option<&str>,
         comps: usize,
-        tuples: usize,
+        precision: Precision,
         v: impl Iterator<Item = f64>,
     ) {
-        self.begin_array("Float64", name, comps, tuples);
-        v.for_each(|x| self.data.extend_from_slice(&x.to_le_bytes()));
+        match precision {
+            Precision::Float64 => self.array("Float64", name, comps, |b| {
+                v.for_each(|x| b.extend_from_slice(&x.to_le_bytes()))
+            }),
+            // Rounded to nearest: the closest Float32 to each value.
+            Precision::Float32 => self.array("Float32", name, comps, |b| {
+                v.for_each(|x| b.extend_from_slice(&(x as f32).to_le_bytes()))
+            }),
+        }
     }
 
-    fn array_i64(&mut self, name: &str, comps: usize, tuples: usize, v: impl Iterator<Item = i64>) {
-        self.begin_array("Int64", Some(name), comps, tuples);
-        v.for_each(|x| self.data.extend_from_slice(&x.to_le_bytes()));
+    fn array_i64(&mut self, name: &str, comps: usize, v: impl Iterator<Item = i64>) {
+        self.array("Int64", Some(name), comps, |b| {
+            v.for_each(|x| b.extend_from_slice(&x.to_le_bytes()))
+        });
     }
 
     /// Writes a `<PointData>` or `<CellData>` section holding `arrays`.
     fn attributes(&mut self, section: &str, arrays: &[Array]) {
         let _ = writeln!(self.xml, "      <{section}>");
+        let p = self.format.precision;
         for a in arrays {
             let name = Some(a.name);
             match a.values {
-                Values::Scalars(v) => self.array_f64(name, 1, v.len(), v.iter().copied()),
-                Values::Vectors(v) => self.array_f64(name, 3, v.len(), flatten(v)),
-                Values::Ints(v) => {
-                    self.begin_array("Int64", name, 1, v.len());
-                    v.iter()
-                        .for_each(|x| self.data.extend_from_slice(&x.to_le_bytes()));
-                }
+                Values::Scalars(v) => self.array_float(name, 1, p, v.iter().copied()),
+                Values::Vectors(v) => self.array_float(name, 3, p, flatten(v)),
+                Values::Ints(v) => self.array_i64(a.name, 1, v.iter().copied()),
             }
         }
         let _ = writeln!(self.xml, "      </{section}>");
     }
 
-    /// Writes the `<Points>` section.
+    /// Writes the `<Points>` section, always in Float64: positions keep every
+    /// digit (a 1e-7 relative error is 10 µm at 100 m, the size of contact
+    /// overlaps), and they are a small part of a file.
     fn points(&mut self, positions: &[DVec3]) {
         self.xml.push_str("      <Points>\n");
-        self.array_f64(Some("Points"), 3, positions.len(), flatten(positions));
+        self.array_float(Some("Points"), 3, Precision::Float64, flatten(positions));
         self.xml.push_str("      </Points>\n");
     }
 
@@ -318,6 +396,7 @@ mod tests {
     }
 
     impl Parsed {
+        /// Reads a file of either compression, as a VTK reader does.
         fn read(path: &Path) -> Self {
             let bytes = std::fs::read(path).unwrap();
             let marker = b"<AppendedData encoding=\"raw\">\n   _";
@@ -326,6 +405,8 @@ mod tests {
             let data = &bytes[pos + marker.len()..];
             let header = String::from_utf8(bytes[..pos].to_vec()).unwrap();
             assert!(bytes.ends_with(b"\n  </AppendedData>\n</VTKFile>\n"));
+            assert!(header.contains(r#"header_type="UInt64""#));
+            let compressed = header.contains(r#"compressor="vtkZLibDataCompressor""#);
             check_nesting(&header);
             let mut arrays = Vec::new();
             for tag in header.split("<DataArray ").skip(1) {
@@ -335,8 +416,7 @@ mod tests {
                     attrs.insert(k.to_string(), v.trim_end_matches('"').to_string());
                 }
                 let off: usize = attrs["offset"].parse().unwrap();
-                let len = u64::from_le_bytes(data[off..off + 8].try_into().unwrap());
-                arrays.push((attrs, data[off + 8..off + 8 + len as usize].to_vec()));
+                arrays.push((attrs, appended::read(data, off, compressed)));
             }
             Parsed { header, arrays }
         }
@@ -346,6 +426,13 @@ mod tests {
             let (attrs, payload) = self.arrays.iter().find(|a| a.0["Name"] == name).unwrap();
             assert_eq!(attrs["type"], ty, "{name}");
             payload
+        }
+
+        fn f32s(&self, name: &str) -> Vec<f32> {
+            let words = self.bytes(name, "Float32").chunks_exact(4);
+            words
+                .map(|c| f32::from_le_bytes(c.try_into().unwrap()))
+                .collect()
         }
 
         fn f64s(&self, name: &str) -> Vec<f64> {
@@ -395,7 +482,7 @@ mod tests {
             Array::vectors("velocity <m/s>", &vel),
             Array::ints("id", &[7, -3]),
         ];
-        write_points(&dir.join("p.vtu"), &pos, &arrays).unwrap();
+        write_points(&dir.join("p.vtu"), &pos, &arrays, Format::EXACT).unwrap();
         let f = Parsed::read(&dir.join("p.vtu"));
         assert!(f.header.contains(r#"type="UnstructuredGrid""#));
         assert!(f.header.contains(r#"NumberOfPoints="2" NumberOfCells="2""#));
@@ -415,7 +502,7 @@ mod tests {
     fn empty_points_still_valid() {
         let dir = test_dir("vtk_empty");
         let arrays = [Array::scalars("radius", &[])];
-        write_points(&dir.join("p.vtu"), &[], &arrays).unwrap();
+        write_points(&dir.join("p.vtu"), &[], &arrays, Format::EXACT).unwrap();
         let f = Parsed::read(&dir.join("p.vtu"));
         assert!(f.header.contains(r#"NumberOfPoints="0""#));
         assert_eq!(f.arrays.len(), 5);
@@ -424,19 +511,20 @@ mod tests {
 
     #[test]
     fn bad_input_is_invalid_input_and_writes_nothing() {
+        const F: Format = Format::EXACT;
         let dir = test_dir("vtk_bad");
         let one = [Array::scalars("radius", &[1.0])];
-        let err = write_points(&dir.join("p.vtu"), &[DVec3::ZERO; 2], &one).unwrap_err();
+        let err = write_points(&dir.join("p.vtu"), &[DVec3::ZERO; 2], &one, F).unwrap_err();
         assert_eq!(err.kind(), InvalidInput);
         assert!(err.to_string().contains("radius"), "{err}");
-        let bad_tri = write_surface(&dir.join("s.vtp"), &[DVec3::ZERO; 3], &[[0, 1, 3]], &[]);
+        let bad_tri = write_surface(&dir.join("s.vtp"), &[DVec3::ZERO; 3], &[[0, 1, 3]], &[], F);
         assert_eq!(bad_tri.unwrap_err().kind(), InvalidInput);
         let (o, h) = (DVec3::ZERO, DVec3::ONE);
-        let err = write_image(&dir.join("g.vti"), [2, 2, 2], o, h, &one).unwrap_err();
+        let err = write_image(&dir.join("g.vti"), [2, 2, 2], o, h, &one, F).unwrap_err();
         assert!(err.to_string().contains("radius"), "{err}");
-        let huge = write_image(&dir.join("g.vti"), [usize::MAX, 2, 1], o, h, &[]);
+        let huge = write_image(&dir.join("g.vti"), [usize::MAX, 2, 1], o, h, &[], F);
         assert_eq!(huge.unwrap_err().kind(), InvalidInput);
-        let nan = write_image(&dir.join("g.vti"), [1, 1, 1], o, h * f64::NAN, &[]);
+        let nan = write_image(&dir.join("g.vti"), [1, 1, 1], o, h * f64::NAN, &[], F);
         assert_eq!(nan.unwrap_err().kind(), InvalidInput);
         assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
     }
@@ -450,7 +538,8 @@ mod tests {
             Array::vectors("force", &force),
             Array::scalars("wear", &[0.5, 1.5]),
         ];
-        write_surface(&dir.join("s.vtp"), &v, &[[0, 1, 2], [1, 3, 2]], &arrays).unwrap();
+        let tri = [[0, 1, 2], [1, 3, 2]];
+        write_surface(&dir.join("s.vtp"), &v, &tri, &arrays, Format::EXACT).unwrap();
         let f = Parsed::read(&dir.join("s.vtp"));
         assert!(f.header.contains(r#"NumberOfPoints="4""#));
         assert!(f.header.contains(r#"NumberOfPolys="2""#));
@@ -468,12 +557,93 @@ mod tests {
         let u: Vec<DVec3> = (0..6).map(|i| DVec3::splat(i as f64)).collect();
         let arrays = [Array::scalars("p", &p), Array::vectors("u", &u)];
         let (origin, spacing) = (DVec3::new(-1.0, 0.0, 0.5), DVec3::new(0.1, 0.2, 0.3));
-        write_image(&dir.join("g.vti"), [3, 2, 1], origin, spacing, &arrays).unwrap();
+        write_image(
+            &dir.join("g.vti"),
+            [3, 2, 1],
+            origin,
+            spacing,
+            &arrays,
+            Format::EXACT,
+        )
+        .unwrap();
         let f = Parsed::read(&dir.join("g.vti"));
         let grid = r#"WholeExtent="0 3 0 2 0 1" Origin="-1 0 0.5" Spacing="0.1 0.2 0.3""#;
         assert!(f.header.contains(grid), "{}", f.header);
         assert!(f.header.contains(r#"<Piece Extent="0 3 0 2 0 1">"#));
         assert_eq!(f.f64s("p"), p);
         assert_eq!(f.f64s("u"), flat(&u));
+    }
+
+    /// The default-run output of 292 MB: flow images and sphere files now default to zlib and
+    /// Float32 field data; every kind of file reads back to the values written (Float32: the
+    /// nearest f32), positions exactly, in every format.
+    #[test]
+    fn compressed_float32_output_reads_back_to_the_values_written() {
+        assert_eq!(
+            Format::default(),
+            Format {
+                compression: Compression::Zlib,
+                precision: Precision::Float32
+            }
+        );
+        let dir = test_dir("vtk_formats");
+        // Over two zlib blocks of vectors, so the block header and the partial block count.
+        let n = 1500;
+        let pos: Vec<DVec3> = (0..n)
+            .map(|i| DVec3::new(i as f64 / 7.0, (i as f64).sin(), 1e3 + 1e-9 * i as f64))
+            .collect();
+        let vel: Vec<DVec3> = pos.iter().map(|p| *p * 0.1 - DVec3::Y).collect();
+        let d: Vec<f64> = (0..n).map(|i| 0.01 + 1e-5 * i as f64).collect();
+        let ids: Vec<i64> = (0..n as i64).map(|i| 3 * i - 7).collect();
+        let tri: Vec<[u32; 3]> = (0..n as u32 - 2).map(|i| [i, i + 1, i + 2]).collect();
+        let wear: Vec<f64> = (0..tri.len()).map(|i| i as f64 * 0.25).collect();
+        for compression in [Compression::Zlib, Compression::None] {
+            for precision in [Precision::Float32, Precision::Float64] {
+                let fmt = Format {
+                    compression,
+                    precision,
+                };
+                let arrays = [
+                    Array::ints("id", &ids),
+                    Array::scalars("diameter", &d),
+                    Array::vectors("velocity", &vel),
+                ];
+                write_points(&dir.join("p.vtu"), &pos, &arrays, fmt).unwrap();
+                let wall = [Array::scalars("wear", &wear)];
+                write_surface(&dir.join("s.vtp"), &pos, &tri, &wall, fmt).unwrap();
+                let (o, h) = (DVec3::new(-1.0, 0.0, 0.5), DVec3::splat(0.1));
+                write_image(&dir.join("g.vti"), [10, 15, 10], o, h, &arrays[1..], fmt).unwrap();
+                let (p, s, g) = (
+                    Parsed::read(&dir.join("p.vtu")),
+                    Parsed::read(&dir.join("s.vtp")),
+                    Parsed::read(&dir.join("g.vti")),
+                );
+                let zlib = compression == Compression::Zlib;
+                for f in [&p, &s, &g] {
+                    assert_eq!(f.header.contains("vtkZLibDataCompressor"), zlib);
+                }
+                assert_eq!(p.f64s("Points"), flat(&pos));
+                assert_eq!(s.f64s("Points"), flat(&pos));
+                assert_eq!(p.i64s("id"), ids);
+                assert_eq!(p.i64s("offsets"), (1..=n as i64).collect::<Vec<_>>());
+                assert_eq!(p.bytes("types", "UInt8"), vec![VTK_VERTEX; n]);
+                assert_eq!(s.i64s("connectivity").len(), 3 * tri.len());
+                let f32s = |v: &[f64]| v.iter().map(|&x| x as f32).collect::<Vec<_>>();
+                for f in [&p, &g] {
+                    if precision == Precision::Float32 {
+                        assert_eq!(f.f32s("diameter"), f32s(&d));
+                        assert_eq!(f.f32s("velocity"), f32s(&flat(&vel)));
+                    } else {
+                        assert_eq!(f.f64s("diameter"), d);
+                        assert_eq!(f.f64s("velocity"), flat(&vel));
+                    }
+                }
+                if precision == Precision::Float32 {
+                    assert_eq!(s.f32s("wear"), f32s(&wear));
+                } else {
+                    assert_eq!(s.f64s("wear"), wear);
+                }
+            }
+        }
     }
 }

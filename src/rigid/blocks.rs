@@ -137,10 +137,11 @@ pub struct Blocks {
     pub force: Vec<Vec3>,
     /// Total torque about x_g of the last evaluation [N m] (reference integrator).
     pub torque: Vec<Vec3>,
-    /// Displacement of the centre since the block was placed, summed step by step as nearest
+    /// Displacement of the centre since the block was placed (or since `[output]
+    /// displacement_reference_time`), summed step by step as nearest
     /// periodic images, so that it stays right across periodic faces [m].
     pub displacement: Vec<Vec3>,
-    /// Orientation when the block was placed [-].
+    /// Orientation when the block was placed (or at the displacement reference time) [-].
     pub initial_orientation: Vec<Quat>,
     /// Each block's range in `member_id` and `member_offset`.
     pub members: Vec<Range<u32>>,

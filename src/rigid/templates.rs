@@ -71,7 +71,7 @@ pub enum TemplateError {
     #[error("block template `{0}` has no spheres")]
     Empty(String),
     /// A sphere with a non-finite centre or a diameter that is not positive and finite.
-    #[error("block template `{name}`: sphere {index} has centre {centre:?} and diameter {diameter} (need finite, diameter > 0)")]
+    #[error("block template `{name}`: sphere {index} has centre [{}, {}, {}] and diameter {diameter} (need finite, diameter > 0)", .centre[0], .centre[1], .centre[2])]
     BadSphere {
         /// Template name.
         name: String,

@@ -20,7 +20,7 @@ use crate::fluid::{CellFields, Fluid};
 use crate::io::checkpoint::Checkpoint;
 use crate::io::csv::CsvSeries;
 use crate::io::pvd::PvdSeries;
-use crate::io::vtk::{write_image, Array};
+use crate::io::vtk::{write_image, Array, Format};
 use crate::math::Vec3;
 use crate::scenario::fluid::{SampleKind, SampleSection};
 use crate::simulation::Simulation;
@@ -92,11 +92,11 @@ pub fn check_restart(sim: &Simulation, ck: &Checkpoint, path: &Path) -> anyhow::
         ),
         (Some(f), Some(s)) => {
             if s.pressure.len() != f.grid().len() || s.velocity[0].len() != f.grid().len() {
+                let [nx, ny, nz] = f.grid().n;
                 bail!(
-                    "{}: the saved flow does not fit the scenario's grid {:?} (was the grid \
-                     changed?)",
+                    "{}: the saved flow does not fit the scenario's grid of {nx} × {ny} × {nz} \
+                     cells (was the grid changed?)",
                     path.display(),
-                    f.grid().n
                 );
             }
             Ok(())
@@ -105,7 +105,12 @@ pub fn check_restart(sim: &Simulation, ck: &Checkpoint, path: &Path) -> anyhow::
 }
 
 /// Writes the flow as a `.vti` image at `path`.
-pub fn write_flow(fluid: &Fluid, fields: &CellFields, path: &Path) -> std::io::Result<()> {
+pub fn write_flow(
+    fluid: &Fluid,
+    fields: &CellFields,
+    path: &Path,
+    format: Format,
+) -> std::io::Result<()> {
     let g = fluid.grid();
     write_image(
         path,
@@ -120,6 +125,7 @@ pub fn write_flow(fluid: &Fluid, fields: &CellFields, path: &Path) -> std::io::R
             Array::scalars("mixture_density", &fields.mixture_density),
             Array::scalars("divergence_end_of_step", &fields.divergence),
         ],
+        format,
     )
 }
 
@@ -196,16 +202,22 @@ pub struct FlowOutput {
     dir: PathBuf,
     pvd: PvdSeries,
     samples: Vec<Sample>,
+    /// When an image is due (`[output] flow_interval`).
+    images: Schedule,
+    format: Format,
 }
 
 impl FlowOutput {
     /// Opens `flow.pvd` and the sample files in `dir` (resuming them at the simulation's time
-    /// when `resuming`), and, for a fresh run, writes the state at t = 0.
+    /// when `resuming`), and, for a fresh run, writes the state at t = 0. Images follow
+    /// `interval` [s], in `format`.
     pub fn open(
         sim: &Simulation,
         sections: &[SampleSection],
         dir: &Path,
         resuming: bool,
+        interval: f64,
+        format: Format,
     ) -> anyhow::Result<Option<FlowOutput>> {
         let Some(fluid) = &sim.fluid else {
             return Ok(None);
@@ -237,10 +249,14 @@ impl FlowOutput {
                 pending: false,
             });
         }
+        let mut images = Schedule::new(interval, 0.0, true);
+        images.start(t0, sim.step);
         let mut out = FlowOutput {
             dir: dir.to_path_buf(),
             pvd,
             samples,
+            images,
+            format,
         };
         if !resuming {
             let fields = fluid.cell_fields();
@@ -252,11 +268,12 @@ impl FlowOutput {
         Ok(Some(out))
     }
 
-    /// After a step: writes the samples that are due, and a snapshot when `snapshot`.
-    pub fn after_step(&mut self, sim: &Simulation, snapshot: bool) -> anyhow::Result<()> {
+    /// After a step: writes the samples and the image that are due.
+    pub fn after_step(&mut self, sim: &Simulation) -> anyhow::Result<()> {
         let Some(fluid) = &sim.fluid else {
             return Ok(());
         };
+        let snapshot = self.images.due(sim.time, sim.step);
         let mut any = snapshot;
         for s in &mut self.samples {
             s.pending = s.schedule.due(sim.time, sim.step);
@@ -282,23 +299,25 @@ impl FlowOutput {
         };
         let name = format!("flow_{:06}.vti", self.pvd.entries().len());
         let path = self.dir.join(&name);
-        write_flow(fluid, fields, &path).context("cannot write a flow image")?;
+        write_flow(fluid, fields, &path, self.format).context("cannot write a flow image")?;
         self.pvd.add(sim.time, &name, 0)?;
         Ok(())
     }
 
-    /// Writes the final snapshot (when the schedule did not just write one).
+    /// Writes the final image, unless the schedule just wrote it.
     pub fn finish(&mut self, sim: &Simulation) -> anyhow::Result<()> {
-        if let Some(fluid) = &sim.fluid {
-            self.snapshot(sim, &fluid.cell_fields())?;
+        match &sim.fluid {
+            Some(fluid) if !self.images.fired_at(sim.step) => {
+                self.snapshot(sim, &fluid.cell_fields())
+            }
+            _ => Ok(()),
         }
-        Ok(())
     }
 }
 
 /// Writes the flow that failed to `flow_failed.vti` (best effort).
-pub fn write_failed(sim: &Simulation, dir: &Path) {
+pub fn write_failed(sim: &Simulation, dir: &Path, format: Format) {
     if let Some(f) = &sim.fluid {
-        let _ = write_flow(f, &f.cell_fields(), &dir.join("flow_failed.vti"));
+        let _ = write_flow(f, &f.cell_fields(), &dir.join("flow_failed.vti"), format);
     }
 }

@@ -6,6 +6,7 @@ use std::fmt::Write as _;
 use super::blocks::build_blocks;
 use super::fluid::build_fluid;
 use super::memory::{self, MemoryEstimate};
+use super::output_size::OutputEstimate;
 use super::schema::{v3, ContactSection, DampingName, ModelName, WallSection};
 use super::spheres::{build_spheres, check_walls};
 use super::text::count;
@@ -55,6 +56,8 @@ pub struct Derived {
     pub coupling: Option<String>,
     /// One line per mesh wall: its triangles, so that a file cut short shows.
     pub mesh_lines: Vec<String>,
+    /// The line estimating the output's size (`output_size`).
+    pub output: String,
 }
 
 impl Derived {
@@ -75,6 +78,7 @@ impl Derived {
             let _ = writeln!(s, "{l}");
         }
         s.push_str(&self.memory.report());
+        s.push_str(&self.output);
         s
     }
 
@@ -572,12 +576,16 @@ fn build_or_check(src: &Source, run: bool) -> Result<(Option<Simulation>, Derive
     }
     for (k, v) in [
         ("output.vtk_interval", sc.output.vtk_interval),
+        ("output.flow_interval", sc.output.flow_interval),
         ("output.series_interval", sc.output.series_interval),
         ("output.checkpoint_interval", sc.output.checkpoint_interval),
     ] {
         if let Some(v) = v {
             positive(src, k, v)?;
         }
+    }
+    if let Some(t) = sc.output.displacement_reference_time {
+        non_negative(src, "output.displacement_reference_time", t)?;
     }
     let limits = Limits {
         // An impact at 20 times the expected speed means the integration has failed.
@@ -623,6 +631,14 @@ fn build_or_check(src: &Source, run: bool) -> Result<(Option<Simulation>, Derive
         .iter()
         .map(|(_, c)| discrete_impact(&c.law, c.r_star, c.m_star, v_ref, dt))
         .collect();
+    let output = OutputEstimate::of(
+        sc,
+        &dem,
+        n_fed,
+        rigid.blocks.len(),
+        fluid_derived.as_ref().map(|f| &f.grid),
+    )
+    .line(sc.output.vtk_format());
     let derived = Derived {
         reference_velocity: v_ref,
         min_period,
@@ -640,6 +656,7 @@ fn build_or_check(src: &Source, run: bool) -> Result<(Option<Simulation>, Derive
         }),
         fluid: fluid_derived,
         mesh_lines: mesh_lines(src, &dem.walls),
+        output,
     };
     if !run {
         return Ok((None, derived));

@@ -6,7 +6,7 @@
 use std::fmt::Write as _;
 
 use super::schema::{BlockSet, SizeSection, SphereSet};
-use super::text::count;
+use super::text::{bytes, count};
 use super::{ScenarioError, Source};
 use crate::dem::material::Material;
 use crate::fluid::diagnostics::memory_for_cells;
@@ -75,21 +75,6 @@ impl MemoryEstimate {
             self.drivers.push((key, what, b));
         }
     }
-}
-
-/// Bytes in words: 1.2 GB, 340 MB, 768 TB.
-fn bytes(b: f64) -> String {
-    let (value, unit) = [
-        (1e15, "PB"),
-        (1e12, "TB"),
-        (1e9, "GB"),
-        (1e6, "MB"),
-        (1e3, "kB"),
-    ]
-    .into_iter()
-    .find(|&(u, _)| b >= u)
-    .map_or((b, "B"), |(u, n)| (b / u, n));
-    format!("{value:.1} {unit}")
 }
 
 /// Memory free for a new process [bytes]: MemAvailable (else MemTotal) of /proc/meminfo, on
@@ -313,13 +298,6 @@ pub(super) fn refuse_if_too_big(src: &Source, est: &MemoryEstimate) -> Result<()
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn bytes_in_words() {
-        assert_eq!(bytes(7.68e14), "768.0 TB");
-        assert_eq!(bytes(3.4e8), "340.0 MB");
-        assert_eq!(bytes(12.0), "12.0 B");
-    }
 
     #[test]
     fn lattice_sites_match_the_lattice() {

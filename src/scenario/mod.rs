@@ -8,6 +8,7 @@ pub mod coupling;
 pub mod default;
 pub mod fluid;
 pub mod memory;
+pub mod output_size;
 pub mod schema;
 mod spheres;
 pub mod text;

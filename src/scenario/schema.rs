@@ -4,6 +4,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::dem::walls::Motion;
+use crate::io::vtk::{Compression, Format, Precision};
 use crate::math::Vec3;
 
 /// A whole scenario file.
@@ -517,6 +518,19 @@ pub struct OutputSection {
     pub directory: Option<String>,
     /// Interval between VTK snapshots [s] (default end_time / 50).
     pub vtk_interval: Option<f64>,
+    /// Interval between flow images [s] (default `vtk_interval`): the flow is often by far the
+    /// largest output, so it can be written less often than the spheres.
+    pub flow_interval: Option<f64>,
+    /// `"zlib"` (default) or `"none"`: compression of the VTK files.
+    #[serde(default)]
+    pub compression: Compression,
+    /// `"float32"` (default) or `"float64"`: precision of the VTK field data (positions are
+    /// always float64).
+    #[serde(default)]
+    pub precision: Precision,
+    /// Time from which block displacements and rotations count [s] (default 0: from
+    /// placement), e.g. the end of a settling phase.
+    pub displacement_reference_time: Option<f64>,
     /// Interval between CSV rows [s] (default end_time / 500).
     pub series_interval: Option<f64>,
     /// Interval between checkpoints [s] (default end_time / 4).
@@ -538,10 +552,24 @@ impl Default for OutputSection {
         OutputSection {
             directory: None,
             vtk_interval: None,
+            flow_interval: None,
+            compression: Compression::default(),
+            precision: Precision::default(),
+            displacement_reference_time: None,
             series_interval: None,
             checkpoint_interval: None,
             probes: Vec::new(),
             plots: true,
+        }
+    }
+}
+
+impl OutputSection {
+    /// The format of the VTK files.
+    pub fn vtk_format(&self) -> Format {
+        Format {
+            compression: self.compression,
+            precision: self.precision,
         }
     }
 }

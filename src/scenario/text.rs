@@ -40,6 +40,27 @@ pub fn count(n: f64, word: &str) -> String {
     }
 }
 
+/// Bytes in words, powers of 1000, three significant digits: "999 B", "1.50 kB", "292 MB",
+/// "768 TB".
+pub fn bytes(b: f64) -> String {
+    let (value, unit) = [
+        (1e15, "PB"),
+        (1e12, "TB"),
+        (1e9, "GB"),
+        (1e6, "MB"),
+        (1e3, "kB"),
+    ]
+    .into_iter()
+    .find(|&(u, _)| b >= u)
+    .map_or((b, "B"), |(u, n)| (b / u, n));
+    let decimals = match value {
+        v if unit == "B" || v >= 100.0 => 0,
+        v if v >= 10.0 => 1,
+        _ => 2,
+    };
+    format!("{value:.decimals$} {unit}")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -65,5 +86,16 @@ mod tests {
         assert_eq!(count(3.0, "sphere"), "3 spheres");
         assert_eq!(count(0.0, "wire"), "0 wires");
         assert_eq!(count(621.29, "sphere"), "621 spheres");
+    }
+
+    #[test]
+    fn byte_counts_read_plainly() {
+        assert_eq!(bytes(0.0), "0 B");
+        assert_eq!(bytes(999.0), "999 B");
+        assert_eq!(bytes(1500.0), "1.50 kB");
+        assert_eq!(bytes(3.4e8), "340 MB");
+        assert_eq!(bytes(292_000_000.0), "292 MB");
+        assert_eq!(bytes(12_340_000_000.0), "12.3 GB");
+        assert_eq!(bytes(7.68e14), "768 TB");
     }
 }

@@ -237,7 +237,11 @@ impl FluidDerived {
             ),
             _ => Ok(()),
         };
-        let _ = writeln!(s, "fluid memory estimate: {:.1} MB", self.memory / 1e6);
+        let _ = writeln!(
+            s,
+            "fluid memory estimate: {}",
+            crate::scenario::text::bytes(self.memory)
+        );
         let _ = writeln!(
             s,
             "fluid velocity scale: {} m/s (initial velocity and perturbation, oscillatory U_max, \
