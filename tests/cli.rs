@@ -2,42 +2,11 @@
 //! `run` with its outputs, a restart that continues bit for bit, and a run that goes unstable.
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Command;
 
-const BIN: &str = env!("CARGO_BIN_EXE_riprap");
+mod common;
 
-fn examples() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples")
-}
-
-/// A fresh, empty folder under the system temp dir, unique to this process and `name`.
-fn temp_dir(name: &str) -> PathBuf {
-    let nanos = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .unwrap()
-        .subsec_nanos();
-    let d = std::env::temp_dir().join(format!("riprap_cli_{}_{name}_{nanos}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn riprap(args: &[&str]) -> Output {
-    Command::new(BIN)
-        .args(["--threads", "2"])
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("the riprap binary runs")
-}
-
-fn text(b: &[u8]) -> String {
-    String::from_utf8_lossy(b).into_owned()
-}
-
-fn path_str(p: &Path) -> &str {
-    p.to_str().expect("temp paths are UTF-8")
-}
+use common::cli::*;
 
 /// The rows of a CSV file (header dropped), each as its list of numbers.
 fn csv_rows(path: &Path) -> Vec<Vec<f64>> {

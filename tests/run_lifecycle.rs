@@ -3,39 +3,12 @@
 //! file, reruns into the same folder, and `--end-time`.
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-const BIN: &str = env!("CARGO_BIN_EXE_riprap");
+mod common;
 
-fn examples() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples")
-}
-
-/// A fresh, empty folder under the system temp dir, unique to this process and `name`.
-fn temp_dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("riprap_life_{}_{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn riprap(args: &[&str]) -> Output {
-    Command::new(BIN)
-        .args(["--threads", "2"])
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("the riprap binary runs")
-}
-
-fn text(b: &[u8]) -> String {
-    String::from_utf8_lossy(b).into_owned()
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().expect("temp paths are UTF-8")
-}
+use common::cli::*;
 
 /// single_impact.toml with `from` replaced by `to`, written into `dir` as `name`.
 fn variant(dir: &Path, name: &str, from: &str, to: &str) -> PathBuf {
@@ -51,7 +24,14 @@ fn a_restart_from_another_scenarios_checkpoint_is_refused_naming_what_differs() 
     let dir = temp_dir("fingerprint");
     let scenario = examples().join("single_impact.toml");
     let out = dir.join("out");
-    let run = riprap(&["run", s(&scenario), "--output", s(&out), "--steps", "400"]);
+    let run = riprap(&[
+        "run",
+        path_str(&scenario),
+        "--output",
+        path_str(&out),
+        "--steps",
+        "400",
+    ]);
     assert!(run.status.success(), "{}", text(&run.stderr));
     let ck = out.join("checkpoint.ck");
 
@@ -64,11 +44,11 @@ fn a_restart_from_another_scenarios_checkpoint_is_refused_naming_what_differs() 
     let other_out = dir.join("other_out");
     let r = riprap(&[
         "run",
-        s(&dir.join("other.toml")),
+        path_str(&dir.join("other.toml")),
         "--restart",
-        s(&ck),
+        path_str(&ck),
         "--output",
-        s(&other_out),
+        path_str(&other_out),
         "--steps",
         "10",
     ]);
@@ -101,11 +81,11 @@ fn a_restart_from_another_scenarios_checkpoint_is_refused_naming_what_differs() 
     std::fs::write(dir.join("longer.toml"), longer).unwrap();
     let r = riprap(&[
         "run",
-        s(&dir.join("longer.toml")),
+        path_str(&dir.join("longer.toml")),
         "--restart",
-        s(&ck),
+        path_str(&ck),
         "--output",
-        s(&out),
+        path_str(&out),
         "--steps",
         "10",
     ]);
@@ -147,7 +127,14 @@ fn ctrl_c_writes_a_checkpoint_says_where_and_the_restart_ends_bit_for_bit() {
     let scenario = examples().join("hopper_feed.toml");
     let a = dir.join("a");
     let mut child = Command::new(BIN)
-        .args(["--threads", "2", "run", s(&scenario), "--output", s(&a)])
+        .args([
+            "--threads",
+            "2",
+            "run",
+            path_str(&scenario),
+            "--output",
+            path_str(&a),
+        ])
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()
@@ -187,11 +174,11 @@ fn ctrl_c_writes_a_checkpoint_says_where_and_the_restart_ends_bit_for_bit() {
     let more = 300;
     let r = riprap(&[
         "run",
-        s(&scenario),
+        path_str(&scenario),
         "--restart",
-        s(&ck),
+        path_str(&ck),
         "--output",
-        s(&a),
+        path_str(&a),
         "--steps",
         &more.to_string(),
     ]);
@@ -205,9 +192,9 @@ fn ctrl_c_writes_a_checkpoint_says_where_and_the_restart_ends_bit_for_bit() {
     let b = dir.join("b");
     let r = riprap(&[
         "run",
-        s(&scenario),
+        path_str(&scenario),
         "--output",
-        s(&b),
+        path_str(&b),
         "--steps",
         &(stopped + more).to_string(),
     ]);
@@ -233,7 +220,14 @@ fn sigterm_stops_a_run_like_ctrl_c_with_status_143() {
     let dir = temp_dir("sigterm");
     let scenario = examples().join("hopper_feed.toml");
     let mut child = Command::new(BIN)
-        .args(["--threads", "2", "run", s(&scenario), "--output", s(&dir)])
+        .args([
+            "--threads",
+            "2",
+            "run",
+            path_str(&scenario),
+            "--output",
+            path_str(&dir),
+        ])
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()
@@ -263,10 +257,17 @@ fn an_output_file_that_cannot_be_written_is_named_in_the_error() {
     let file = dir.join("file.txt");
     std::fs::write(&file, "not a folder").unwrap();
     let inside = file.join("out");
-    let r = riprap(&["run", s(&scenario), "--output", s(&inside), "--steps", "5"]);
+    let r = riprap(&[
+        "run",
+        path_str(&scenario),
+        "--output",
+        path_str(&inside),
+        "--steps",
+        "5",
+    ]);
     let stderr = text(&r.stderr);
     assert!(!r.status.success());
-    assert!(stderr.contains(s(&inside)), "{stderr}");
+    assert!(stderr.contains(path_str(&inside)), "{stderr}");
     for (blocked, what) in [
         ("series.csv", "time series"),
         ("probe_0.csv", "probe"),
@@ -277,11 +278,18 @@ fn an_output_file_that_cannot_be_written_is_named_in_the_error() {
     ] {
         let out = dir.join(format!("out_{blocked}"));
         std::fs::create_dir_all(out.join(blocked)).unwrap();
-        let r = riprap(&["run", s(&scenario), "--output", s(&out), "--steps", "5"]);
+        let r = riprap(&[
+            "run",
+            path_str(&scenario),
+            "--output",
+            path_str(&out),
+            "--steps",
+            "5",
+        ]);
         let stderr = text(&r.stderr);
         assert!(!r.status.success(), "{blocked}: the run succeeded");
         assert!(
-            stderr.contains(s(&out.join(blocked))),
+            stderr.contains(path_str(&out.join(blocked))),
             "{blocked}: the path is missing:\n{stderr}"
         );
         assert!(
@@ -297,7 +305,14 @@ fn a_rerun_into_the_same_folder_leaves_no_file_of_the_previous_run() {
     let dir = temp_dir("rerun");
     let out = dir.join("out");
     let scenario = examples().join("single_impact.toml");
-    let r = riprap(&["run", s(&scenario), "--output", s(&out), "--steps", "2000"]);
+    let r = riprap(&[
+        "run",
+        path_str(&scenario),
+        "--output",
+        path_str(&out),
+        "--steps",
+        "2000",
+    ]);
     assert!(r.status.success(), "{}", text(&r.stderr));
     assert!(out.join("spheres_000010.vtu").is_file());
     assert!(out.join("probe_0.csv").is_file());
@@ -307,7 +322,14 @@ fn a_rerun_into_the_same_folder_leaves_no_file_of_the_previous_run() {
 
     // Shorter, without the probe.
     let shorter = variant(&dir, "shorter.toml", "probes = [0]", "probes = []");
-    let r = riprap(&["run", s(&shorter), "--output", s(&out), "--steps", "400"]);
+    let r = riprap(&[
+        "run",
+        path_str(&shorter),
+        "--output",
+        path_str(&out),
+        "--steps",
+        "400",
+    ]);
     let stderr = text(&r.stderr);
     assert!(r.status.success(), "{stderr}");
     assert!(
@@ -351,15 +373,15 @@ fn end_time_on_the_command_line_extends_a_finished_run() {
     let scenario = examples().join("single_impact.toml");
     // To the scenario's end (3 ms), then on to 4 ms from its checkpoint.
     let a = dir.join("a");
-    let r = riprap(&["run", s(&scenario), "--output", s(&a)]);
+    let r = riprap(&["run", path_str(&scenario), "--output", path_str(&a)]);
     assert!(r.status.success(), "{}", text(&r.stderr));
     let r = riprap(&[
         "run",
-        s(&scenario),
+        path_str(&scenario),
         "--output",
-        s(&a),
+        path_str(&a),
         "--restart",
-        s(&a.join("checkpoint.ck")),
+        path_str(&a.join("checkpoint.ck")),
         "--end-time",
         "0.004",
     ]);
@@ -368,9 +390,9 @@ fn end_time_on_the_command_line_extends_a_finished_run() {
     let b = dir.join("b");
     let r = riprap(&[
         "run",
-        s(&scenario),
+        path_str(&scenario),
         "--output",
-        s(&b),
+        path_str(&b),
         "--end-time",
         "0.004",
     ]);
@@ -384,7 +406,13 @@ fn end_time_on_the_command_line_extends_a_finished_run() {
             "{file}"
         );
     }
-    let r = riprap(&["run", s(&scenario), "--output", s(&b), "--end-time=-1"]);
+    let r = riprap(&[
+        "run",
+        path_str(&scenario),
+        "--output",
+        path_str(&b),
+        "--end-time=-1",
+    ]);
     assert!(!r.status.success());
     assert!(
         text(&r.stderr).contains("--end-time"),
@@ -397,7 +425,7 @@ fn end_time_on_the_command_line_extends_a_finished_run() {
 #[test]
 fn the_divergences_of_the_series_and_of_the_flow_images_have_different_names() {
     let dir = temp_dir("divergence");
-    let r = riprap(&["run", "--output", s(&dir), "--steps", "3"]);
+    let r = riprap(&["run", "--output", path_str(&dir), "--steps", "3"]);
     assert!(r.status.success(), "{}", text(&r.stderr));
     let series = std::fs::read_to_string(dir.join("series.csv")).unwrap();
     let header = series.lines().next().unwrap();

@@ -4,6 +4,8 @@
 //! allowed to be dead there.
 #![allow(dead_code)]
 
+pub mod cli;
+
 use riprap::dem::domain::Domain;
 use riprap::dem::material::{ContactModel, Damping, Material, NormalSpring};
 use riprap::dem::walls::{Motion, Shape, Wall};
