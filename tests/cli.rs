@@ -68,7 +68,7 @@ fn check_passes_on_every_example_and_prints_the_derived_quantities() {
                 "valid",
                 "fluid grid:",
                 "fluid time step:",
-                "fluid memory estimate:",
+                "fluid cells); this machine has",
             ]
         } else {
             &[

@@ -103,7 +103,7 @@ fn a_flow_only_scenario_builds_with_its_defaults() {
     for needle in [
         "flow-only",
         "fluid grid: 8 × 4 × 8 = 256 cells",
-        "fluid memory estimate",
+        "memory estimate",
         "fluid time step: CFL limit none",
         "viscous limit",
     ] {

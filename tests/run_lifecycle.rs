@@ -419,6 +419,29 @@ fn end_time_on_the_command_line_extends_a_finished_run() {
         "{}",
         text(&r.stderr)
     );
+    // A restart whose end is not after the checkpoint took no step, said "done" and appended
+    // a second frame and row at the checkpoint's time: refused now, the files untouched.
+    let series = std::fs::read_to_string(a.join("series.csv")).unwrap();
+    let r = riprap(&[
+        "run",
+        path_str(&scenario),
+        "--output",
+        path_str(&a),
+        "--restart",
+        path_str(&a.join("checkpoint.ck")),
+        "--end-time",
+        "0.004",
+    ]);
+    let stderr = text(&r.stderr);
+    assert!(
+        !r.status.success(),
+        "a restart at its end time ran:\n{stderr}"
+    );
+    assert!(stderr.contains("at or past the end time"), "{stderr}");
+    assert_eq!(
+        std::fs::read_to_string(a.join("series.csv")).unwrap(),
+        series
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 

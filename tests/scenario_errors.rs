@@ -1008,3 +1008,26 @@ fn input_that_asks_for_more_memory_than_the_machine_has_is_refused_naming_the_ke
         &["1000000000 spheres", "this machine has"],
     );
 }
+
+/// A fixed sphere and a wall do not interact, so a fixed grain sunk into the floor (roughness)
+/// is no initial overlap: the overlap check refused the issue's own minimal case once fixed
+/// spheres stopped touching walls.
+#[test]
+fn a_fixed_sphere_sunk_into_the_floor_is_accepted() {
+    let text = format!(
+        "{BASE}{FLOOR}\n[[spheres]]\nkind = \"list\"\nmaterial = \"rock\"\nspheres = [ {{ position = [0.5, 0.5, 0.02], diameter = 0.1, fixed = true }} ]\n"
+    );
+    accepted(&text, &temp_dir("fixed_sunk"));
+}
+
+/// A random block set makes its candidate places before it draws from them: a few small blocks
+/// in a large region asked for billions of places (an abort, not an error).
+#[test]
+fn a_random_block_set_in_a_huge_region_is_refused_before_it_allocates() {
+    refused(
+        "\n[[block_template]]\nname = \"pebble\"\nshape = \"cube\"\nmaterial = \"rock\"\nnominal_diameter = 0.001\n\n[[blocks]]\nkind = \"random\"\ntemplate = \"pebble\"\nmin = [0.0, 0.0, 0.0]\nmax = [1.0, 1.0, 1.0] # here\ncount = 3\n",
+        "# here",
+        "blocks[0].max",
+        &["candidate places", "give the region where the blocks should go"],
+    );
+}

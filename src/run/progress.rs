@@ -21,6 +21,8 @@ const MESSAGE_EVERY: f64 = 0.5;
 /// The progress of one invocation of a run, from `t0` to `t_goal` [s].
 pub struct Progress {
     bar: ProgressBar,
+    /// stderr is not a terminal: lines instead of the bar (asked once, not at every step).
+    hidden: bool,
     t0: f64,
     t_goal: f64,
     started: Instant,
@@ -35,6 +37,7 @@ impl Progress {
             ProgressStyle::with_template("{bar:40} {percent:>3}% {msg}").expect("valid template"),
         );
         Progress {
+            hidden: bar.is_hidden(),
             bar,
             t0,
             t_goal,
@@ -47,7 +50,7 @@ impl Progress {
     pub fn update(&mut self, sim: &Simulation) {
         let done = self.done(sim.time);
         let since = self.last_text.elapsed().as_secs_f64();
-        if self.bar.is_hidden() {
+        if self.hidden {
             if since >= LINE_EVERY {
                 self.last_text = Instant::now();
                 eprintln!("  {}", self.status(sim, done));

@@ -20,6 +20,9 @@ use crate::rigid::library;
 use crate::rigid::links::{Bond, BondState, Wire};
 use crate::rigid::templates::BlockTemplate;
 
+/// The most candidate places a random block set may make (24 B each).
+const MAX_PLACES: f64 = 1e7;
+
 /// Radius of the smallest sphere about the centre that holds the whole block [m].
 pub fn bounding_radius(t: &BlockTemplate) -> f64 {
     t.members
@@ -292,6 +295,20 @@ pub(super) fn build_blocks(
                 }
                 // Sites 10 % further apart than the bounding diameter, jittered, shuffled.
                 let s = 2.2 * r_b;
+                // The candidate places are made before they are drawn from: a few small blocks
+                // in a large region would ask for billions of them.
+                let places = super::memory::lattice_sites(r.min, r.max, s);
+                if places > MAX_PLACES {
+                    return Err(src.invalid(
+                        &format!("{key}.max"),
+                        format!(
+                            "the region holds {places:.3e} candidate places for blocks {} m \
+                             apart (2.2 bounding radii), more than {MAX_PLACES:.0e}: give the \
+                             region where the blocks should go",
+                            super::text::sig4(s)
+                        ),
+                    ));
+                }
                 let mut rng = Rng(r.seed);
                 let mut sites = lattice(v3(r.min), v3(r.max), s);
                 if sites.len() < n {

@@ -100,7 +100,7 @@ pub fn machine_memory() -> Option<(f64, &'static str)> {
 
 /// Sites of `lattice(lo, hi, s)` without making them (the same count, in f64 so that it cannot
 /// overflow).
-fn lattice_sites(lo: [f64; 3], hi: [f64; 3], s: f64) -> f64 {
+pub(super) fn lattice_sites(lo: [f64; 3], hi: [f64; 3], s: f64) -> f64 {
     if !(s.is_finite() && s > 0.0) {
         return 0.0;
     }
@@ -144,6 +144,9 @@ fn file_rows(path: &std::path::Path) -> f64 {
             .count() as f64
     })
 }
+
+/// f64 fields per padded cell that the coupling adds to the flow's (`coupling::Coupling`).
+const COUPLING_FIELDS: f64 = 14.0;
 
 /// Estimates the scenario's memory from its numbers, allocating nothing in proportion to them.
 /// `templates` are the block templates, built where they could be (they are small).
@@ -256,6 +259,12 @@ pub(super) fn estimate(
         let n = n.map(|c| if c.is_finite() { c } else { 0.0 });
         est.cells = n.iter().product();
         est.fluid_bytes = memory_for_cells(n);
+        if sc.coupling.is_some() {
+            // The coupling's own fields per padded cell (`Coupling::new`): weights 3 × 2,
+            // face loads 3, cell fractions 2, interaction force 3.
+            let padded: f64 = n.iter().map(|c| c + 2.0).product();
+            est.fluid_bytes += COUPLING_FIELDS * 8.0 * padded;
+        }
         est.add(
             key.into(),
             format!("{} × {} × {} cells", n[0], n[1], n[2]),

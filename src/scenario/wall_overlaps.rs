@@ -3,6 +3,7 @@
 //! huge force at the first step, and the run then fails far from the cause.
 
 use super::schema::{FileSet, SphereSet};
+use super::text::{sig4, vec4};
 use super::{ScenarioError, Source};
 use crate::dem::spheres::Spheres;
 use crate::dem::walls::{Hits, Shape, Wall};
@@ -41,6 +42,11 @@ pub(super) fn check_wall_overlaps(
     let mut worst: Option<(f64, usize, usize)> = None;
     let mut ratio_of_set: Option<(&str, f64)> = None;
     for (k, from) in origin.iter().enumerate().take(s.len()) {
+        // A fixed sphere and a wall do not interact (`dem::wall_contacts`): a grain sunk into
+        // the floor as roughness is fine.
+        if s.fixed[k] {
+            continue;
+        }
         let (c, r) = (s.position[k], s.radius[k]);
         let allowed = match ratio_of_set {
             Some((o, a)) if o == from => a,
@@ -82,14 +88,12 @@ pub(super) fn check_wall_overlaps(
     Err(src.invalid(
         &origin[k],
         format!(
-            "sphere {} (d = {} m, at ({}, {}, {})) starts overlapping wall `{}` (wall[{w}]) by \
+            "sphere {} (d = {} m, at {} m) starts overlapping wall `{}` (wall[{w}]) by \
              {:.3e} m, {:.2} of its radius{tolerance}; move it off the wall, or the wall would \
              throw it out at the first step",
             s.id[k],
-            2.0 * s.radius[k],
-            x.x,
-            x.y,
-            x.z,
+            sig4(2.0 * s.radius[k]),
+            vec4(x),
             walls[w].name,
             ratio * s.radius[k],
             ratio

@@ -6,7 +6,6 @@ use super::report::FluidDerived;
 use super::{DrivingKind, FaceKind, FaceSection, FluidSection};
 use crate::dem::domain::Domain;
 use crate::dem::insertion::Rng;
-use crate::fluid::diagnostics::memory_estimate;
 use crate::fluid::timestep::stable_time_step;
 use crate::fluid::{
     Boundaries, Boundary, DrivingPressureGradient, Fluid, FluidParameters, InflowVelocity,
@@ -132,7 +131,6 @@ pub(in crate::scenario) fn build_fluid(
         grid,
         boundaries,
         parameters,
-        memory: memory_estimate(&grid),
         velocity_scale: scale,
         cfl_step,
         viscous_step,

@@ -23,8 +23,6 @@ pub struct FluidDerived {
     pub boundaries: Boundaries,
     /// Density, viscosity, subgrid model, drive, step limits.
     pub parameters: FluidParameters,
-    /// Memory of the flow solver [bytes].
-    pub memory: f64,
     /// Expected largest speed along each axis [m s⁻¹] (see `scenario::fluid`).
     pub velocity_scale: Vec3,
     /// Advective limit C_adv / Σ_a (U_a / Δ_a) at the velocity scale [s] (∞ at rest).
@@ -237,11 +235,6 @@ impl FluidDerived {
             ),
             _ => Ok(()),
         };
-        let _ = writeln!(
-            s,
-            "fluid memory estimate: {}",
-            crate::scenario::text::bytes(self.memory)
-        );
         let _ = writeln!(
             s,
             "fluid velocity scale: {} m/s (initial velocity and perturbation, oscillatory U_max, \
