@@ -87,6 +87,8 @@ pub fn clift_grace_weber_1978(re: f64) -> f64 {
 
 /// The drag force on a sphere of diameter `d` [m] at relative velocity `u_rel` = u − v
 /// [m s⁻¹] in water of density `rho` [kg m⁻³] and kinematic viscosity `nu` [m² s⁻¹], [5] [N].
+///
+/// Implements [5].
 #[inline]
 pub fn drag_force(law: DragLaw, rho: f64, nu: f64, d: f64, u_rel: DVec3) -> DVec3 {
     let re = u_rel.length() * d / nu;

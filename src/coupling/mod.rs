@@ -337,6 +337,8 @@ impl Coupling {
     /// In each force evaluation of the DEM: adds the held load, and for unresolved spheres the
     /// drag [5] at the current velocity, to the force and torque; counts the drag impulse.
     /// `dt` is the DEM step [s].
+    ///
+    /// Implements [54], [55], [60].
     pub fn add_fluid_loads(&self, spheres: &mut Spheres, dt: f64) {
         let s = &mut *spheres;
         s.fluid
@@ -431,6 +433,8 @@ impl Coupling {
     }
 
     /// ρ̄ = ρ_w (1 − φ) + Σ_i φ_ic ρ_i on every interior cell [53].
+    ///
+    /// Implements [53].
     fn set_mixture_density(&mut self, fluid: &mut Fluid, spheres: &Spheres) {
         let (b, grid, bcs) = (self.b, self.grid, self.bcs);
         let b3 = b * b * b;
@@ -485,6 +489,8 @@ impl Coupling {
 
     /// [62] on every face covered by a resolved sphere or the obstacle, and with `dt_f` the
     /// interaction force [63]; F is zero on the other faces.
+    ///
+    /// Implements [62], [63].
     fn correct_velocity(&mut self, fluid: &mut Fluid, spheres: &Spheres, dt_f: Option<f64>) {
         self.accumulate_weights(spheres);
         let grid = self.grid;

@@ -249,6 +249,8 @@ impl<'a> FlowView<'a> {
 /// Force [N] and torque about `x` [N m] on the sphere centred at `x` [59] [61], with box
 /// `cells`, fractions `phi` (B³, B = `b`), and `loads` the face loads g_a of
 /// [`FlowView::face_loads`]: F_a = Σ_c w(c) g_a(c).
+///
+/// Implements [59], [61].
 pub fn sphere_force(
     grid: &StaggeredGrid,
     bcs: &Boundaries,
@@ -270,6 +272,8 @@ pub fn sphere_force(
 
 /// Force [N] on a fixed solid given by its cell fractions [59], each face counted with the
 /// solid's share w / Σ_j w_j of it (`loads` the face loads g_a = ΔV f_a / Σ_j w_j).
+///
+/// Implements [59].
 pub fn obstacle_force(
     grid: &StaggeredGrid,
     bcs: &Boundaries,

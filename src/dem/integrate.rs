@@ -104,6 +104,8 @@ impl Opener {
     /// forces started at m g, T = 0, for a sphere of mass `m` [kg] and moment of inertia
     /// `inertia` [kg m²] (a `fixed` one only gets F = T = 0). Notes |Δt v|² and an outflow
     /// in `o` (whose `max_drift` holds the square).
+    ///
+    /// Implements [1], [2].
     #[inline(always)]
     pub fn open(&self, state: State, m: f64, inertia: f64, fixed: bool, o: &mut Opening) -> State {
         let rates = if self.kick && !fixed {

@@ -151,6 +151,8 @@ pub struct PairOverride {
 impl PairLaw {
     /// The law between materials `a` and `b`. Friction and restitution default to the mean of the
     /// two materials' values unless `over` sets them.
+    ///
+    /// Implements [20].
     pub fn new(model: &ContactModel, a: &Material, b: &Material, over: PairOverride) -> PairLaw {
         let inv_e = (1.0 - a.poisson_ratio.powi(2)) / a.young_modulus
             + (1.0 - b.poisson_ratio.powi(2)) / b.young_modulus;
@@ -230,6 +232,8 @@ impl PairLaw {
     }
 
     /// The Hertz coefficient K in s_n = K δ^{3/2}: K = (4/3) E* √R* [15]-[17] [N m^{-3/2}].
+    ///
+    /// Implements [16], [17].
     pub fn hertz_coefficient(&self, r_star: f64) -> f64 {
         4.0 / 3.0 * self.e_star * r_star.sqrt()
     }
@@ -238,6 +242,8 @@ impl PairLaw {
     ///
     /// [19]: k = {(4/9) R* (E/(1-ν²))² s_ref}^{1/3} = K^{2/3} s_ref^{1/3}, with s_ref = K δ_max^{3/2}
     /// the peak Hertz force of an impact at v_ref, δ_max = (5 m* v_ref² / (4 K))^{2/5}.
+    ///
+    /// Implements [19].
     pub fn linear_stiffness(&self, r_star: f64, m_star: f64) -> f64 {
         match self.kind {
             LawKind::ApparentLinear => {

@@ -37,6 +37,8 @@ pub struct ContactScales {
 
 /// Contact scales of a pairing with effective radius `r_star`, mass `m_star`, impact velocity `v`
 /// and a static load `load` [N] (the sphere's weight, say).
+///
+/// Implements [22].
 pub fn contact_scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> ContactScales {
     match law.kind {
         LawKind::HookeHistory => {

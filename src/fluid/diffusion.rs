@@ -30,6 +30,8 @@ pub fn molecular(st: &Stencil, mu: f64, ua: &[f64], c: usize) -> f64 {
 
 /// SGS force density −∂τ_ab/∂x_b = Σ_b δ_b (2 μ_SGS S_ab) on the a-face `c` [N m⁻³];
 /// `mu_t` is μ_SGS [Pa s] at cell centres with filled ghosts.
+///
+/// Implements [56].
 #[inline]
 pub fn subgrid(st: &Stencil, u: Velocity, mu_t: &[f64], a: usize, c: usize) -> f64 {
     let ua = u[a];

@@ -152,6 +152,8 @@ struct WallFace {
 ///
 /// `mu` is the dynamic viscosity of water [Pa s], `rho` the mixture density ρ̄ [kg m⁻³] at cell
 /// centres, `u` the velocity with filled ghosts. Deterministic and allocation-free.
+///
+/// Implements [57].
 pub fn eddy_viscosity(
     grid: &StaggeredGrid,
     bcs: &Boundaries,
@@ -338,6 +340,8 @@ impl RowWalls {
     /// Van Driest damping F_w = 1 − exp(−y⁺/A⁺) [58] of cell `c` (padded index) at padded x
     /// coordinate `i` of the row, from the nearest no-slip wall (the first of the walls at
     /// equal distance, in the order of [`RowWalls::walls`]).
+    ///
+    /// Implements [58].
     #[allow(clippy::too_many_arguments)]
     #[inline]
     fn damping(

@@ -38,6 +38,8 @@ const FIRST_STEP_PASSES: usize = 100;
 
 impl Fluid {
     /// Advances the flow by `dt` [s]. Allocation-free; deterministic for any number of threads.
+    ///
+    /// Implements [50], [51].
     pub fn step(&mut self, dt: f64) {
         assert!(
             dt > 0.0 && dt.is_finite(),

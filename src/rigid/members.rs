@@ -41,6 +41,8 @@ pub struct Members<'a> {
 ///
 /// with R the rotation of Q and q_i⁰ the body-frame `offsets` [m]. Positions are wrapped into
 /// the domain along its periodic axes, as the DEM keeps them.
+///
+/// Implements [46], [48].
 pub fn place_members(s: &RigidState, offsets: &[Vec3], m: &mut Members, domain: &Domain) {
     for (i, &q0) in offsets.iter().enumerate() {
         let q = s.orientation * q0;

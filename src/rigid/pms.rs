@@ -58,6 +58,8 @@ use super::rotation::{advance_orientation, angular_velocity};
 ///
 /// Returns the largest distance [m] by which a member was moved back into the rigid shape: how
 /// far the step's free motion distorted the block (a diagnostic, O(Δt² |F_i/m_i − a_i|)).
+///
+/// Implements [34], [35].
 pub fn recover_block_motion(
     s: &mut RigidState,
     body: &Body,

@@ -15,6 +15,8 @@ use crate::math::{Mat3, Quat, Vec3};
 
 /// The rotation of one step, ΔQ = (cos θ/2, ψ sin θ/2), θ = |ω| Δt, ψ = ω/|ω| [41].
 /// `omega` [rad s⁻¹] (any frame; the result acts in the same frame), `dt` [s].
+///
+/// Implements [41].
 pub fn step_rotation(omega: Vec3, dt: f64) -> Quat {
     let w = omega.length();
     if w == 0.0 {
@@ -43,6 +45,8 @@ pub fn normalise(q: Quat) -> Quat {
 }
 
 /// The rotation matrix R of the unit quaternion Q = (q₀, q_x, q_y, q_z) [47].
+///
+/// Implements [47].
 pub fn rotation_matrix(q: Quat) -> Mat3 {
     let (q0, qx, qy, qz) = (q.w, q.x, q.y, q.z);
     Mat3::from_cols(
@@ -66,6 +70,8 @@ pub fn rotation_matrix(q: Quat) -> Mat3 {
 
 /// The vector v turned by the unit quaternion Q as the sandwich product Q (0, v) Q* [43]-[45],
 /// written with the multiplication rules [38] (Hamilton product), not through the matrix.
+///
+/// Implements [38], [43], [44], [45].
 pub fn rotate_by_sandwich(q: Quat, v: Vec3) -> Vec3 {
     // (s1, u1)(s2, u2) = (s1 s2 − u1·u2, s1 u2 + s2 u1 + u1 × u2)
     let mul = |s1: f64, u1: Vec3, s2: f64, u2: Vec3| {
@@ -78,6 +84,8 @@ pub fn rotate_by_sandwich(q: Quat, v: Vec3) -> Vec3 {
 }
 
 /// World-frame inertia I_g = R diag(I₁, I₂, I₃) Rᵀ [kg m²] [49].
+///
+/// Implements [49].
 pub fn world_inertia(q: Quat, principal: Vec3) -> Mat3 {
     let r = rotation_matrix(q);
     r * Mat3::from_diagonal(principal) * r.transpose()

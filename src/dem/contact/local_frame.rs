@@ -58,6 +58,8 @@ type S2 = [f64; 2];
 pub struct Angles(pub f64, pub f64, pub f64, pub f64);
 
 /// (23)-(27): the angles of the line of centres from i to j and the distance D.
+///
+/// Implements [23], [24], [25], [26], [27].
 pub fn angles(x_i: V3, x_j: V3) -> (Angles, f64) {
     let (dx, dy, dz) = (x_j[0] - x_i[0], x_j[1] - x_i[1], x_j[2] - x_i[2]);
     let dist = (dx * dx + dy * dy + dz * dz).sqrt(); // (23)
@@ -75,6 +77,8 @@ pub fn angles(x_i: V3, x_j: V3) -> (Angles, f64) {
 }
 
 /// (28): M_t(φ, θ), rotation by θ about z then by φ about x; columns e_ξ, e_η, e_ζ.
+///
+/// Implements [28].
 pub fn m_t(a: &Angles) -> M3 {
     let Angles(ct, st, cp, sp) = *a;
     [
@@ -85,12 +89,16 @@ pub fn m_t(a: &Angles) -> M3 {
 }
 
 /// (31), corrected (misprint 3): torque = (d/2) M_r F^L for a force F^L applied at (d/2) e_ξ.
+///
+/// Implements [31].
 pub fn m_r(a: &Angles) -> M3 {
     let Angles(ct, st, cp, sp) = *a;
     [[0.0, 0.0, st], [0.0, -sp, -ct * cp], [0.0, cp, -ct * sp]]
 }
 
 /// (30), corrected (misprints 1, 2): v^L = (d/2) M_r⁻¹ ω, with M_r⁻¹ = M_rᵀ.
+///
+/// Implements [30].
 pub fn m_r_inv(a: &Angles) -> M3 {
     let Angles(ct, st, cp, sp) = *a;
     [[0.0, 0.0, 0.0], [0.0, -sp, cp], [st, -ct * cp, -ct * sp]]
@@ -102,6 +110,8 @@ pub fn mul(m: &M3, v: V3) -> V3 {
 }
 
 /// Mᵀ v (= M⁻¹ v for the rotation M_t, (29)(33)).
+///
+/// Implements [29], [33].
 pub fn mul_t(m: &M3, v: V3) -> V3 {
     [0, 1, 2].map(|c| m[0][c] * v[0] + m[1][c] * v[1] + m[2][c] * v[2])
 }
@@ -119,6 +129,8 @@ pub struct Body {
 
 /// (32) divided by Δt: the relative velocity of i's contact point with respect to j's, in local
 /// components (ξ, η, ζ).
+///
+/// Implements [32].
 pub fn local_rate(a: &Angles, d: f64, bi: &Body, bj: &Body) -> V3 {
     let t = mul_t(&m_t(a), [0, 1, 2].map(|k| bi.v[k] - bj.v[k]));
     let r = mul(&m_r_inv(a), [0, 1, 2].map(|k| bi.w[k] + bj.w[k]));

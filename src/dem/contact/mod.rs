@@ -83,6 +83,8 @@ impl Pair {
 
     /// Relative velocity of i's contact point with respect to j's, with lever arms l_i, l_j:
     /// v_r = v_i - v_j + (l_i ω_i + l_j ω_j) × n  ([7], with r = l n on i and -l n on j).
+    ///
+    /// Implements [7].
     #[inline]
     pub fn contact_velocity(&self, l_i: f64, l_j: f64) -> Vec3 {
         let mut spin = l_i * self.w_i;

@@ -11,6 +11,8 @@ use crate::dem::material::{LawKind, PairLaw};
 use crate::math::{project_onto_plane, Vec3};
 
 /// Normal spring force s_n [N] and the stiffness k_n used for k_t [20] and the dashpots [21].
+///
+/// Implements [15], [18].
 #[inline]
 pub fn normal_spring(law: &PairLaw, p: &Pair) -> (f64, f64) {
     match law.kind {
@@ -39,6 +41,8 @@ pub fn normal_spring(law: &PairLaw, p: &Pair) -> (f64, f64) {
 /// The Coulomb limit uses the total normal force f_n (spring and dashpot) rather than s_n alone,
 /// so that the tangential impulse of a sliding impact is exactly μ times the normal impulse.
 /// s_t is first rotated into the current tangent plane, keeping its magnitude.
+///
+/// Implements [9], [10], [11], [12], [13], [14], [21].
 #[inline]
 pub fn force(law: &PairLaw, p: &Pair, s_t: &mut Vec3, dt: f64) -> Reaction {
     let n = p.n;

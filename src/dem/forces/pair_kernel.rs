@@ -418,6 +418,8 @@ fn geometry_avx<K: Kernel>(b: &mut Batch, len: usize) {
 }
 
 /// The loop of `geometry`.
+///
+/// Implements [6].
 #[inline(always)]
 fn geometry_columns<K: Kernel>(b: &mut Batch, len: usize) {
     let len = len.min(BATCH);
