@@ -1,6 +1,7 @@
-//! `riprap validate`: the long validation runs, with a report (Markdown with PNG plots).
+//! `riprap validate`: runs the validation cases and writes the report (Markdown with PNG
+//! plots).
 //!
-//! Today this holds two cases of the flow solver:
+//! The flow solver's cases:
 //!
 //! * the lid-driven cavity against Ghia, Ghia & Shin (1982) at Re = 100, 400 and 1000 (the
 //!   quick level runs Re = 100 only, on a coarse grid). Tolerances are in units of the lid
@@ -9,28 +10,26 @@
 //! * the LES of turbulent channel flow at Re_τ = 178.12 against the DNS of Moser, Kim &
 //!   Mansour (1999): bulk velocity, skin friction and the mean profile U⁺(y⁺). The case,
 //!   its tolerances and their justification are in
-//!   `src/fluid/validation/channel180/README.md`; the quick level runs a small box briefly.
+//!   `src/validation/channel180/README.md`; the quick level runs a small box briefly.
 //!
-//! It also holds the coupling's cases 1, 2, 3 and 5 of METHOD.md §5 (each with its README in
-//! `src/coupling/validation/`; case 5's sensitivity runs only when named). The DEM's checks against theory are fast enough to live in
-//! `cargo test`.
+//! And the coupling's cases 1 to 5 of METHOD.md §5 (each with its README in
+//! `src/validation/<case>/`; case 5's sensitivity runs only when named). The DEM's checks
+//! against theory are fast enough to live in `cargo test`.
 
 use std::fmt::Write as _;
 use std::path::Path;
 
-use crate::coupling::drag::{clift_grace_weber_1978, schiller_naumann_1933};
-use crate::coupling::validation::block_settling::{
+use super::block_settling::{
     estimates as block_estimates, run_block_settling, tolerance_band, BlockSample,
 };
-use crate::coupling::validation::cylinder_strouhal::{cylinder_level, roshko_1954, run_cylinder};
-use crate::coupling::validation::sheet_flow::{self, run_sheet_flow, Level};
-use crate::coupling::validation::sphere_drag::{
-    run_sphere_drag, sphere_drag_level, standard_drag_curve,
-};
-use crate::fluid::validation::channel180::{
+use super::cavity::{ghia_1982, lid_driven_cavity, CavityResult};
+use super::channel180::{
     mkm_1999_bulk_velocity, mkm_1999_profile, run_channel, ChannelCase, ChannelResult,
 };
-use crate::fluid::validation::{ghia_1982, lid_driven_cavity, CavityResult};
+use super::cylinder_strouhal::{cylinder_level, roshko_1954, run_cylinder};
+use super::sheet_flow::{self, run_sheet_flow, Level};
+use super::sphere_drag::{run_sphere_drag, sphere_drag_level, standard_drag_curve};
+use crate::coupling::drag::{clift_grace_weber_1978, schiller_naumann_1933};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
 
 /// One cavity case: Reynolds number, cells per side, tolerances on max |u - u_ref| and
@@ -125,7 +124,7 @@ pub fn run_validation_cases(
         all &= block_settling_section(out, quick, &mut md)?;
     }
     if run("hopper_cloud") {
-        all &= crate::coupling::validation::hopper_cloud::report::section(out, quick, &mut md)?;
+        all &= super::hopper_cloud::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
         all &= sheet_flow_section(out, quick, &mut md)?;
@@ -197,9 +196,7 @@ fn sphere_drag_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Resu
         "\n## Coupling case 1: drag of a fixed sphere against the standard drag curve \
          (Clift, Grace & Weber 1978)\n\n",
     );
-    md.push_str(
-        "Set-up, reference and tolerances: `src/coupling/validation/sphere_drag/README.md`.\n\n",
-    );
+    md.push_str("Set-up, reference and tolerances: `src/validation/sphere_drag/README.md`.\n\n");
     md.push_str("| Re | d/Δ | box [d] | steps | C_D riprap | C_D standard | error | tolerance | verdict |\n");
     md.push_str("|---:|---:|---|---:|---:|---:|---:|---:|---|\n");
     let mut all = true;
@@ -287,7 +284,7 @@ fn cylinder_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<
         "\n## Coupling case 2: vortex shedding behind a fixed cylinder against Roshko (1954)\n\n",
     );
     md.push_str(
-        "Set-up, reference and tolerances: `src/coupling/validation/cylinder_strouhal/README.md`.\n\n",
+        "Set-up, reference and tolerances: `src/validation/cylinder_strouhal/README.md`.\n\n",
     );
     md.push_str("| Re | D/Δ | steps | periods | St riprap | St Roshko | error | tolerance | mean C_D | verdict |\n");
     md.push_str("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
@@ -375,7 +372,7 @@ fn block_settling_section(out: &Path, quick: bool, md: &mut String) -> anyhow::R
     );
     let _ = writeln!(
         md,
-        "Set-up, estimates and tolerance: `src/coupling/validation/block_settling/README.md`. \
+        "Set-up, estimates and tolerance: `src/validation/block_settling/README.md`. \
          d/Δ = {:.0}, {} fluid steps, {seconds:.0} s.\n",
         r.cells_per_diameter, r.steps
     );

@@ -205,7 +205,7 @@ pub struct SheetFlowRun {
 
 /// The folder of the case in the source tree (for the settled bed and saved samples).
 pub fn case_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("src/coupling/validation/sheet_flow")
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("src/validation/sheet_flow")
 }
 
 /// Runs `settle.toml` (DEM only, submerged weight) and writes the settled bed to `path` as
