@@ -59,7 +59,8 @@ enum Command {
         /// Output folder for the report.
         #[arg(long, default_value = "output/validation")]
         output: PathBuf,
-        /// Only this case (sheet_flow_sensitivity runs only when named).
+        /// Only this case (sheet_flow_sensitivity, and case 5's tools sheet_flow_report,
+        /// sheet_flow_settle and sheet_flow_bed_weight, run only when named).
         #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(riprap::validation::CASES))]
         only: Option<String>,
     },
