@@ -273,8 +273,12 @@ fn every_module_uses_only_what_stands_to_its_left_in_the_map() {
     let bad = imports_against_the_map(&src);
     assert!(
         bad.is_empty(),
-        "{} imports against the module map (ARCHITECTURE.md):\n{}",
-        bad.len(),
+        "{} against the module map (ARCHITECTURE.md):\n{}",
+        if bad.len() == 1 {
+            "1 import".to_string()
+        } else {
+            format!("{} imports", bad.len())
+        },
         bad.join("\n")
     );
 }
