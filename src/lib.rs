@@ -5,7 +5,9 @@
 //! in both directions. The method, with its equation numbers, is
 //! `docs/METHOD.md`; doc comments cite those numbers in brackets, e.g. [9].
 //!
-//! Module map (a module uses what is above it, never what is below):
+//! Module map (a module uses what is above it, never what is below; `fluid` uses only `math`
+//! and `units`, and `run`, `bench`, `validation` do not use each other; `tests/layering.rs`
+//! fails on an import against it):
 //!
 //! * [`math`], [`units`]: vector types and named SI constants
 //! * [`geometry`]: where a sphere touches a plane, box, cylinder or triangle mesh
@@ -13,9 +15,12 @@
 //! * [`fluid`]: the LES of the water on a staggered grid (METHOD.md §4)
 //! * [`coupling`]: the Euler-Lagrange coupling of spheres and water ([53], [59]-[63], drag [5])
 //! * [`simulation`]: the order of the phases of a time step
-//! * [`scenario`]: TOML scenario files and the checks and derived quantities of `riprap check`
 //! * [`io`]: VTK and `.pvd` output, CSV time series, plots, checkpoints
+//! * [`scenario`]: TOML scenario files and the checks and derived quantities of `riprap check`
 //! * [`run`]: a run with its outputs, checkpoints and progress, as the CLI drives it
+//! * [`bench`]: benchmarks: the DEM against LIGGGHTS and LAMMPS, the flow solver, coupled runs
+//! * [`validation`]: the validation cases of `riprap validate`, each a directory with its
+//!   README and reference data
 //!
 //! Threads: the parallel loops run on rayon's global pool, and their results do not depend on
 //! its size. Drive a simulation from a thread of that pool, as the `riprap` binary does
@@ -37,4 +42,4 @@ pub mod run;
 pub mod scenario;
 pub mod simulation;
 pub mod units;
-pub mod validate;
+pub mod validation;

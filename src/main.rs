@@ -59,8 +59,9 @@ enum Command {
         /// Output folder for the report.
         #[arg(long, default_value = "output/validation")]
         output: PathBuf,
-        /// Only this case (sheet_flow_sensitivity runs only when named).
-        #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(riprap::validate::CASES))]
+        /// Only this case (sheet_flow_sensitivity, and case 5's tools sheet_flow_report,
+        /// sheet_flow_settle and sheet_flow_bed_weight, run only when named).
+        #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(riprap::validation::CASES))]
         only: Option<String>,
     },
     /// Validate a scenario and print the derived quantities (contact time, time step, ...).
@@ -370,7 +371,8 @@ fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
             output,
             only,
         } => (|| {
-            let (_, ok) = riprap::validate::run_validation_cases(&output, quick, only.as_deref())?;
+            let (_, ok) =
+                riprap::validation::run_validation_cases(&output, quick, only.as_deref())?;
             eprintln!("report: {}", output.join("report.md").display());
             if ok {
                 Ok(None)

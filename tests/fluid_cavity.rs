@@ -1,10 +1,10 @@
 //! Lid-driven cavity at Re = 100 against Ghia, Ghia & Shin (1982), on coarse grids that run
 //! in about a second. Finer grids and Re = 400, 1000 are
-//! `riprap::fluid::validation::lid_driven_cavity(re, n, ..)` for `riprap validate`.
+//! `riprap::validation::cavity::lid_driven_cavity(re, n, ..)` for `riprap validate`.
 //!
 //! Run: `cargo test --release --test fluid_cavity -- --nocapture`.
 
-use riprap::fluid::validation::{ghia_1982, lid_driven_cavity};
+use riprap::validation::cavity::{ghia_1982, lid_driven_cavity};
 
 #[test]
 fn reference_tables_are_complete() {
@@ -55,7 +55,7 @@ fn re_100_matches_ghia_on_coarse_grids() {
 #[test]
 fn quick_validation_level_passes_and_writes_its_report() {
     let out = std::env::temp_dir().join(format!("riprap-validate-{}", std::process::id()));
-    let (report, ok) = riprap::validate::run_validation(&out, true).unwrap();
+    let (report, ok) = riprap::validation::run_validation(&out, true).unwrap();
     assert!(ok, "{report}");
     assert!(out.join("report.md").exists() && out.join("cavity_re100.png").exists());
     let _ = std::fs::remove_dir_all(&out);

@@ -1,5 +1,5 @@
 //! The turbulent channel of `riprap validate` (Re_τ = 178.12, Smagorinsky with van Driest
-//! damping, constant driving gradient; `riprap::fluid::validation::channel180`) on a small box
+//! damping, constant driving gradient; `riprap::validation::channel180`) on a small box
 //! for a few hundred steps: cheap checks that can fail.
 //!
 //! * The exact discrete momentum budget, step by step. In a box periodic in x and z the
@@ -24,7 +24,7 @@
 
 use riprap::fluid::grid::Stencil;
 use riprap::fluid::sgs::strain_rate_magnitude;
-use riprap::fluid::validation::channel180::{channel_fluid, wall_shear_stress, ChannelCase};
+use riprap::validation::channel180::{channel_fluid, wall_shear_stress, ChannelCase};
 use std::f64::consts::PI;
 
 /// The small box: πh × 2h × πh/2 on 16 × 32 × 16 cells (Δx⁺ = 35, Δy⁺ = 11, Δz⁺ = 17.5).

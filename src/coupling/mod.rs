@@ -68,7 +68,6 @@ pub mod fraction;
 pub mod interpolate;
 pub mod resolved;
 pub mod slabs;
-pub mod validation;
 
 use glam::DVec3;
 use rayon::prelude::*;

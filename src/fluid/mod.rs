@@ -11,8 +11,8 @@
 //! Each face of the box is periodic, a no-slip wall (fixed or moving), free slip, an inflow
 //! (steady or oscillating) or an outflow ([`boundary`]). The time step adapts to CFL and
 //! viscous limits ([`timestep`]). [`diagnostics`] gives whole-flow numbers (kinetic energy,
-//! largest speed, a memory estimate). [`validation`] holds the longer verification cases (the
-//! lid-driven cavity against Ghia et al. 1982) for a `riprap validate` command.
+//! largest speed, a memory estimate). The longer verification cases (the lid-driven cavity
+//! against Ghia et al. 1982, turbulent channel flow) are in `riprap::validation`.
 //!
 //! In use:
 //!
@@ -50,7 +50,6 @@ pub mod sgs;
 pub mod step;
 pub mod tendency;
 pub mod timestep;
-pub mod validation;
 
 pub use boundary::{Boundaries, Boundary, InflowVelocity};
 pub use forcing::DrivingPressureGradient;

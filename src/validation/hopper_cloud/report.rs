@@ -35,7 +35,7 @@ pub fn section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool>
     md.push_str("\n## Coupling case 4: a cloud of spheres fed from a hopper into still water\n\n");
     let _ = writeln!(
         md,
-        "Set-up, reference and criterion: `src/coupling/validation/hopper_cloud/README.md`. \
+        "Set-up, reference and criterion: `src/validation/hopper_cloud/README.md`. \
          {} spheres, d = 1 cm, s.g. 1.318, Δ = d/4; {} fluid steps, {:.0} s (cloud) + {:.0} s \
          (lone sphere).\n",
         cloud.spheres, cloud.steps, cloud.seconds, lone.seconds

@@ -1,6 +1,7 @@
-//! `riprap validate`: the long validation runs, with a report (Markdown with PNG plots).
+//! `riprap validate`: runs the validation cases and writes the report (Markdown with PNG
+//! plots).
 //!
-//! Today this holds two cases of the flow solver:
+//! The flow solver's cases:
 //!
 //! * the lid-driven cavity against Ghia, Ghia & Shin (1982) at Re = 100, 400 and 1000 (the
 //!   quick level runs Re = 100 only, on a coarse grid). Tolerances are in units of the lid
@@ -9,28 +10,26 @@
 //! * the LES of turbulent channel flow at Re_τ = 178.12 against the DNS of Moser, Kim &
 //!   Mansour (1999): bulk velocity, skin friction and the mean profile U⁺(y⁺). The case,
 //!   its tolerances and their justification are in
-//!   `src/fluid/validation/channel180/README.md`; the quick level runs a small box briefly.
+//!   `src/validation/channel180/README.md`; the quick level runs a small box briefly.
 //!
-//! It also holds the coupling's cases 1, 2, 3 and 5 of METHOD.md §5 (each with its README in
-//! `src/coupling/validation/`; case 5's sensitivity runs only when named). The DEM's checks against theory are fast enough to live in
-//! `cargo test`.
+//! And the coupling's cases 1 to 5 of METHOD.md §5 (each with its README in
+//! `src/validation/<case>/`; case 5's sensitivity runs only when named). The DEM's checks
+//! against theory are fast enough to live in `cargo test`.
 
 use std::fmt::Write as _;
 use std::path::Path;
 
-use crate::coupling::drag::{clift_grace_weber_1978, schiller_naumann_1933};
-use crate::coupling::validation::block_settling::{
+use super::block_settling::{
     estimates as block_estimates, run_block_settling, tolerance_band, BlockSample,
 };
-use crate::coupling::validation::cylinder_strouhal::{cylinder_level, roshko_1954, run_cylinder};
-use crate::coupling::validation::sheet_flow::{self, run_sheet_flow, Level};
-use crate::coupling::validation::sphere_drag::{
-    run_sphere_drag, sphere_drag_level, standard_drag_curve,
-};
-use crate::fluid::validation::channel180::{
+use super::cavity::{ghia_1982, lid_driven_cavity, CavityResult};
+use super::channel180::{
     mkm_1999_bulk_velocity, mkm_1999_profile, run_channel, ChannelCase, ChannelResult,
 };
-use crate::fluid::validation::{ghia_1982, lid_driven_cavity, CavityResult};
+use super::cylinder_strouhal::{cylinder_level, roshko_1954, run_cylinder};
+use super::sheet_flow::{self, run_sheet_flow, Level};
+use super::sphere_drag::{run_sphere_drag, sphere_drag_level, standard_drag_curve};
+use crate::coupling::drag::{clift_grace_weber_1978, schiller_naumann_1933};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
 
 /// One cavity case: Reynolds number, cells per side, tolerances on max |u - u_ref| and
@@ -81,7 +80,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 8] = [
+pub const CASES: [&str; 11] = [
     "cavity",
     "channel",
     "sphere_drag",
@@ -90,6 +89,9 @@ pub const CASES: [&str; 8] = [
     "hopper_cloud",
     "sheet_flow",
     "sheet_flow_sensitivity",
+    "sheet_flow_report",
+    "sheet_flow_settle",
+    "sheet_flow_bed_weight",
 ];
 
 /// As [`run_validation`], only the case named `only` (one of [`CASES`]) when given.
@@ -125,7 +127,7 @@ pub fn run_validation_cases(
         all &= block_settling_section(out, quick, &mut md)?;
     }
     if run("hopper_cloud") {
-        all &= crate::coupling::validation::hopper_cloud::report::section(out, quick, &mut md)?;
+        all &= super::hopper_cloud::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
         all &= sheet_flow_section(out, quick, &mut md)?;
@@ -133,6 +135,16 @@ pub fn run_validation_cases(
     // Long (three runs of half a period): only when named.
     if only == Some("sheet_flow_sensitivity") {
         sheet_flow_sensitivity_section(out, quick, &mut md)?;
+    }
+    // Tools of case 5 (README.md of the case), also only when named.
+    if only == Some("sheet_flow_report") {
+        all &= sheet_flow_report_section(out, quick, &mut md)?;
+    }
+    if only == Some("sheet_flow_settle") {
+        sheet_flow_settle_section(out, &mut md)?;
+    }
+    if only == Some("sheet_flow_bed_weight") {
+        sheet_flow_bed_weight_section(out, &mut md)?;
     }
     std::fs::write(out.join("report.md"), &md)?;
     Ok((md, all))
@@ -191,15 +203,94 @@ fn sheet_flow_sensitivity_section(out: &Path, quick: bool, md: &mut String) -> a
     Ok(())
 }
 
+/// Case 5's reports rebuilt from the samples an earlier `--only sheet_flow` (or
+/// `sheet_flow_sensitivity`) saved in `out`, also from a run cut short: the case's report from
+/// `sheet_flow_full.bin` (`sheet_flow_quick.bin` with `quick`), and the sensitivity report
+/// when `sheet_flow_half.bin` is there, with the variants found beside it.
+fn sheet_flow_report_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
+    let level = if quick { Level::QUICK } else { Level::FULL };
+    let path = out.join(format!("sheet_flow_{}.bin", level.name));
+    let run = sheet_flow::load_run(&path).map_err(|e| {
+        anyhow::anyhow!(
+            "{}: no saved samples of case 5 ({e}); run `riprap validate --only sheet_flow{}` \
+             with this --output first",
+            path.display(),
+            if quick { " --quick" } else { "" }
+        )
+    })?;
+    md.push_str(
+        "\n## Coupling case 5: mixed-size oscillatory sheet flow (source figures 13, 14)\n\n",
+    );
+    let (text, ok) = sheet_flow::report::write_report(out, "sheet_flow", &run)?;
+    md.push_str(&text);
+    eprintln!(
+        "sheet flow ({}, from {}): {} samples to t = {:.3} s -> {}",
+        level.name,
+        path.display(),
+        run.samples.len(),
+        run.samples.last().map_or(0.0, |s| s.time),
+        if ok { "pass" } else { "FAIL" }
+    );
+    let half = out.join(format!("sheet_flow_{}.bin", Level::HALF.name));
+    if let Ok(base) = sheet_flow::load_run(&half) {
+        let mut runs = vec![base];
+        for level in [Level::COARSE_GRID, Level::SOFT, Level::SOFTER] {
+            if let Ok(r) = sheet_flow::load_run(&out.join(format!("sheet_flow_{}.bin", level.name)))
+            {
+                runs.push(r);
+            }
+        }
+        md.push_str("\n## Coupling case 5, sensitivity: grid and spring stiffness\n\n");
+        md.push_str(&sheet_flow::report::write_sensitivity(out, &runs)?);
+    }
+    Ok(ok)
+}
+
+/// Settles case 5's bed again (`settle.toml`, DEM only, about 10 s) into `sheet_flow_bed.csv`
+/// in `out`; the case reads `bed.csv` of its directory, so a new bed is copied there by hand.
+fn sheet_flow_settle_section(out: &Path, md: &mut String) -> anyhow::Result<()> {
+    let path = out.join("sheet_flow_bed.csv");
+    let (n, fixed, surface, packing) = sheet_flow::settle_bed(&path)?;
+    let _ = writeln!(
+        md,
+        "\n## Coupling case 5: the settled bed\n\n{n} spheres, {fixed} of them fixed on the \
+         floor; bed surface {:.2} cm, bulk packing {packing:.3}. Written to `{}`; the case \
+         reads `src/validation/sheet_flow/bed.csv`, which this does not touch.",
+        surface * 100.0,
+        path.display()
+    );
+    eprintln!(
+        "sheet flow bed: {n} spheres, {fixed} fixed -> {}",
+        path.display()
+    );
+    Ok(())
+}
+
+/// How much of case 5's resting bed the pressure carries (`sheet_flow::bed_weight`);
+/// reported, no verdict.
+fn sheet_flow_bed_weight_section(out: &Path, md: &mut String) -> anyhow::Result<()> {
+    let work = out.join("sheet_flow_work");
+    let by_class = sheet_flow::bed_weight::bed_weight_carried_by_the_pressure(&work)?;
+    md.push_str(
+        "\n## Coupling case 5: the bed's weight carried by the pressure\n\n\
+         After 0.004 s of the base case: the mean vertical [59] force on the spheres 1.5 to \
+         3.5 cm up, in units of their submerged weight (near 0 when the bed rests on its \
+         contacts).\n\n| class | spheres | vertical [59] force / submerged weight |\n|---|---:|---:|\n",
+    );
+    for (name, (ratio, n)) in ["small", "medium", "large"].iter().zip(by_class) {
+        let _ = writeln!(md, "| {name} | {n} | {ratio:.3} |");
+        eprintln!("sheet flow bed weight, {name}: {n} spheres, {ratio:.3} of the submerged weight");
+    }
+    Ok(())
+}
+
 /// Case 1 of the coupling (METHOD.md §5): C_D of a fixed sphere against the standard curve.
 fn sphere_drag_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
     md.push_str(
         "\n## Coupling case 1: drag of a fixed sphere against the standard drag curve \
          (Clift, Grace & Weber 1978)\n\n",
     );
-    md.push_str(
-        "Set-up, reference and tolerances: `src/coupling/validation/sphere_drag/README.md`.\n\n",
-    );
+    md.push_str("Set-up, reference and tolerances: `src/validation/sphere_drag/README.md`.\n\n");
     md.push_str("| Re | d/Δ | box [d] | steps | C_D riprap | C_D standard | error | tolerance | verdict |\n");
     md.push_str("|---:|---:|---|---:|---:|---:|---:|---:|---|\n");
     let mut all = true;
@@ -287,7 +378,7 @@ fn cylinder_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<
         "\n## Coupling case 2: vortex shedding behind a fixed cylinder against Roshko (1954)\n\n",
     );
     md.push_str(
-        "Set-up, reference and tolerances: `src/coupling/validation/cylinder_strouhal/README.md`.\n\n",
+        "Set-up, reference and tolerances: `src/validation/cylinder_strouhal/README.md`.\n\n",
     );
     md.push_str("| Re | D/Δ | steps | periods | St riprap | St Roshko | error | tolerance | mean C_D | verdict |\n");
     md.push_str("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
@@ -375,7 +466,7 @@ fn block_settling_section(out: &Path, quick: bool, md: &mut String) -> anyhow::R
     );
     let _ = writeln!(
         md,
-        "Set-up, estimates and tolerance: `src/coupling/validation/block_settling/README.md`. \
+        "Set-up, estimates and tolerance: `src/validation/block_settling/README.md`. \
          d/Δ = {:.0}, {} fluid steps, {seconds:.0} s.\n",
         r.cells_per_diameter, r.steps
     );

@@ -8,6 +8,7 @@
 //! leaving it while it decelerates). `scenario.toml` is the case, `settle.toml` settles the
 //! bed into `bed.csv`; set-up, criteria and measured numbers in `README.md`.
 
+pub mod bed_weight;
 pub mod measure;
 pub mod report;
 
@@ -29,7 +30,8 @@ use measure::{
 
 /// The case's scenario (one period, Δ = d1/4).
 pub const SCENARIO: &str = include_str!("scenario.toml");
-/// The DEM-only run that settles the bed (writes `bed.csv` through [`settle_bed`]).
+/// The DEM-only run that settles the bed (`riprap validate --only sheet_flow_settle` writes
+/// the bed through [`settle_bed`] into its output folder).
 pub const SETTLE: &str = include_str!("settle.toml");
 /// The settled bed: `x,y,z,diameter,fixed` [m].
 pub const BED: &str = include_str!("bed.csv");
@@ -114,8 +116,9 @@ impl Level {
         ..Level::HALF
     };
     /// Sensitivity: springs 16 times softer (E = 1e7 Pa, Δt = 4e-5 s), first half period.
-    /// Its saved run, `measured/softer.bin`, is the whole period it ran as the base before
-    /// 2026-12-02.
+    /// Its measured run (README.md) is the whole period it ran as the base before 2026-12-02;
+    /// `--only sheet_flow_report` takes its samples as a variant when they are saved beside
+    /// the base's.
     pub const SOFTER: Level = Level {
         name: "softer",
         young_modulus: 1.0e7,
@@ -203,9 +206,10 @@ pub struct SheetFlowRun {
     pub seconds: f64,
 }
 
-/// The folder of the case in the source tree (for the settled bed and saved samples).
+/// The folder of the case in the source tree (read only: `settle.toml` resolves its paths
+/// from it).
 pub fn case_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("src/coupling/validation/sheet_flow")
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("src/validation/sheet_flow")
 }
 
 /// Runs `settle.toml` (DEM only, submerged weight) and writes the settled bed to `path` as
@@ -437,14 +441,6 @@ pub fn load_run(path: &Path) -> anyhow::Result<SheetFlowRun> {
     Ok(postcard::from_bytes(&std::fs::read(path)?)?)
 }
 
-/// Reads the saved run `sheet_flow_<name>.bin` from `output/`, or else the one measured for
-/// README.md (`measured/<name>.bin` in the case directory).
-pub fn load_saved(name: &str) -> anyhow::Result<SheetFlowRun> {
-    let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("output");
-    load_run(&out.join(format!("sheet_flow_{name}.bin")))
-        .or_else(|_| load_run(&case_dir().join("measured").join(format!("{name}.bin"))))
-}
-
 /// The values of a run at one phase φ = k π/4.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PhaseRow {
@@ -596,132 +592,5 @@ mod tests {
             eprintln!("{what}: {ok}");
             assert!(ok, "{what}");
         }
-    }
-
-    /// The sensitivity report from saved runs (`output/`, or else `measured/`): `full` (or
-    /// `half`) as the base, `coarse_grid`, `soft` and `softer` as far as they got, compared
-    /// over their common time span:
-    /// `cargo test --release --lib sheet_flow::tests::sensitivity_saved -- --ignored --nocapture`.
-    #[test]
-    #[ignore = "needs saved runs"]
-    fn sensitivity_saved() {
-        let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("output");
-        let base = load_saved("full").or_else(|_| load_saved("half")).unwrap();
-        let mut runs = vec![base];
-        for name in ["coarse_grid", "soft", "softer"] {
-            if let Ok(r) = load_saved(name) {
-                // Named as loaded: a run saved under an earlier name keeps its samples.
-                runs.push(SheetFlowRun {
-                    level: name.into(),
-                    ..r
-                });
-            }
-        }
-        let dir = out.join("sheet_flow_sensitivity_report");
-        std::fs::create_dir_all(&dir).unwrap();
-        let md = report::write_sensitivity(&dir, &runs).unwrap();
-        std::fs::write(dir.join("report.md"), &md).unwrap();
-        for r in &runs {
-            eprintln!(
-                "{}: to t = {:.3} s",
-                r.level,
-                r.samples.last().unwrap().time
-            );
-        }
-        eprintln!("{md}");
-    }
-
-    /// How much of the grains' submerged weight the water's pressure p̄ carries in the
-    /// resting bed: after 0.004 s of the base case (the flow has barely started), the mean of
-    /// the vertical [59] force (the held load less buoyancy) over the spheres whose centre lies
-    /// 1.5 to 3.5 cm up, in units of their submerged weight (ρ_p − ρ_w) V g. Printed:
-    /// `cargo test --release --lib sheet_flow::tests::bed_weight -- --ignored --nocapture`.
-    #[test]
-    #[ignore = "a measurement for the README"]
-    fn bed_weight_carried_by_the_pressure() {
-        let work = std::env::temp_dir().join(format!("riprap_sheet_w_{}", std::process::id()));
-        std::fs::create_dir_all(&work).unwrap();
-        std::fs::write(work.join("bed.csv"), BED).unwrap();
-        let text = scenario(&Level {
-            end_time: 0.004,
-            ..Level::QUICK
-        });
-        let src = Source::from_str(&text, "scenario.toml", work.clone()).unwrap();
-        let mut sim = build(&src).unwrap().simulation;
-        while sim.time < 0.004 - 1e-9 {
-            sim.step_towards(0.004).unwrap();
-        }
-        let s = &sim.dem.spheres;
-        let (rho_w, g) = (1000.0, 9.81);
-        let mut by_class = [(0.0, 0); 3];
-        for i in 0..s.len() {
-            let z = s.position[i].z;
-            if !(0.015..=0.035).contains(&z) {
-                continue;
-            }
-            let v = 4.0 / 3.0 * std::f64::consts::PI * s.radius[i].powi(3);
-            let submerged = (s.mass[i] / v - rho_w) * v * g;
-            let lift = s.fluid[i].force.z - rho_w * v * g;
-            let c = class_of(s.radius[i]);
-            by_class[c].0 += lift / submerged;
-            by_class[c].1 += 1;
-        }
-        let _ = std::fs::remove_dir_all(&work);
-        for (c, (sum, n)) in by_class.iter().enumerate() {
-            eprintln!(
-                "class {c}: {n} spheres, mean vertical [59] force {:.3} of the submerged weight",
-                sum / *n as f64
-            );
-        }
-    }
-
-    /// Writes `bed.csv` from `settle.toml`:
-    /// `cargo test --release --lib sheet_flow::tests::settle -- --ignored --nocapture`.
-    #[test]
-    #[ignore = "rewrites bed.csv in the source tree"]
-    fn settle() {
-        let (n, fixed, surface, packing) = settle_bed(&case_dir().join("bed.csv")).unwrap();
-        eprintln!("bed: {n} spheres, {fixed} fixed, surface {surface:.4} m, packing {packing:.3}");
-    }
-
-    /// Runs the level named by SHEET_FLOW_LEVEL (default `half`) and saves its samples to
-    /// `output/sheet_flow_<level>.bin` after each sample:
-    /// `SHEET_FLOW_LEVEL=half cargo test --release --lib sheet_flow::tests::run_saved -- --ignored --nocapture`.
-    #[test]
-    #[ignore = "a long run: about 11 minutes for half a period, 28 for one, on 2 cores"]
-    fn run_saved() {
-        let name = std::env::var("SHEET_FLOW_LEVEL").unwrap_or_else(|_| "half".into());
-        let level = Level::named(&name).expect("a level name");
-        let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("output");
-        let save = out.join(format!("sheet_flow_{name}.bin"));
-        let run =
-            run_sheet_flow(&level, &out.join(format!("sheet_flow_{name}")), Some(&save)).unwrap();
-        eprintln!("{:#?}", summarise(&run));
-    }
-
-    /// Writes the report of a saved run (SHEET_FLOW_LEVEL, default `half`; from `output/`, or
-    /// else the runs measured for README.md in `measured/`) into
-    /// `output/sheet_flow_<level>_report/`:
-    /// `cargo test --release --lib sheet_flow::tests::report_saved -- --ignored --nocapture`.
-    #[test]
-    #[ignore = "needs a saved run"]
-    fn report_saved() {
-        let name = std::env::var("SHEET_FLOW_LEVEL").unwrap_or_else(|_| "half".into());
-        let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("output");
-        let run = load_saved(&name).unwrap();
-        let dir = out.join(format!("sheet_flow_{name}_report"));
-        std::fs::create_dir_all(&dir).unwrap();
-        let (md, ok) = report::write_report(&dir, "sheet_flow", &run).unwrap();
-        std::fs::write(dir.join("report.md"), &md).unwrap();
-        eprintln!("{md}\nverdict {ok}; written to {}", dir.display());
-        let s = summarise(&run);
-        eprintln!(
-            "{} samples to t = {:.3} s, {} steps, {:.0} s",
-            run.samples.len(),
-            run.samples.last().unwrap().time,
-            run.steps,
-            run.seconds
-        );
-        eprintln!("{s:#?}");
     }
 }

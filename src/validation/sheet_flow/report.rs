@@ -82,7 +82,7 @@ pub fn write_report(
         md,
         "Level `{}`: {} samples to t = {:.3} s (φ = {:.2} π), Δ = {:.4} mm, {} fluid steps, \
          {:.0} s of wall-clock time. Set-up and criteria: \
-         `src/coupling/validation/sheet_flow/README.md`.\n",
+         `src/validation/sheet_flow/README.md`.\n",
         run.level,
         s.len(),
         last.time,

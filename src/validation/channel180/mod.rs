@@ -1,7 +1,7 @@
 //! LES of turbulent plane channel flow at Re_τ = 178.12 against the DNS of Moser, Kim &
 //! Mansour (1999): the mean velocity profile U⁺(y⁺), the bulk velocity U_b⁺ and the skin
 //! friction C_f. The case, the reference data and the tolerances are described in
-//! `src/fluid/validation/channel180/README.md`.
+//! `src/validation/channel180/README.md`.
 //!
 //! Set-up, in units of the half height h [m] and the friction velocity u_τ [m s⁻¹]
 //! (ρ = 1 kg m⁻³):
@@ -25,7 +25,7 @@
 //! After a spin-up time the plane-averaged (x, z) streamwise velocity is sampled at a fixed
 //! interval and averaged in time and over the two halves of the channel.
 
-use super::super::{
+use crate::fluid::{
     Boundaries, Boundary, DrivingPressureGradient, Fluid, FluidParameters, Smagorinsky,
     StaggeredGrid, TimeStepLimits,
 };

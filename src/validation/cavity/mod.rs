@@ -1,21 +1,16 @@
-//! Verification cases of the flow solver that are longer than a unit test, as functions a
-//! `riprap validate` command can call at full resolution and the tests call coarse.
-//!
-//! * [`lid_driven_cavity`]: the 2D lid-driven cavity at Re = 100, 400, 1000 against the
-//!   centreline tables of Ghia, Ghia & Shin (1982), stored in
-//!   `tests/data/fluid/ghia1982_*.csv` with their provenance;
-//! * [`channel180`]: LES of turbulent channel flow at Re_τ = 178.12 against the DNS of Moser,
-//!   Kim & Mansour (1999), a case directory with its reference data and README.
+//! Verification case of the flow solver that is longer than a unit test, as functions
+//! `riprap validate` calls at full resolution and the tests call coarse:
+//! [`lid_driven_cavity`], the 2D lid-driven cavity at Re = 100, 400, 1000 against the
+//! centreline tables of Ghia, Ghia & Shin (1982), stored beside this file in
+//! `ghia1982_*.csv` with their provenance.
 
-pub mod channel180;
-
-use super::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
+use crate::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
 use glam::DVec3;
 
 /// Ghia, Ghia & Shin (1982) Table I: u/U on the vertical centreline; columns y, Re 100/400/1000.
-const GHIA_U: &str = include_str!("../../tests/data/fluid/ghia1982_u_vertical_centreline.csv");
+const GHIA_U: &str = include_str!("ghia1982_u_vertical_centreline.csv");
 /// Ghia, Ghia & Shin (1982) Table II: v/U on the horizontal centreline.
-const GHIA_V: &str = include_str!("../../tests/data/fluid/ghia1982_v_horizontal_centreline.csv");
+const GHIA_V: &str = include_str!("ghia1982_v_horizontal_centreline.csv");
 
 /// Reference values believed misprinted in Ghia et al. (1982), as (Re, x/L) of Table II (v on
 /// the horizontal centreline). Re = 400 at x = 0.9063 reads −0.23827 between −0.22847 and

@@ -1,0 +1,301 @@
+//! The module map of ARCHITECTURE.md (and of `src/lib.rs`'s doc) as a rule: a top-level
+//! module uses only the modules that stand to its left in the map, so the physics never
+//! depends on the scenario files, the output or the validation cases built on top of it.
+//!
+//! The test reads every file of a module (`src/<module>.rs` and `src/<module>/**.rs`), takes
+//! the paths that name another module (`crate::x`, `crate::{x::.., y::..}`, and `super::`
+//! chains that climb to the crate root) outside comments, and fails on each one the map does
+//! not allow. Comments are skipped: a doc comment may point anywhere without a dependency.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+/// The map: each top-level module and the modules it may use (those to its left).
+/// `src/main.rs` (the CLI) stands right of all of them and is not checked.
+const MAP: &[(&str, &[&str])] = &[
+    ("math", &[]),
+    ("units", &[]),
+    ("geometry", &["math", "units"]),
+    ("dem", &["math", "units", "geometry"]),
+    ("rigid", &["math", "units", "geometry", "dem"]),
+    ("fluid", &["math", "units"]),
+    (
+        "coupling",
+        &["math", "units", "geometry", "dem", "rigid", "fluid"],
+    ),
+    (
+        "simulation",
+        &[
+            "math", "units", "geometry", "dem", "rigid", "fluid", "coupling",
+        ],
+    ),
+    (
+        "io",
+        &[
+            "math",
+            "units",
+            "geometry",
+            "dem",
+            "rigid",
+            "fluid",
+            "coupling",
+            "simulation",
+        ],
+    ),
+    (
+        "scenario",
+        &[
+            "math",
+            "units",
+            "geometry",
+            "dem",
+            "rigid",
+            "fluid",
+            "coupling",
+            "simulation",
+            "io",
+        ],
+    ),
+    (
+        "run",
+        &[
+            "math",
+            "units",
+            "geometry",
+            "dem",
+            "rigid",
+            "fluid",
+            "coupling",
+            "simulation",
+            "io",
+            "scenario",
+        ],
+    ),
+    (
+        "bench",
+        &[
+            "math",
+            "units",
+            "geometry",
+            "dem",
+            "rigid",
+            "fluid",
+            "coupling",
+            "simulation",
+            "io",
+            "scenario",
+        ],
+    ),
+    (
+        "validation",
+        &[
+            "math",
+            "units",
+            "geometry",
+            "dem",
+            "rigid",
+            "fluid",
+            "coupling",
+            "simulation",
+            "io",
+            "scenario",
+        ],
+    ),
+];
+
+/// The `.rs` files under `dir`, recursively, in a fixed order.
+fn rust_files(dir: &Path, files: &mut Vec<PathBuf>) {
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|e| e.unwrap().path())
+        .collect();
+    entries.sort();
+    for p in entries {
+        if p.is_dir() {
+            rust_files(&p, files);
+        } else if p.extension().is_some_and(|e| e == "rs") {
+            files.push(p);
+        }
+    }
+}
+
+/// The module path of a file under `src/`: `dem/forces/kernel.rs` is `[dem, forces, kernel]`,
+/// `dem/forces/mod.rs` is `[dem, forces]`.
+fn module_path(rel: &Path) -> Vec<String> {
+    let mut parts: Vec<String> = rel
+        .iter()
+        .map(|c| c.to_string_lossy().trim_end_matches(".rs").to_string())
+        .collect();
+    if parts.last().is_some_and(|p| p == "mod") {
+        parts.pop();
+    }
+    parts
+}
+
+/// The leading identifier of `s` (empty if none).
+fn ident(s: &str) -> &str {
+    let end = s
+        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .unwrap_or(s.len());
+    &s[..end]
+}
+
+/// The top-level modules a path starting at the crate root names: `x` in `x::..`, or each
+/// group member's first segment in `{x::.., y::..}`.
+fn roots_after_crate(rest: &str) -> Vec<String> {
+    if let Some(group) = rest.strip_prefix('{') {
+        // Split the group at commas of depth 0 (nested braces belong to a member).
+        let mut names = Vec::new();
+        let mut depth = 0;
+        let mut start = 0;
+        for (i, c) in group.char_indices() {
+            match c {
+                '{' => depth += 1,
+                '}' if depth == 0 => {
+                    names.push(ident(group[start..i].trim()).to_string());
+                    break;
+                }
+                '}' => depth -= 1,
+                ',' if depth == 0 => {
+                    names.push(ident(group[start..i].trim()).to_string());
+                    start = i + 1;
+                }
+                _ => {}
+            }
+        }
+        names.retain(|n| !n.is_empty());
+        names
+    } else {
+        vec![ident(rest).to_string()]
+    }
+}
+
+/// The top-level modules a file's code (comments left out) names, with their line numbers.
+/// `module` is the file's module path, for resolving `super::` chains.
+fn used_modules(text: &str, module: &[String]) -> Vec<(usize, String)> {
+    let mut used = Vec::new();
+    // Whole-file code, comments blanked, so that a `use crate::{..}` may span lines.
+    let code: String = text
+        .lines()
+        .map(|l| {
+            let t = l.trim_start();
+            if t.starts_with("//") {
+                ""
+            } else {
+                l.split(" // ").next().unwrap_or("")
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let line_of = |at: usize| code[..at].matches('\n').count() + 1;
+    let preceded_by_path = |at: usize| code[..at].ends_with("::") || code[..at].ends_with('$');
+    for (at, _) in code.match_indices("crate::") {
+        if preceded_by_path(at) || code[..at].ends_with(|c: char| c.is_alphanumeric() || c == '_') {
+            continue;
+        }
+        for name in roots_after_crate(&code[at + "crate::".len()..]) {
+            used.push((line_of(at), name));
+        }
+    }
+    for (at, _) in code.match_indices("super::") {
+        if preceded_by_path(at) || code[..at].ends_with(|c: char| c.is_alphanumeric() || c == '_') {
+            continue;
+        }
+        let mut rest = &code[at..];
+        let mut up = 0;
+        while let Some(r) = rest.strip_prefix("super::") {
+            rest = r;
+            up += 1;
+        }
+        // `super` from a file module climbs to its parent; an inline module (`mod tests`)
+        // climbs one less, so this over-climbs there, which only names the own module.
+        if up >= module.len() {
+            for name in roots_after_crate(rest) {
+                used.push((line_of(at), name));
+            }
+        }
+    }
+    used
+}
+
+/// Every import against the map, as `file:line: module uses other`.
+fn imports_against_the_map(src: &Path) -> Vec<String> {
+    let modules: BTreeSet<&str> = MAP.iter().map(|(m, _)| *m).collect();
+    let mut bad = Vec::new();
+    for entry in std::fs::read_dir(src).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_stem().unwrap().to_string_lossy().to_string();
+        if name == "lib" || name == "main" {
+            continue;
+        }
+        assert!(
+            modules.contains(name.as_str()),
+            "src/{name}: a top-level module missing from the map in tests/layering.rs \
+             (add it where it stands in ARCHITECTURE.md's map)"
+        );
+    }
+    for (module, allowed) in MAP {
+        let mut files = Vec::new();
+        let file = src.join(format!("{module}.rs"));
+        if file.exists() {
+            files.push(file);
+        }
+        let dir = src.join(module);
+        if dir.is_dir() {
+            rust_files(&dir, &mut files);
+        }
+        assert!(
+            !files.is_empty(),
+            "the map names `{module}`, which src/ does not hold"
+        );
+        for f in files {
+            let rel = f.strip_prefix(src).unwrap();
+            let text = std::fs::read_to_string(&f).unwrap();
+            for (line, used) in used_modules(&text, &module_path(rel)) {
+                if used != *module
+                    && modules.contains(used.as_str())
+                    && !allowed.contains(&used.as_str())
+                {
+                    bad.push(format!(
+                        "src/{}:{line}: `{module}` uses `{used}`, which stands right of it",
+                        rel.display()
+                    ));
+                }
+            }
+        }
+    }
+    bad
+}
+
+#[test]
+fn every_module_uses_only_what_stands_to_its_left_in_the_map() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let bad = imports_against_the_map(&src);
+    assert!(
+        bad.is_empty(),
+        "{} against the module map (ARCHITECTURE.md):\n{}",
+        if bad.len() == 1 {
+            "1 import".to_string()
+        } else {
+            format!("{} imports", bad.len())
+        },
+        bad.join("\n")
+    );
+}
+
+/// The reader itself: it finds each form of path, and leaves comments alone.
+#[test]
+fn the_reader_finds_crate_group_and_super_paths_but_not_comments() {
+    let text = "use crate::dem::Spheres;\n\
+                use crate::{\n    fluid::Fluid,\n    io::{vtk, plot},\n};\n\
+                // use crate::scenario::build;\n\
+                /// see [`crate::run`]\n\
+                fn f() { let _ = crate::simulation::Simulation::new; }\n\
+                use super::super::bench::x;\n";
+    let used = used_modules(text, &["coupling".into(), "drag".into()]);
+    let names: Vec<&str> = used.iter().map(|(_, n)| n.as_str()).collect();
+    assert_eq!(names, ["dem", "fluid", "io", "simulation", "bench"]);
+    assert_eq!(used[0].0, 1);
+    assert_eq!(used[1].0, 2);
+    assert_eq!(used[4].0, 9);
+}
