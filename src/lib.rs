@@ -12,6 +12,8 @@
 //! * [`math`], [`units`]: vector types and named SI constants
 //! * [`geometry`]: where a sphere touches a plane, box, cylinder or triangle mesh
 //! * [`dem`]: spheres, materials, contact laws, neighbour search, walls, integration
+//! * [`rigid`]: blocks made of spheres (the passively moving solid model [34]-[49]), wires
+//!   and bonds
 //! * [`fluid`]: the LES of the water on a staggered grid (METHOD.md §4)
 //! * [`coupling`]: the Euler-Lagrange coupling of spheres and water ([53], [59]-[63], drag [5])
 //! * [`simulation`]: the order of the phases of a time step
