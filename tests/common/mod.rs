@@ -5,6 +5,7 @@
 #![allow(dead_code)]
 
 pub mod cli;
+pub mod scenario;
 
 use riprap::dem::domain::Domain;
 use riprap::dem::material::{ContactModel, Damping, Material, NormalSpring};
