@@ -63,6 +63,18 @@ enum Command {
         /// sheet_flow_settle and sheet_flow_bed_weight, run only when named).
         #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(riprap::validation::CASES))]
         only: Option<String>,
+        /// Case 5: beds in the ensemble (each one period, or half for a variant).
+        #[arg(long, default_value_t = riprap::validation::sheet_flow::ensemble::MEMBERS,
+              value_parser = clap::value_parser!(usize))]
+        members: usize,
+        /// Case 5's sensitivity: run only this variant (tall, wide, fine, coarse_grid, soft,
+        /// softer); without it, every variant not yet saved in --output.
+        #[arg(long, value_parser = ["tall", "wide", "fine", "coarse_grid", "soft", "softer"])]
+        variant: Option<String>,
+        /// Case 5: keep the members already complete in --output and run only the others
+        /// (to grow an ensemble, or finish one cut short, with the same code).
+        #[arg(long)]
+        resume: bool,
     },
     /// Validate a scenario and print the derived quantities (contact time, time step, ...).
     Check {
@@ -370,9 +382,23 @@ fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
             quick,
             output,
             only,
+            members,
+            variant,
+            resume,
         } => (|| {
+            anyhow::ensure!(
+                members >= 2,
+                "--members {members}: an ensemble needs at least 2 beds"
+            );
+            let case5 = riprap::validation::sheet_flow::sections::CaseFive {
+                members,
+                variant: variant
+                    .as_deref()
+                    .and_then(riprap::validation::sheet_flow::Level::named),
+                resume,
+            };
             let (_, ok) =
-                riprap::validation::run_validation_cases(&output, quick, only.as_deref())?;
+                riprap::validation::run_validation_cases(&output, quick, only.as_deref(), &case5)?;
             eprintln!("report: {}", output.join("report.md").display());
             if ok {
                 Ok(None)

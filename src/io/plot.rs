@@ -56,6 +56,10 @@ pub enum LineStyle {
     /// A large filled circle ringed in black at each point, drawn over every other series:
     /// the result a plot is about (e.g. riprap's points on a reference curve).
     Highlight,
+    /// A translucent filled area, the points its closed outline (e.g. mean + SE forward in
+    /// time, then mean − SE backward): an uncertainty band. It takes the colour of the series
+    /// after it, is drawn under every line, and has no legend entry of its own.
+    Band,
 }
 
 /// Titles and scaling of a plot.
@@ -314,7 +318,7 @@ where
                     .label(s.label)
                     .legend(move |(x, y)| Circle::new((x + 10, y), 6, color.filled()));
             }
-            LineStyle::Line => {
+            LineStyle::Line | LineStyle::Band => {
                 chart
                     .draw_series(LineSeries::new(pts, style))
                     .map_err(drawing)?
@@ -457,9 +461,25 @@ where
         .draw()
         .map_err(drawing)?;
 
-    let color = |i: usize| rgb(PALETTE[i % PALETTE.len()]);
-    if series.len() > 1 {
-        for (i, s) in series.iter().enumerate() {
+    // Palette slots: each series in order, but a band shares the slot of the series after it.
+    let band = |i: usize| series[i].style == LineStyle::Band;
+    let mut slot = vec![0; series.len()];
+    let mut n = 0;
+    for (i, s) in slot.iter_mut().enumerate() {
+        if !band(i) {
+            *s = n;
+            n += 1;
+        }
+    }
+    for i in (0..series.len()).rev() {
+        if band(i) {
+            slot[i] = slot.get(i + 1).copied().unwrap_or(n);
+        }
+    }
+    let color = |i: usize| rgb(PALETTE[slot[i] % PALETTE.len()]);
+    let legend = n > 1;
+    if legend {
+        for (i, s) in series.iter().enumerate().filter(|(i, _)| !band(*i)) {
             let (color, style) = (color(i), color(i).stroke_width(2));
             // An empty series carries the legend entry, drawn once however
             // many pieces the data is drawn in below.
@@ -474,7 +494,7 @@ where
                         + Circle::new((0, 0), 8, BLACK.filled())
                         + Circle::new((0, 0), 6, color.filled())
                 }),
-                LineStyle::Line => {
+                LineStyle::Line | LineStyle::Band => {
                     anno.legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style))
                 }
                 LineStyle::Dashed => anno.legend(move |(x, y)| {
@@ -485,10 +505,22 @@ where
             };
         }
     }
+    // Bands first, under every line; their outline's shown points only.
+    for i in (0..series.len()).filter(|&i| band(i)) {
+        let outline: Vec<(f64, f64)> = series[i].points.iter().copied().filter(shown).collect();
+        if outline.len() > 2 {
+            chart
+                .draw_series(std::iter::once(Polygon::new(
+                    outline,
+                    color(i).mix(0.25).filled(),
+                )))
+                .map_err(drawing)?;
+        }
+    }
     // Highlighted series last, so that no other covers them.
     let top = |i: &usize| series[*i].style == LineStyle::Highlight;
     let order = (0..series.len())
-        .filter(|i| !top(i))
+        .filter(|i| !top(i) && !band(*i))
         .chain((0..series.len()).filter(top));
     for i in order {
         let s = &series[i];
@@ -506,13 +538,13 @@ where
                         + Circle::new((0, 0), 8, BLACK.filled())
                         + Circle::new((0, 0), 6, color.filled())
                 })),
-                LineStyle::Line => chart.draw_series(LineSeries::new(pts, style)),
+                LineStyle::Line | LineStyle::Band => chart.draw_series(LineSeries::new(pts, style)),
                 LineStyle::Dashed => chart.draw_series(DashedLineSeries::new(pts, 12, 7, style)),
             }
             .map_err(drawing)?;
         }
     }
-    if series.len() > 1 {
+    if legend {
         draw_legend(&mut chart)?;
     }
     Ok(())
@@ -670,6 +702,38 @@ mod tests {
         assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
         assert!(svg.contains("Wave gauge 3") && svg.contains("surface elevation [m]"));
         assert!(svg.contains("simulation") && svg.contains("flume &amp; co"));
+    }
+
+    #[test]
+    fn a_band_is_filled_in_the_colour_of_the_line_after_it_without_a_legend_entry() {
+        let dir = test_dir("plot_band");
+        let path = dir.join("band.svg");
+        let (mean, other) = (wave(50, 0.1, 0.0), wave(50, 0.1, 0.3));
+        let outline: Vec<_> = mean
+            .iter()
+            .map(|&(t, y)| (t, y + 0.1))
+            .chain(mean.iter().rev().map(|&(t, y)| (t, y - 0.1)))
+            .collect();
+        let series = [
+            Series::new("band label never shown", &outline, LineStyle::Band),
+            Series::new("mean", &mean, Line),
+            Series::new("other", &other, Line),
+        ];
+        line_plot(&path, &AXES, &series).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        // The band: a polygon in the first palette colour (the mean's), translucent.
+        let polygon = svg
+            .lines()
+            .find(|l| l.contains("<polygon"))
+            .expect("a filled polygon");
+        assert!(polygon.contains("#1F77B4"), "{polygon}");
+        assert!(polygon.contains("opacity=\"0.25"), "{polygon}");
+        // The lines keep the palette order as if the band were not there.
+        assert!(
+            svg.contains("#FF7F0E"),
+            "the second line in the second colour"
+        );
+        assert!(svg.contains("mean") && !svg.contains("band label never shown"));
     }
 
     #[test]

@@ -27,7 +27,7 @@ use super::channel180::{
     mkm_1999_bulk_velocity, mkm_1999_profile, run_channel, ChannelCase, ChannelResult,
 };
 use super::cylinder_strouhal::{cylinder_level, roshko_1954, run_cylinder};
-use super::sheet_flow::{self, run_sheet_flow, Level};
+use super::sheet_flow::sections::{self, CaseFive};
 use super::sphere_drag::{run_sphere_drag, sphere_drag_level, standard_drag_curve};
 use crate::coupling::drag::{clift_grace_weber_1978, schiller_naumann_1933};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
@@ -76,7 +76,7 @@ pub fn cavity_cases(quick: bool) -> Vec<CavityCase> {
 /// Runs the cases, writes `report.md` and one PNG per case into `out`; returns the report and
 /// whether every case passed.
 pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)> {
-    run_validation_cases(out, quick, None)
+    run_validation_cases(out, quick, None, &CaseFive::default())
 }
 
 /// The names `riprap validate --only` accepts.
@@ -99,6 +99,7 @@ pub fn run_validation_cases(
     out: &Path,
     quick: bool,
     only: Option<&str>,
+    case5: &CaseFive,
 ) -> anyhow::Result<(String, bool)> {
     if let Some(name) = only {
         anyhow::ensure!(
@@ -130,158 +131,24 @@ pub fn run_validation_cases(
         all &= super::hopper_cloud::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
-        all &= sheet_flow_section(out, quick, &mut md)?;
+        all &= sections::ensemble(out, quick, case5, &mut md)?;
     }
-    // Long (three runs of half a period): only when named.
+    // Long (ensembles of the variants): only when named.
     if only == Some("sheet_flow_sensitivity") {
-        sheet_flow_sensitivity_section(out, quick, &mut md)?;
+        sections::sensitivity(out, quick, case5, &mut md)?;
     }
     // Tools of case 5 (README.md of the case), also only when named.
     if only == Some("sheet_flow_report") {
-        all &= sheet_flow_report_section(out, quick, &mut md)?;
+        all &= sections::report(out, quick, &mut md)?;
     }
     if only == Some("sheet_flow_settle") {
-        sheet_flow_settle_section(out, &mut md)?;
+        sections::settle(out, &mut md)?;
     }
     if only == Some("sheet_flow_bed_weight") {
-        sheet_flow_bed_weight_section(out, &mut md)?;
+        sections::bed_weight(out, &mut md)?;
     }
     std::fs::write(out.join("report.md"), &md)?;
     Ok((md, all))
-}
-
-/// Case 5 of the coupling: mixed-size oscillatory sheet flow; quick: 0.02 s of the base
-/// case (the flow starts, the bed holds); full: one period (29 minutes on 2 idle cores),
-/// its samples saved to `sheet_flow_full.bin` beside the report.
-fn sheet_flow_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
-    let level = if quick { Level::QUICK } else { Level::FULL };
-    md.push_str(
-        "\n## Coupling case 5: mixed-size oscillatory sheet flow (source figures 13, 14)\n\n",
-    );
-    let save = out.join(format!("sheet_flow_{}.bin", level.name));
-    let run = run_sheet_flow(&level, &out.join("sheet_flow_work"), Some(&save))?;
-    let (text, ok) = sheet_flow::report::write_report(out, "sheet_flow", &run)?;
-    md.push_str(&text);
-    eprintln!(
-        "sheet flow ({}): {} samples in {:.0} s -> {}",
-        level.name,
-        run.samples.len(),
-        run.seconds,
-        if ok { "pass" } else { "FAIL" }
-    );
-    Ok(ok)
-}
-
-/// Sensitivity of case 5 (run only when named): the first half period on the coarser grid
-/// Δ = d1/3 and with springs 4 times softer, against the base; reported, no verdict. The
-/// quick level runs the three variants for 0.02 s.
-fn sheet_flow_sensitivity_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<()> {
-    md.push_str("\n## Coupling case 5, sensitivity: grid and spring stiffness\n\n");
-    md.push_str(
-        "Centroid curves of the first half period on Δ = d1/3 and with E ÷ 4 (4e7 Pa, \
-         Δt = 2e-5 s) against the base (Δ = d1/4, E = 1.6e8 Pa); reported, no criterion.\n\n",
-    );
-    let mut runs = Vec::new();
-    for level in [Level::HALF, Level::COARSE_GRID, Level::SOFT] {
-        let level = if quick {
-            Level {
-                end_time: Level::QUICK.end_time,
-                sample_interval: Level::QUICK.sample_interval,
-                ..level
-            }
-        } else {
-            level
-        };
-        let save = out.join(format!("sheet_flow_{}.bin", level.name));
-        runs.push(run_sheet_flow(
-            &level,
-            &out.join("sheet_flow_work"),
-            Some(&save),
-        )?);
-    }
-    md.push_str(&sheet_flow::report::write_sensitivity(out, &runs)?);
-    Ok(())
-}
-
-/// Case 5's reports rebuilt from the samples an earlier `--only sheet_flow` (or
-/// `sheet_flow_sensitivity`) saved in `out`, also from a run cut short: the case's report from
-/// `sheet_flow_full.bin` (`sheet_flow_quick.bin` with `quick`), and the sensitivity report
-/// when `sheet_flow_half.bin` is there, with the variants found beside it.
-fn sheet_flow_report_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
-    let level = if quick { Level::QUICK } else { Level::FULL };
-    let path = out.join(format!("sheet_flow_{}.bin", level.name));
-    let run = sheet_flow::load_run(&path).map_err(|e| {
-        anyhow::anyhow!(
-            "{}: no saved samples of case 5 ({e}); run `riprap validate --only sheet_flow{}` \
-             with this --output first",
-            path.display(),
-            if quick { " --quick" } else { "" }
-        )
-    })?;
-    md.push_str(
-        "\n## Coupling case 5: mixed-size oscillatory sheet flow (source figures 13, 14)\n\n",
-    );
-    let (text, ok) = sheet_flow::report::write_report(out, "sheet_flow", &run)?;
-    md.push_str(&text);
-    eprintln!(
-        "sheet flow ({}, from {}): {} samples to t = {:.3} s -> {}",
-        level.name,
-        path.display(),
-        run.samples.len(),
-        run.samples.last().map_or(0.0, |s| s.time),
-        if ok { "pass" } else { "FAIL" }
-    );
-    let half = out.join(format!("sheet_flow_{}.bin", Level::HALF.name));
-    if let Ok(base) = sheet_flow::load_run(&half) {
-        let mut runs = vec![base];
-        for level in [Level::COARSE_GRID, Level::SOFT, Level::SOFTER] {
-            if let Ok(r) = sheet_flow::load_run(&out.join(format!("sheet_flow_{}.bin", level.name)))
-            {
-                runs.push(r);
-            }
-        }
-        md.push_str("\n## Coupling case 5, sensitivity: grid and spring stiffness\n\n");
-        md.push_str(&sheet_flow::report::write_sensitivity(out, &runs)?);
-    }
-    Ok(ok)
-}
-
-/// Settles case 5's bed again (`settle.toml`, DEM only, about 10 s) into `sheet_flow_bed.csv`
-/// in `out`; the case reads `bed.csv` of its directory, so a new bed is copied there by hand.
-fn sheet_flow_settle_section(out: &Path, md: &mut String) -> anyhow::Result<()> {
-    let path = out.join("sheet_flow_bed.csv");
-    let (n, fixed, surface, packing) = sheet_flow::settle_bed(&path)?;
-    let _ = writeln!(
-        md,
-        "\n## Coupling case 5: the settled bed\n\n{n} spheres, {fixed} of them fixed on the \
-         floor; bed surface {:.2} cm, bulk packing {packing:.3}. Written to `{}`; the case \
-         reads `src/validation/sheet_flow/bed.csv`, which this does not touch.",
-        surface * 100.0,
-        path.display()
-    );
-    eprintln!(
-        "sheet flow bed: {n} spheres, {fixed} fixed -> {}",
-        path.display()
-    );
-    Ok(())
-}
-
-/// How much of case 5's resting bed the pressure carries (`sheet_flow::bed_weight`);
-/// reported, no verdict.
-fn sheet_flow_bed_weight_section(out: &Path, md: &mut String) -> anyhow::Result<()> {
-    let work = out.join("sheet_flow_work");
-    let by_class = sheet_flow::bed_weight::bed_weight_carried_by_the_pressure(&work)?;
-    md.push_str(
-        "\n## Coupling case 5: the bed's weight carried by the pressure\n\n\
-         After 0.004 s of the base case: the mean vertical [59] force on the spheres 1.5 to \
-         3.5 cm up, in units of their submerged weight (near 0 when the bed rests on its \
-         contacts).\n\n| class | spheres | vertical [59] force / submerged weight |\n|---|---:|---:|\n",
-    );
-    for (name, (ratio, n)) in ["small", "medium", "large"].iter().zip(by_class) {
-        let _ = writeln!(md, "| {name} | {n} | {ratio:.3} |");
-        eprintln!("sheet flow bed weight, {name}: {n} spheres, {ratio:.3} of the submerged weight");
-    }
-    Ok(())
 }
 
 /// Case 1 of the coupling (METHOD.md §5): C_D of a fixed sphere against the standard curve.

@@ -9,8 +9,11 @@
 //! bed into `bed.csv`; set-up, criteria and measured numbers in `README.md`.
 
 pub mod bed_weight;
+pub mod ensemble;
 pub mod measure;
 pub mod report;
+pub mod sections;
+pub mod stats;
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -38,6 +41,12 @@ pub const BED: &str = include_str!("bed.csv");
 
 /// Diameters of the three size classes d1, d2, d3 [m].
 pub const D: [f64; 3] = [0.00515, 0.00988, 0.0156];
+/// Length of the box along the flow, L_x [m] (80 cells of d1/4).
+pub const LENGTH: f64 = 0.103;
+/// Base width of the box, L_y [m] (36 cells of d1/4).
+pub const WIDTH: f64 = 0.04635;
+/// Base height of the box, L_z [m] (72 cells of d1/4).
+pub const HEIGHT: f64 = 0.0927;
 /// Period T [s] and velocity amplitude U_max [m s⁻¹] of the oscillatory flow.
 pub const PERIOD: f64 = 5.0;
 /// U_max [m s⁻¹].
@@ -74,6 +83,10 @@ pub struct Level {
     pub time_step: f64,
     /// Interval between samples [s].
     pub sample_interval: f64,
+    /// Width of the box across the flow, L_y [m]; the bed scales with it (same statistics).
+    pub width: f64,
+    /// Height of the box, L_z [m] (the bed is the same; more water above it).
+    pub height: f64,
 }
 
 impl Level {
@@ -86,6 +99,8 @@ impl Level {
         young_modulus: 1.6e8,
         time_step: 1.0e-5,
         sample_interval: PERIOD / 160.0,
+        width: WIDTH,
+        height: HEIGHT,
     };
     /// The first half period of the base case (the source's figure 13).
     pub const HALF: Level = Level {
@@ -126,25 +141,75 @@ impl Level {
         ..Level::HALF
     };
 
-    /// The level of a name (`full`, `half`, `quick`, `coarse_grid`, `soft`, `softer`).
+    /// Sensitivity: the box 1.5 times taller (13.9 cm, 108 cells), 9 cm of water over the
+    /// bed instead of 4 cm, first half period.
+    pub const TALL: Level = Level {
+        name: "tall",
+        height: 1.5 * HEIGHT,
+        ..Level::HALF
+    };
+    /// Sensitivity: the box twice as wide (9.27 cm, 72 cells) with twice the spheres, first
+    /// half period.
+    pub const WIDE: Level = Level {
+        name: "wide",
+        width: 2.0 * WIDTH,
+        ..Level::HALF
+    };
+    /// Sensitivity: the finer grid Δ = d1/5 (100 × 45 × 90 cells), first half period.
+    pub const FINE: Level = Level {
+        name: "fine",
+        cell_size: D[0] / 5.0,
+        ..Level::HALF
+    };
+
+    /// Every level, the base first.
+    pub const ALL: [Level; 9] = [
+        Level::FULL,
+        Level::HALF,
+        Level::QUICK,
+        Level::COARSE_GRID,
+        Level::SOFT,
+        Level::SOFTER,
+        Level::TALL,
+        Level::WIDE,
+        Level::FINE,
+    ];
+
+    /// The variants of the sensitivity study (`riprap validate --only sheet_flow_sensitivity`).
+    pub const VARIANTS: [Level; 6] = [
+        Level::TALL,
+        Level::WIDE,
+        Level::FINE,
+        Level::COARSE_GRID,
+        Level::SOFT,
+        Level::SOFTER,
+    ];
+
+    /// The level of a name (`full`, `half`, `quick`, `coarse_grid`, `soft`, `softer`, `tall`,
+    /// `wide`, `fine`).
     pub fn named(name: &str) -> Option<Level> {
-        [
-            Level::FULL,
-            Level::HALF,
-            Level::QUICK,
-            Level::COARSE_GRID,
-            Level::SOFT,
-            Level::SOFTER,
-        ]
-        .into_iter()
-        .find(|l| l.name == name)
+        Level::ALL.into_iter().find(|l| l.name == name)
+    }
+
+    /// How many copies of the source's 900 spheres the bed holds (the box's width over the
+    /// base width).
+    pub fn bed_copies(&self) -> usize {
+        (self.width / WIDTH).round() as usize
     }
 }
 
-/// The scenario text of a level (the base scenario with its end time, grid, stiffness and
-/// step replaced).
+/// The scenario text of a level (the base scenario with its end time, grid, stiffness,
+/// step and box replaced).
 pub fn scenario(level: &Level) -> String {
     SCENARIO
+        .replace(
+            "max = [0.103, 0.04635, 0.0927] ",
+            &format!("max = [0.103, {:?}, {:?}] ", level.width, level.height),
+        )
+        .replace(
+            "point = [0.0, 0.0, 0.0927]",
+            &format!("point = [0.0, 0.0, {:?}]", level.height),
+        )
         .replace(
             "end_time = 5.0 ",
             &format!("end_time = {:?} ", level.end_time),
@@ -212,19 +277,56 @@ pub fn case_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("src/validation/sheet_flow")
 }
 
-/// Runs `settle.toml` (DEM only, submerged weight) and writes the settled bed to `path` as
-/// `x,y,z,diameter,fixed` [m], the spheres within 1 % of d1 of the floor fixed. Returns the
-/// number of spheres, of fixed ones, the bed surface [m] and the bulk packing [–].
-pub fn settle_bed(path: &Path) -> anyhow::Result<(usize, usize, f64, f64)> {
-    let src = Source::from_str(SETTLE, "sheet_flow/settle.toml", case_dir())?;
+/// A settled bed: `x,y,z,diameter,fixed` [m] as `bed.csv` holds it, and what it is.
+#[derive(Clone, Debug)]
+pub struct Bed {
+    /// The bed as CSV text.
+    pub csv: String,
+    /// Spheres, and those fixed on the floor.
+    pub spheres: usize,
+    /// See [`Bed::spheres`].
+    pub fixed: usize,
+    /// Bed surface [m] and bulk packing [–] ([`measure::bed_surface`]).
+    pub surface: f64,
+    /// See [`Bed::surface`].
+    pub packing: f64,
+}
+
+/// The settling scenario for a random fill of `seed` in a box `width` wide [m]: `settle.toml`
+/// with its seed, its box and its counts (scaled with the width) replaced.
+pub fn settle_scenario(seed: u64, width: f64) -> String {
+    let copies = (width / WIDTH).round() as usize;
+    let mut text = SETTLE
+        .replace("seed = 5\n", &format!("seed = {seed}\n"))
+        .replace(
+            "max = [0.103, 0.04635, 0.30]",
+            &format!("max = [0.103, {width:?}, 0.30]"),
+        )
+        .replace(
+            "max = [0.103, 0.04635, 0.29]",
+            &format!("max = [0.103, {width:?}, 0.29]"),
+        );
+    for n in [770, 103, 27] {
+        text = text.replace(
+            &format!("count = {n} "),
+            &format!("count = {} ", n * copies),
+        );
+    }
+    text
+}
+
+/// Runs [`settle_scenario`] (DEM only, submerged weight, about 10 s) and returns the settled
+/// bed, the spheres within 1 % of d1 of the floor fixed.
+pub fn settle(seed: u64, width: f64) -> anyhow::Result<Bed> {
+    let text = settle_scenario(seed, width);
+    let src = Source::from_str(&text, "sheet_flow/settle.toml", case_dir())?;
     let t_end = src.scenario.run.end_time;
     let mut sim = build(&src)?.simulation;
     while sim.time < t_end - 1e-12 {
         sim.step()?;
     }
     let s = &sim.dem.spheres;
-    let lengths = [0.103, 0.04635];
-    let mut text = String::from("x,y,z,diameter,fixed\n");
+    let mut csv = String::from("x,y,z,diameter,fixed\n");
     let mut fixed = 0;
     let mut top: f64 = 0.0;
     for i in 0..s.len() {
@@ -233,10 +335,10 @@ pub fn settle_bed(path: &Path) -> anyhow::Result<(usize, usize, f64, f64)> {
         let on_floor = x.z - r < 0.01 * D[0];
         fixed += on_floor as usize;
         top = top.max(x.z + r);
-        text.push_str(&format!(
+        csv.push_str(&format!(
             "{:.9e},{:.9e},{:.9e},{:.6e},{}\n",
-            x.x.rem_euclid(lengths[0]),
-            x.y.rem_euclid(lengths[1]),
+            x.x.rem_euclid(LENGTH),
+            x.y.rem_euclid(width),
             x.z,
             2.0 * r,
             on_floor as u8
@@ -244,17 +346,30 @@ pub fn settle_bed(path: &Path) -> anyhow::Result<(usize, usize, f64, f64)> {
     }
     let speed = s.velocity.iter().map(|v| v.length()).fold(0.0, f64::max);
     eprintln!(
-        "settled bed: {} spheres, {fixed} fixed, top {top:.4} m, max speed {speed:.2e} m/s",
+        "settled bed (seed {seed}): {} spheres, {fixed} fixed, top {top:.4} m, max speed {speed:.2e} m/s",
         s.len()
     );
     anyhow::ensure!(
-        top < 0.0927 - 0.01,
-        "the settled bed reaches {top} m: too high for the case's box"
+        top < HEIGHT - 0.01,
+        "the settled bed (seed {seed}) reaches {top} m: too high for the case's box"
     );
-    std::fs::write(path, text)?;
     let (z, phi) = profile(&sim);
     let (surface, packing) = bed_surface(&z, &phi, (0.015, 0.035));
-    Ok((s.len(), fixed, surface, packing))
+    Ok(Bed {
+        csv,
+        spheres: s.len(),
+        fixed,
+        surface,
+        packing,
+    })
+}
+
+/// Settles the case's own bed (seed 5, the base box) again and writes it to `path`
+/// (`riprap validate --only sheet_flow_settle`).
+pub fn settle_bed(path: &Path) -> anyhow::Result<Bed> {
+    let bed = settle(5, WIDTH)?;
+    std::fs::write(path, &bed.csv)?;
+    Ok(bed)
 }
 
 /// Heights every d1/8 up to 9 cm and the solid fraction at them.
@@ -263,7 +378,8 @@ fn profile(sim: &Simulation) -> (Vec<f64>, Vec<f64>) {
     let z: Vec<f64> = (0..=(0.09 / (D[0] / 8.0)) as usize)
         .map(|k| k as f64 * D[0] / 8.0)
         .collect();
-    let area = 0.103 * 0.04635;
+    let d = &sim.dem.domain;
+    let area = (d.max.x - d.min.x) * (d.max.y - d.min.y);
     let phi = solid_fraction_profile(&s.position, &s.radius, area, &z);
     (z, phi)
 }
@@ -371,16 +487,28 @@ fn sample(
     }
 }
 
-/// Runs a level: writes the bed into `work` (a folder), builds the scenario, samples every
-/// `sample_interval`, and after each sample writes the run so far to `save` (postcard) when
-/// given, so that a report can be rebuilt from a run cut short.
+/// Runs a level on the case's own bed (`bed.csv`): see [`run_on_bed`].
 pub fn run_sheet_flow(
     level: &Level,
     work: &Path,
     save: Option<&Path>,
 ) -> anyhow::Result<SheetFlowRun> {
+    run_on_bed(level, level.name, BED, work, save)
+}
+
+/// Runs a level on `bed` (CSV text) under the name `name`: writes the bed into `work` (a
+/// folder), builds the scenario, samples every `sample_interval`, and after each sample writes
+/// the run so far to `save` (postcard) when given, so that a report can be rebuilt from a run
+/// cut short.
+pub fn run_on_bed(
+    level: &Level,
+    name: &str,
+    bed: &str,
+    work: &Path,
+    save: Option<&Path>,
+) -> anyhow::Result<SheetFlowRun> {
     std::fs::create_dir_all(work)?;
-    std::fs::write(work.join("bed.csv"), BED)?;
+    std::fs::write(work.join("bed.csv"), bed)?;
     let text = scenario(level);
     let src = Source::from_str(&text, "sheet_flow/scenario.toml", work.to_path_buf())?;
     let mut sim = build(&src)?.simulation;
@@ -391,7 +519,7 @@ pub fn run_sheet_flow(
         .collect();
     let clock = Instant::now();
     let mut run = SheetFlowRun {
-        level: level.name.to_string(),
+        level: name.to_string(),
         cell_size: level.cell_size,
         samples: Vec::new(),
         steps: 0,
@@ -412,7 +540,7 @@ pub fn run_sheet_flow(
             eprintln!(
                 "sheet flow {}: t {:.4} s, z_c/d1 {:.3} {:.3} {:.3}, bed {:.4} m, top u {:.3} m/s, \
                  max speed {:.3} m/s, {:.0} s",
-                level.name,
+                name,
                 last.time,
                 last.centroid[0] / D[0],
                 last.centroid[1] / D[0],

@@ -5,7 +5,9 @@ use std::f64::consts::TAU;
 use std::fmt::Write as _;
 use std::path::Path;
 
+use super::ensemble::{mean_centroid, summarise_ensemble};
 use super::measure::at_time;
+use super::stats::{Estimate, Verdict};
 use super::{summarise, SheetFlowRun, CONTACT_BELOW, CONTACT_LAYERS, D, PERIOD, U_MAX};
 use crate::io::plot::{heat_map, line_plot, Axes, Field, LineStyle, Series};
 
@@ -367,6 +369,263 @@ pub fn write_sensitivity(out: &Path, runs: &[SheetFlowRun]) -> anyhow::Result<St
         &out.join("sheet_flow_sensitivity.png"),
         &Axes {
             title: "Sheet flow: centroids of the small and large classes, base and variants",
+            x_label: "phase φ/π",
+            y_label: "z_c / d1",
+            log_y: false,
+        },
+        &series,
+    )?;
+    md.push_str("\n![sensitivity](sheet_flow_sensitivity.png)\n");
+    Ok(md)
+}
+
+/// `x̄ ± SE` of an optional estimate, or a dash.
+fn est(e: Option<Estimate>) -> String {
+    e.map_or("–".to_string(), |e| e.text())
+}
+
+/// The outline of the band mean ± SE of a curve (t, mean, SE), with t as phase φ/π.
+fn band(curve: &[(f64, f64, f64)]) -> Vec<(f64, f64)> {
+    let up = curve.iter().map(|&(t, m, e)| (phase(t), m + e));
+    let down = curve.iter().rev().map(|&(t, m, e)| (phase(t), m - e));
+    up.chain(down).collect()
+}
+
+/// Writes the report of an ensemble of members of one level (in seed order; `wall` the
+/// wall-clock time of the whole [s]): the members one by one, the phase table as mean ± SE,
+/// criteria (a) and (b) decided on the means at 95 % confidence, and two plots (the mean
+/// centroids with their bands; every member's small class). Returns (Markdown, passed):
+/// passed only when both criteria hold (undecided is not a pass).
+pub fn write_ensemble_report(
+    out: &Path,
+    prefix: &str,
+    runs: &[SheetFlowRun],
+    wall: Option<f64>,
+) -> anyhow::Result<(String, bool)> {
+    let sum = summarise_ensemble(runs);
+    let mut md = String::new();
+    let member_seconds = Estimate::of(&runs.iter().map(|r| r.seconds).collect::<Vec<_>>());
+    let steps = runs.iter().map(|r| r.steps).sum::<u64>() / runs.len().max(1) as u64;
+    let _ = writeln!(
+        md,
+        "Ensemble of {} independent beds (`{}` … `{}`), each a random fill of its own seed \
+         settled by `settle.toml`; Δ = {:.4} mm; {steps} fluid steps and {:.0} s of \
+         wall-clock time per member on average (settling included){}. Values are the mean \
+         over the members ± its standard error; a criterion is decided when the one-sided 95 % \
+         Student-t bound clears its threshold. Set-up and criteria: \
+         `src/validation/sheet_flow/README.md`.\n",
+        runs.len(),
+        runs.first().map_or("", |r| r.level.as_str()),
+        runs.last().map_or("", |r| r.level.as_str()),
+        runs.first().map_or(0.0, |r| r.cell_size) * 1e3,
+        member_seconds.mean,
+        wall.map_or(String::new(), |w| format!("; the whole ensemble {w:.0} s"))
+    );
+    md.push_str(
+        "| member | t_end [s] | (a) small 2π/8…5π/8 [d1] | 5π/8…π [d1] | z_c small − large, start [d1] | end [d1] | wall-clock [s] |\n\
+         |---|---:|---:|---:|---:|---:|---:|\n",
+    );
+    let value = |v: Option<f64>| v.map_or("–".to_string(), |v| format!("{v:+.3}"));
+    for r in runs {
+        let s = summarise(r);
+        let _ = writeln!(
+            md,
+            "| {} | {:.3} | {} | {} | {:+.3} | {:+.3} | {:.0} |",
+            r.level,
+            r.samples.last().map_or(0.0, |p| p.time),
+            value(s.small_fall),
+            value(s.small_after),
+            s.gap.0,
+            s.gap.1,
+            r.seconds
+        );
+    }
+    md.push_str(
+        "\n| φ | z_c small [d1] | z_c medium [d1] | z_c large [d1] | bed surface [d1] | production peak above bed [d1] |\n\
+         |---|---:|---:|---:|---:|---:|\n",
+    );
+    for p in &sum.phases {
+        let _ = writeln!(
+            md,
+            "| {}π/4 | {} | {} | {} | {} | {} |",
+            p.k,
+            p.centroid[0].text(),
+            p.centroid[1].text(),
+            p.centroid[2].text(),
+            p.bed_surface.text(),
+            est(p.peak_height)
+        );
+    }
+    let bound = |e: Option<Estimate>| {
+        e.map_or("–".to_string(), |e| {
+            format!("[{:+.3}, {:+.3}]", e.lower(), e.upper())
+        })
+    };
+    let needed = |e: Option<Estimate>, threshold: f64| {
+        e.and_then(|e| e.members_to_decide(threshold))
+            .map_or("–".to_string(), |n| n.to_string())
+    };
+    let _ = writeln!(
+        md,
+        "\n* (a) **{}.** z_c(small) changes by {} d1 over 2π/8…5π/8 (95 % bounds {}; \
+         criterion: below −0.1 d1, members needed to decide at this spread: {}) and by {} d1 \
+         over 5π/8…π; |after| − |fall| member by member {} d1 (bounds {}; criterion: below 0, \
+         members needed: {}).",
+        sum.sinking.text(),
+        est(sum.fall),
+        bound(sum.fall),
+        needed(sum.fall, -0.1),
+        est(sum.after),
+        est(sum.level_off),
+        bound(sum.level_off),
+        needed(sum.level_off, 0.0),
+    );
+    let _ = writeln!(
+        md,
+        "* (b) **{}.** z_c(small) − z_c(large) goes from {} d1 at the start to {} d1 at the \
+         end (change {} d1, bounds [{:+.3}, {:+.3}]; criterion: the end and the change both \
+         below 0).",
+        sum.sieving.text(),
+        sum.gap_start.text(),
+        sum.gap_end.text(),
+        sum.gap_change.text(),
+        sum.gap_change.lower(),
+        sum.gap_change.upper()
+    );
+    let ok = sum.sinking == Verdict::Holds && sum.sieving == Verdict::Holds;
+    let _ = writeln!(
+        md,
+        "\nVerdict ({} members): {}\n",
+        runs.len(),
+        if ok { "pass" } else { "FAIL" }
+    );
+    // The mean centroids with their bands.
+    let dt = PERIOD / 80.0;
+    let curves: Vec<Vec<(f64, f64, f64)>> = (0..3).map(|c| mean_centroid(runs, c, dt)).collect();
+    let bands: Vec<Vec<(f64, f64)>> = curves.iter().map(|c| band(c)).collect();
+    let means: Vec<Vec<(f64, f64)>> = curves
+        .iter()
+        .map(|c| c.iter().map(|&(t, m, _)| (phase(t), m)).collect())
+        .collect();
+    let labels = ["small (d1)", "medium (d2)", "large (d3)"];
+    let mut series = Vec::new();
+    for c in 0..3 {
+        series.push(Series::new("", &bands[c], LineStyle::Band));
+        series.push(Series::new(labels[c], &means[c], LineStyle::Line));
+    }
+    let png = format!("{prefix}_ensemble_centroids.png");
+    line_plot(
+        &out.join(&png),
+        &Axes {
+            title: "Sheet flow: concentration centroids, ensemble mean ± standard error",
+            x_label: "phase φ/π",
+            y_label: "z_c / d1",
+            log_y: false,
+        },
+        &series,
+    )?;
+    let _ = writeln!(md, "![ensemble centroids]({png})\n");
+    let members: Vec<(String, Vec<(f64, f64)>)> = runs
+        .iter()
+        .map(|r| {
+            (
+                r.level.clone(),
+                r.samples
+                    .iter()
+                    .map(|p| (phase(p.time), p.centroid[0] / D[0]))
+                    .collect(),
+            )
+        })
+        .collect();
+    let mut series: Vec<Series> = members
+        .iter()
+        .map(|(l, p)| Series::new(l, p, LineStyle::Line))
+        .collect();
+    series.push(Series::new("mean", &means[0], LineStyle::Dashed));
+    let png = format!("{prefix}_ensemble_small.png");
+    line_plot(
+        &out.join(&png),
+        &Axes {
+            title: "Sheet flow: centroid of the small class in each member",
+            x_label: "phase φ/π",
+            y_label: "z_c / d1",
+            log_y: false,
+        },
+        &series,
+    )?;
+    let _ = writeln!(md, "![members' small class]({png})\n");
+    Ok((md, ok))
+}
+
+/// Writes the sensitivity table of ensembles: the base (its first half period) and each
+/// variant, criterion (a)'s windows as mean ± SE, the largest difference of the mean
+/// centroid curves from the base's over the first half period, and a plot of the mean small
+/// class of each with its band.
+pub fn write_ensemble_sensitivity(
+    out: &Path,
+    ensembles: &[(String, Vec<SheetFlowRun>)],
+) -> anyhow::Result<String> {
+    let mut md = String::from(
+        "| ensemble | members | Δ [mm] | (a) small 2π/8…5π/8 [d1] | 5π/8…π [d1] | (a) | largest Δ of the mean z_c from the base, small [d1] | medium [d1] | large [d1] | wall-clock per member [s] |\n\
+         |---|---:|---:|---:|---:|---|---:|---:|---:|---:|\n",
+    );
+    let dt = PERIOD / 80.0;
+    let half = |c: Vec<(f64, f64, f64)>| -> Vec<(f64, f64, f64)> {
+        c.into_iter()
+            .filter(|p| p.0 <= 0.5 * PERIOD + 1e-9)
+            .collect()
+    };
+    // The base is the first ensemble when it is the `full` level's.
+    let base: Option<Vec<Vec<(f64, f64, f64)>>> = ensembles
+        .first()
+        .filter(|(n, _)| n == super::Level::FULL.name)
+        .map(|(_, r)| (0..3).map(|c| half(mean_centroid(r, c, dt))).collect());
+    // (name, band, mean) of the small class per ensemble.
+    type Points = Vec<(f64, f64)>;
+    let mut plots: Vec<(&str, Points, Points)> = Vec::new();
+    for (name, runs) in ensembles {
+        let s = summarise_ensemble(runs);
+        let mine: Vec<Vec<(f64, f64, f64)>> =
+            (0..3).map(|c| half(mean_centroid(runs, c, dt))).collect();
+        let diff: Vec<String> = (0..3)
+            .map(|c| match &base {
+                Some(base) if name != super::Level::FULL.name => {
+                    let d = mine[c]
+                        .iter()
+                        .zip(&base[c])
+                        .map(|(a, b)| (a.1 - b.1).abs())
+                        .fold(0.0, f64::max);
+                    format!("{d:.3}")
+                }
+                _ => "–".to_string(),
+            })
+            .collect();
+        let secs = Estimate::of(&runs.iter().map(|r| r.seconds).collect::<Vec<_>>());
+        let _ = writeln!(
+            md,
+            "| {name} | {} | {:.4} | {} | {} | {} | {} | {} | {} | {:.0} |",
+            runs.len(),
+            runs.first().map_or(0.0, |r| r.cell_size) * 1e3,
+            est(s.fall),
+            est(s.after),
+            s.sinking.text(),
+            diff[0],
+            diff[1],
+            diff[2],
+            secs.mean
+        );
+        let mean = mine[0].iter().map(|&(t, v, _)| (phase(t), v)).collect();
+        plots.push((name.as_str(), band(&mine[0]), mean));
+    }
+    let mut series = Vec::new();
+    for (n, b, m) in &plots {
+        series.push(Series::new("", b, LineStyle::Band));
+        series.push(Series::new(n, m, LineStyle::Line));
+    }
+    line_plot(
+        &out.join("sheet_flow_sensitivity.png"),
+        &Axes {
+            title: "Sheet flow: small class, ensemble mean ± SE, base and variants",
             x_label: "phase φ/π",
             y_label: "z_c / d1",
             log_y: false,
