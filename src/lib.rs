@@ -5,11 +5,11 @@
 //! in both directions. The method, with its equation numbers, is
 //! `docs/METHOD.md`; doc comments cite those numbers in brackets, e.g. [9].
 //!
-//! Module map (a module uses what is above it, never what is below; `fluid` uses only `math`
-//! and `units`, and `run`, `bench`, `validation` do not use each other; `tests/layering.rs`
+//! Module map (a module uses what is above it, never what is below; `fluid` uses only `math`,
+//! and `run`, `bench`, `validation` do not use each other; `tests/layering.rs`
 //! fails on an import against it):
 //!
-//! * [`math`], [`units`]: vector types and named SI constants
+//! * [`math`]: vector types (one name each) and the few vector helpers
 //! * [`geometry`]: where a sphere touches a plane, box, cylinder or triangle mesh
 //! * [`dem`]: spheres, materials, contact laws, neighbour search, walls, integration
 //! * [`rigid`]: blocks made of spheres (the passively moving solid model [34]-[49]), wires
@@ -43,5 +43,4 @@ pub mod rigid;
 pub mod run;
 pub mod scenario;
 pub mod simulation;
-pub mod units;
 pub mod validation;

@@ -1,7 +1,8 @@
 //! Vector types and the few helpers the physics needs.
 //!
-//! riprap uses glam's f64 types throughout: `Vec3` for positions, velocities and forces,
-//! `Quat` and `Mat3` for rotations.
+//! riprap uses glam's f64 types throughout, under one name each: `Vec3` (glam's `DVec3`)
+//! for positions, velocities and forces, `Quat` and `Mat3` (`DQuat`, `DMat3`) for rotations.
+//! Every module imports them from here, so that one type never goes by two names.
 
 pub use glam::{DMat3 as Mat3, DQuat as Quat, DVec3 as Vec3};
 

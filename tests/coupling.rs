@@ -225,7 +225,7 @@ mode = "auto"
         }
         let s = &sim.dem.spheres;
         let ps = s.mass[0] * s.velocity[0];
-        (glam::DVec3::from_array(p), ps)
+        (riprap::math::Vec3::from_array(p), ps)
     };
     let (f0, s0) = momentum(&sim);
     let total0 = f0 + s0;

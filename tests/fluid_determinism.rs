@@ -8,27 +8,27 @@
 //!
 //! Run: `cargo test --release --test fluid_determinism -- --nocapture` (about a second).
 
-use glam::DVec3;
 use riprap::fluid::{
     Boundaries, Boundary, DrivingPressureGradient, Fluid, FluidParameters, FluidState, Smagorinsky,
     StaggeredGrid,
 };
+use riprap::math::Vec3;
 
 fn case() -> Fluid {
-    let grid = StaggeredGrid::new([32, 16, 32], DVec3::new(0.32, 0.16, 0.32), DVec3::ZERO);
+    let grid = StaggeredGrid::new([32, 16, 32], Vec3::new(0.32, 0.16, 0.32), Vec3::ZERO);
     let lid = Boundary::Wall {
-        velocity: DVec3::new(0.2, 0.05, 0.0),
+        velocity: Vec3::new(0.2, 0.05, 0.0),
     };
     let bcs = Boundaries::periodic().with(2, Boundary::WALL, lid);
     let mut par = FluidParameters::water();
     par.smagorinsky = Some(Smagorinsky::default());
     par.driving_pressure_gradient = DrivingPressureGradient::Oscillatory {
-        velocity_amplitude: DVec3::new(0.3, 0.0, 0.0),
+        velocity_amplitude: Vec3::new(0.3, 0.0, 0.0),
         period: 2.0,
     };
     let mut fluid = Fluid::new(grid, bcs, par).unwrap();
     fluid.set_velocity(|x| {
-        DVec3::new(
+        Vec3::new(
             0.1 * (20.0 * x.z).sin() * (13.0 * x.y).cos(),
             0.05 * (17.0 * x.x).sin(),
             0.05 * (11.0 * x.x).cos() * (9.0 * x.z).sin() * (1.0 - (x.z / 0.16 - 1.0).powi(2)),
@@ -36,7 +36,7 @@ fn case() -> Fluid {
     });
     fluid.project();
     fluid.set_mixture_density(|x| {
-        if (x - DVec3::new(0.16, 0.08, 0.2)).length() < 0.05 {
+        if (x - Vec3::new(0.16, 0.08, 0.2)).length() < 0.05 {
             1800.0
         } else {
             998.2

@@ -3,8 +3,8 @@
 //!
 //! Run: `cargo test --release --test fluid_inflow_outflow -- --nocapture` (about a second).
 
-use glam::DVec3;
 use riprap::fluid::{Boundaries, Boundary, Fluid, FluidParameters, InflowVelocity, StaggeredGrid};
+use riprap::math::Vec3;
 use std::f64::consts::TAU;
 
 const RHO: f64 = 1000.0;
@@ -29,10 +29,10 @@ fn oscillating_inflow_drives_an_exact_plug_flow() {
     // Free-slip walls: nothing resists the flow, so incompressibility makes u = U_in(t)
     // everywhere at every instant, and the pressure gradient is the one that accelerates the
     // whole column: δp/δx = −ρ (U(tⁿ⁺¹) − U(tⁿ))/Δt.
-    let grid = StaggeredGrid::new([24, 1, 8], DVec3::new(3.0, 0.125, 1.0), DVec3::ZERO);
+    let grid = StaggeredGrid::new([24, 1, 8], Vec3::new(3.0, 0.125, 1.0), Vec3::ZERO);
     let inflow = InflowVelocity {
-        mean: DVec3::new(0.5, 0.0, 0.0),
-        amplitude: DVec3::new(0.2, 0.0, 0.0),
+        mean: Vec3::new(0.5, 0.0, 0.0),
+        amplitude: Vec3::new(0.2, 0.0, 0.0),
         period: 2.0,
     };
     let bcs = Boundaries::periodic()
@@ -77,16 +77,16 @@ fn developing_channel_flow_becomes_poiseuille_downstream() {
     let h = 1.0;
     let u_in = 1.0;
     let nu = u_in * h / 20.0;
-    let grid = StaggeredGrid::new([96, 1, 16], DVec3::new(6.0 * h, h / 16.0, h), DVec3::ZERO);
+    let grid = StaggeredGrid::new([96, 1, 16], Vec3::new(6.0 * h, h / 16.0, h), Vec3::ZERO);
     let bcs = Boundaries::periodic()
         .with(
             0,
-            Boundary::Inflow(InflowVelocity::steady(DVec3::new(u_in, 0.0, 0.0))),
+            Boundary::Inflow(InflowVelocity::steady(Vec3::new(u_in, 0.0, 0.0))),
             Boundary::Outflow,
         )
         .with(2, Boundary::WALL, Boundary::WALL);
     let mut fluid = Fluid::new(grid, bcs, FluidParameters::laminar(RHO, nu)).unwrap();
-    fluid.set_velocity(|_| DVec3::new(u_in, 0.0, 0.0));
+    fluid.set_velocity(|_| Vec3::new(u_in, 0.0, 0.0));
     fluid.project();
     let mut max_div = 0.0f64;
     while fluid.time() < 20.0 {

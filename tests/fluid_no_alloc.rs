@@ -3,11 +3,11 @@
 //!
 //! Run: `cargo test --release --test fluid_no_alloc`.
 
-use glam::DVec3;
 use riprap::fluid::{
     Boundaries, Boundary, DrivingPressureGradient, Fluid, FluidParameters, InflowVelocity,
     StaggeredGrid,
 };
+use riprap::math::Vec3;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -43,22 +43,22 @@ fn a_step_allocates_nothing() {
         .unwrap();
     pool.install(|| {
         for n in [[12, 4, 10], [40, 12, 40]] {
-            let grid = StaggeredGrid::new(n, DVec3::new(1.2, 0.4, 1.0), DVec3::ZERO);
+            let grid = StaggeredGrid::new(n, Vec3::new(1.2, 0.4, 1.0), Vec3::ZERO);
             let bcs = Boundaries::periodic()
                 .with(
                     0,
-                    Boundary::Inflow(InflowVelocity::steady(DVec3::new(0.1, 0.0, 0.0))),
+                    Boundary::Inflow(InflowVelocity::steady(Vec3::new(0.1, 0.0, 0.0))),
                     Boundary::Outflow,
                 )
                 .with(2, Boundary::WALL, Boundary::FreeSlip);
             let mut par = FluidParameters::water();
             par.driving_pressure_gradient = DrivingPressureGradient::Oscillatory {
-                velocity_amplitude: DVec3::new(0.1, 0.0, 0.0),
+                velocity_amplitude: Vec3::new(0.1, 0.0, 0.0),
                 period: 3.0,
             };
             par.pressure_passes = 2;
             let mut fluid = Fluid::new(grid, bcs, par).unwrap();
-            fluid.set_velocity(|_| DVec3::new(0.1, 0.0, 0.0));
+            fluid.set_velocity(|_| Vec3::new(0.1, 0.0, 0.0));
             fluid.set_mixture_density(|x| if x.z < 0.3 { 1300.0 } else { 998.2 });
             fluid.step(1e-3); // the first step, iterated
             let before = ALLOCATIONS.load(Ordering::Relaxed);

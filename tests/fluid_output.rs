@@ -3,21 +3,21 @@
 //!
 //! Run: `cargo test --release --test fluid_output`.
 
-use glam::DVec3;
 use riprap::fluid::operators::cell_vorticity;
 use riprap::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
 use riprap::io::vtk::{write_image, Array, Format, Values};
+use riprap::math::Vec3;
 
 #[test]
 fn cell_fields_write_as_a_vtk_image() {
     let grid = StaggeredGrid::new(
         [8, 4, 6],
-        DVec3::new(0.8, 0.4, 0.6),
-        DVec3::new(1.0, 0.0, -0.6),
+        Vec3::new(0.8, 0.4, 0.6),
+        Vec3::new(1.0, 0.0, -0.6),
     );
     let bcs = Boundaries::periodic().with(2, Boundary::WALL, Boundary::FreeSlip);
     let mut fluid = Fluid::new(grid, bcs, FluidParameters::water()).unwrap();
-    fluid.set_velocity(|x| DVec3::new((x.z + 0.6) * 0.5, 0.0, 0.0));
+    fluid.set_velocity(|x| Vec3::new((x.z + 0.6) * 0.5, 0.0, 0.0));
     fluid.step(1e-3);
     let f = fluid.cell_fields();
     assert_eq!(f.velocity.len(), grid.cell_count());
@@ -78,13 +78,13 @@ fn cell_fields_write_as_a_vtk_image() {
 fn cell_vorticity_of_a_solid_body_rotation_is_twice_the_rate() {
     // u = Ω × x with Ω = (0, 0, 2) s⁻¹ about the box centre: ∇ × u = 2 Ω exactly for the
     // central differences of a linear field (interior cells, away from the wall ghosts).
-    let grid = StaggeredGrid::new([8, 8, 4], DVec3::new(0.8, 0.8, 0.4), DVec3::ZERO);
+    let grid = StaggeredGrid::new([8, 8, 4], Vec3::new(0.8, 0.8, 0.4), Vec3::ZERO);
     let bcs = Boundaries::periodic()
         .with(0, Boundary::FreeSlip, Boundary::FreeSlip)
         .with(1, Boundary::FreeSlip, Boundary::FreeSlip);
     let mut fluid = Fluid::new(grid, bcs, FluidParameters::laminar(1000.0, 1e-6)).unwrap();
-    let omega = DVec3::new(0.0, 0.0, 2.0);
-    let centre = DVec3::new(0.4, 0.4, 0.2);
+    let omega = Vec3::new(0.0, 0.0, 2.0);
+    let centre = Vec3::new(0.4, 0.4, 0.2);
     fluid.set_velocity(|x| omega.cross(x - centre));
     let f = fluid.cell_fields();
     for (k, j, i) in [(1, 3, 3), (2, 1, 6), (0, 6, 2)] {

@@ -14,10 +14,10 @@
 //!
 //! Run: `cargo test --release --test fluid_poiseuille -- --nocapture` (about a second).
 
-use glam::DVec3;
 use riprap::fluid::{
     Boundaries, Boundary, DrivingPressureGradient, Fluid, FluidParameters, StaggeredGrid,
 };
+use riprap::math::Vec3;
 use std::f64::consts::PI;
 
 const H: f64 = 1.0; // channel height [m]
@@ -41,11 +41,11 @@ fn start_up(z: f64, t: f64) -> f64 {
 }
 
 fn channel(nz: usize, top: Boundary) -> Fluid {
-    let grid = StaggeredGrid::new([1, 1, nz], DVec3::new(1.0, 1.0, H), DVec3::ZERO);
+    let grid = StaggeredGrid::new([1, 1, nz], Vec3::new(1.0, 1.0, H), Vec3::ZERO);
     let bcs = Boundaries::periodic().with(2, Boundary::WALL, top);
     let mut par = FluidParameters::laminar(RHO, NU);
     par.driving_pressure_gradient = DrivingPressureGradient::Constant {
-        force_density: DVec3::new(G, 0.0, 0.0),
+        force_density: Vec3::new(G, 0.0, 0.0),
     };
     Fluid::new(grid, bcs, par).unwrap()
 }
@@ -112,7 +112,7 @@ fn couette_flow_is_exact() {
     // 2U_w − u₁, so plane Couette flow (top wall at U = 1 m/s, no drive) converges to
     // u = U z/h within round-off, from rest.
     let lid = Boundary::Wall {
-        velocity: DVec3::new(1.0, 0.0, 0.0),
+        velocity: Vec3::new(1.0, 0.0, 0.0),
     };
     let mut fluid = channel(16, lid);
     fluid.parameters_mut().driving_pressure_gradient = DrivingPressureGradient::None;

@@ -3,8 +3,8 @@
 //!
 //! Run: `cargo test --release --test fluid_projection` (well under a second).
 
-use glam::DVec3;
 use riprap::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
+use riprap::math::Vec3;
 
 /// A deterministic pseudo-random number in [−1, 1) from an integer (a 64-bit mix).
 fn noise(seed: u64) -> f64 {
@@ -22,13 +22,13 @@ fn randomise(fluid: &mut Fluid, seed: u64) {
         let h = (x * 1000.0).round();
         let s = (h.x as i64 * 73_856_093) ^ (h.y as i64 * 19_349_663) ^ (h.z as i64 * 83_492_791);
         let s = (s as u64).wrapping_add(seed * 0x1000_0000);
-        DVec3::new(noise(s), noise(s + 1), noise(s + 2))
+        Vec3::new(noise(s), noise(s + 1), noise(s + 2))
     });
 }
 
 fn configurations() -> Vec<(&'static str, Boundaries)> {
     let lid = Boundary::Wall {
-        velocity: DVec3::new(1.0, 0.5, 0.0),
+        velocity: Vec3::new(1.0, 0.5, 0.0),
     };
     vec![
         ("periodic", Boundaries::periodic()),
@@ -54,7 +54,7 @@ fn configurations() -> Vec<(&'static str, Boundaries)> {
 
 #[test]
 fn projected_velocity_is_divergence_free_to_round_off() {
-    let grid = StaggeredGrid::new([24, 10, 16], DVec3::new(2.4, 0.8, 1.0), DVec3::ZERO);
+    let grid = StaggeredGrid::new([24, 10, 16], Vec3::new(2.4, 0.8, 1.0), Vec3::ZERO);
     for (name, bcs) in configurations() {
         let mut fluid = Fluid::new(grid, bcs, FluidParameters::laminar(1000.0, 1e-6)).unwrap();
         randomise(&mut fluid, 7);
@@ -78,7 +78,7 @@ fn projected_velocity_is_divergence_free_to_round_off() {
 
 #[test]
 fn projection_removes_a_discrete_gradient_exactly_and_is_idempotent() {
-    let grid = StaggeredGrid::new([16, 12, 8], DVec3::new(1.0, 0.75, 0.5), DVec3::ZERO);
+    let grid = StaggeredGrid::new([16, 12, 8], Vec3::new(1.0, 0.75, 0.5), Vec3::ZERO);
     let bcs = Boundaries::periodic().with(2, Boundary::WALL, Boundary::WALL);
     let mut fluid = Fluid::new(grid, bcs, FluidParameters::laminar(1.0, 0.0)).unwrap();
     // u = G φ for a random φ at cell centres (periodic ghosts in x and y); on the walls the
@@ -87,7 +87,7 @@ fn projection_removes_a_discrete_gradient_exactly_and_is_idempotent() {
     riprap::fluid::boundary::fill_scalar_ghosts(&grid, &bcs, &mut phi);
     let d = grid.spacing;
     let s = grid.strides();
-    fluid.set_velocity(|_| DVec3::ZERO);
+    fluid.set_velocity(|_| Vec3::ZERO);
     {
         let st = fluid.state().clone();
         let mut st2 = st;

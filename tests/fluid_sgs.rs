@@ -3,9 +3,9 @@
 //!
 //! Run: `cargo test --release --test fluid_sgs -- --nocapture`.
 
-use glam::DVec3;
 use riprap::fluid::sgs::{eddy_viscosity, Smagorinsky};
 use riprap::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
+use riprap::math::Vec3;
 
 const RHO: f64 = 1000.0; // [kg m⁻³]
 const NU: f64 = 1e-6; // [m² s⁻¹]
@@ -15,13 +15,13 @@ const H: f64 = 1.0; // gap [m]
 /// Plane Couette flow u = γ z between a fixed wall (z = 0) and a wall moving at γH (z = H),
 /// on cubic cells of 0.05 m.
 fn couette() -> Fluid {
-    let grid = StaggeredGrid::new([4, 4, 20], DVec3::new(0.2, 0.2, H), DVec3::ZERO);
+    let grid = StaggeredGrid::new([4, 4, 20], Vec3::new(0.2, 0.2, H), Vec3::ZERO);
     let lid = Boundary::Wall {
-        velocity: DVec3::new(GAMMA * H, 0.0, 0.0),
+        velocity: Vec3::new(GAMMA * H, 0.0, 0.0),
     };
     let bcs = Boundaries::periodic().with(2, Boundary::WALL, lid);
     let mut fluid = Fluid::new(grid, bcs, FluidParameters::laminar(RHO, NU)).unwrap();
-    fluid.set_velocity(|x| DVec3::new(GAMMA * x.z, 0.0, 0.0));
+    fluid.set_velocity(|x| Vec3::new(GAMMA * x.z, 0.0, 0.0));
     fluid
 }
 
@@ -98,7 +98,7 @@ fn van_driest_damping_follows_the_wall_distance() {
 
 #[test]
 fn strain_rate_magnitude_of_a_pure_strain_and_an_oblique_shear() {
-    let grid = StaggeredGrid::new([8, 8, 8], DVec3::splat(0.4), DVec3::ZERO);
+    let grid = StaggeredGrid::new([8, 8, 8], Vec3::splat(0.4), Vec3::ZERO);
     // Linear fields in a periodic box: they jump at the periodic seam, so only cells whose
     // stencils stay clear of it are checked; there the strain is uniform and exact.
     let alpha = 3.0;
@@ -111,13 +111,13 @@ fn strain_rate_magnitude_of_a_pure_strain_and_an_oblique_shear() {
     for (name, field, strain) in [
         (
             "shear v = γ x + γ z (two components)",
-            (|x: DVec3| DVec3::new(0.0, GAMMA * (x.x + x.z), 0.0)) as fn(DVec3) -> DVec3,
+            (|x: Vec3| Vec3::new(0.0, GAMMA * (x.x + x.z), 0.0)) as fn(Vec3) -> Vec3,
             // S_xy = S_zy = γ/2: |S| = sqrt(2 · 4 · γ²/4) = sqrt(2) γ.
             std::f64::consts::SQRT_2 * GAMMA,
         ),
         (
             "pure strain u = αx, w = −αz",
-            |x: DVec3| DVec3::new(3.0 * x.x, 0.0, -3.0 * x.z),
+            |x: Vec3| Vec3::new(3.0 * x.x, 0.0, -3.0 * x.z),
             // S_xx = α, S_zz = −α: |S| = sqrt(2 (α² + α²)) = 2α.
             2.0 * alpha,
         ),
@@ -156,17 +156,17 @@ fn smagorinsky_run_stays_bounded_and_solenoidal() {
     // Water in a 0.2 m channel at a bulk velocity ~0.1 m/s (Re ~ 2e4) on a coarse grid, with
     // the SGS model and van Driest damping on: the eddy viscosity is finite and non-negative,
     // exceeds μ somewhere, and the step stays divergence-free.
-    let grid = StaggeredGrid::new([16, 8, 16], DVec3::new(0.4, 0.2, 0.2), DVec3::ZERO);
+    let grid = StaggeredGrid::new([16, 8, 16], Vec3::new(0.4, 0.2, 0.2), Vec3::ZERO);
     let bcs = Boundaries::periodic().with(2, Boundary::WALL, Boundary::WALL);
     let mut par = FluidParameters::water();
-    par.gravity = DVec3::ZERO;
+    par.gravity = Vec3::ZERO;
     par.driving_pressure_gradient = riprap::fluid::DrivingPressureGradient::Constant {
-        force_density: DVec3::new(0.5, 0.0, 0.0),
+        force_density: Vec3::new(0.5, 0.0, 0.0),
     };
     let mut fluid = Fluid::new(grid, bcs, par).unwrap();
     fluid.set_velocity(|x| {
         let z = x.z / 0.2;
-        DVec3::new(
+        Vec3::new(
             0.12 * z * (1.0 - z) * 4.0 + 0.01 * (31.0 * x.y).sin(),
             0.01 * (17.0 * x.x).sin(),
             0.01 * (23.0 * x.x).cos() * (z * (1.0 - z)),

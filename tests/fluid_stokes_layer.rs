@@ -15,10 +15,10 @@
 //!
 //! Run: `cargo test --release --test fluid_stokes_layer -- --nocapture` (under a second).
 
-use glam::DVec3;
 use riprap::fluid::{
     Boundaries, Boundary, DrivingPressureGradient, Fluid, FluidParameters, StaggeredGrid,
 };
+use riprap::math::Vec3;
 use rustfft::num_complex::Complex64;
 use std::f64::consts::TAU;
 
@@ -35,11 +35,11 @@ fn exact(z: f64, t: f64) -> f64 {
 }
 
 fn layer(nz: usize) -> Fluid {
-    let grid = StaggeredGrid::new([1, 1, nz], DVec3::new(1.0, 1.0, DEPTH), DVec3::ZERO);
+    let grid = StaggeredGrid::new([1, 1, nz], Vec3::new(1.0, 1.0, DEPTH), Vec3::ZERO);
     let bcs = Boundaries::periodic().with(2, Boundary::WALL, Boundary::FreeSlip);
     let mut par = FluidParameters::laminar(1000.0, NU);
     par.driving_pressure_gradient = DrivingPressureGradient::Oscillatory {
-        velocity_amplitude: DVec3::new(U_MAX, 0.0, 0.0),
+        velocity_amplitude: Vec3::new(U_MAX, 0.0, 0.0),
         period: TAU / OMEGA,
     };
     // AB2's phase error after two periods is ≈ (5/12) ω³ Δt² t = 5e-3 U_max at the viscous
@@ -48,7 +48,7 @@ fn layer(nz: usize) -> Fluid {
     // 1 % of the finest grid's spatial error).
     par.time_step.max = 0.002;
     let mut fluid = Fluid::new(grid, bcs, par).unwrap();
-    fluid.set_velocity(|x| DVec3::new(exact(x.z, 0.0), 0.0, 0.0));
+    fluid.set_velocity(|x| Vec3::new(exact(x.z, 0.0), 0.0, 0.0));
     fluid
 }
 

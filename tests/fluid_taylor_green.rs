@@ -8,8 +8,8 @@
 //!
 //! Run: `cargo test --release --test fluid_taylor_green -- --nocapture` (about a second).
 
-use glam::DVec3;
 use riprap::fluid::{Boundaries, Fluid, FluidParameters, StaggeredGrid};
+use riprap::math::Vec3;
 use std::f64::consts::TAU;
 
 /// Kinematic viscosity [m² s⁻¹]: Re = U L / ν = 1 · 1 / 0.1 = 10, so advection and
@@ -18,14 +18,14 @@ const NU: f64 = 0.1;
 /// End time [s]: the amplitude decays to e^(−0.2) = 0.82.
 const T_END: f64 = 1.0;
 
-fn exact(x: DVec3, t: f64) -> DVec3 {
+fn exact(x: Vec3, t: f64) -> Vec3 {
     let f = (-2.0 * NU * t).exp();
-    DVec3::new(x.x.sin() * x.z.cos() * f, 0.0, -x.x.cos() * x.z.sin() * f)
+    Vec3::new(x.x.sin() * x.z.cos() * f, 0.0, -x.x.cos() * x.z.sin() * f)
 }
 
 fn vortex(n: usize) -> Fluid {
     let d = TAU / n as f64;
-    let grid = StaggeredGrid::new([n, 1, n], DVec3::new(TAU, d, TAU), DVec3::ZERO);
+    let grid = StaggeredGrid::new([n, 1, n], Vec3::new(TAU, d, TAU), Vec3::ZERO);
     let mut fluid = Fluid::new(
         grid,
         Boundaries::periodic(),
@@ -129,12 +129,12 @@ fn every_axis_pair_gives_the_same_answer() {
         let thin = 3 - p - q;
         let mut cells = [n; 3];
         cells[thin] = 1;
-        let mut lengths = DVec3::splat(TAU);
+        let mut lengths = Vec3::splat(TAU);
         lengths[thin] = d;
-        let grid = StaggeredGrid::new(cells, lengths, DVec3::ZERO);
-        let field = move |x: DVec3, t: f64| {
+        let grid = StaggeredGrid::new(cells, lengths, Vec3::ZERO);
+        let field = move |x: Vec3, t: f64| {
             let f = (-2.0 * NU * t).exp();
-            let mut v = DVec3::ZERO;
+            let mut v = Vec3::ZERO;
             v[p] = x[p].sin() * x[q].cos() * f;
             v[q] = -x[p].cos() * x[q].sin() * f;
             v

@@ -3,13 +3,13 @@
 //!
 //! Run: `cargo test --release --test fluid_timestep -- --nocapture`.
 
-use glam::DVec3;
 use riprap::fluid::{Boundaries, Fluid, FluidParameters, StaggeredGrid};
+use riprap::math::Vec3;
 use std::f64::consts::TAU;
 
 #[test]
 fn limits_follow_the_formula() {
-    let grid = StaggeredGrid::new([10, 5, 4], DVec3::new(1.0, 1.0, 0.2), DVec3::ZERO);
+    let grid = StaggeredGrid::new([10, 5, 4], Vec3::new(1.0, 1.0, 0.2), Vec3::ZERO);
     let mut fluid = Fluid::new(
         grid,
         Boundaries::periodic(),
@@ -22,7 +22,7 @@ fn limits_follow_the_formula() {
     assert_eq!(fluid.stable_time_step(), 0.7);
 
     // Advective: Δt = C / (|u|/Δx + |v|/Δy + |w|/Δz) with Δ = (0.1, 0.2, 0.05) m.
-    fluid.set_velocity(|_| DVec3::new(2.0, -1.0, 0.5));
+    fluid.set_velocity(|_| Vec3::new(2.0, -1.0, 0.5));
     let adv = 0.3 / (2.0 / 0.1 + 1.0 / 0.2 + 0.5 / 0.05);
     assert!((fluid.stable_time_step() - adv).abs() < 1e-15);
 
@@ -39,14 +39,14 @@ fn adaptive_steps_land_on_the_end_time_and_keep_second_order() {
     // limits (C = 0.3, C_v = 0.2), then with both halved: every step halves, and the
     // variable-step AB2 keeps the time error second order.
     let nu = 0.1;
-    let exact = |x: DVec3, t: f64| {
+    let exact = |x: Vec3, t: f64| {
         let f = (-2.0 * nu * t).exp();
-        DVec3::new(x.x.sin() * x.z.cos() * f, 0.0, -x.x.cos() * x.z.sin() * f)
+        Vec3::new(x.x.sin() * x.z.cos() * f, 0.0, -x.x.cos() * x.z.sin() * f)
     };
     let n = 32;
     let run = |scale: f64| {
         let d = TAU / n as f64;
-        let grid = StaggeredGrid::new([n, 1, n], DVec3::new(TAU, d, TAU), DVec3::ZERO);
+        let grid = StaggeredGrid::new([n, 1, n], Vec3::new(TAU, d, TAU), Vec3::ZERO);
         let mut par = FluidParameters::laminar(1.0, nu);
         par.time_step.cfl *= scale;
         par.time_step.viscous *= scale;

@@ -12,8 +12,8 @@
 //!
 //! Run: `cargo test --release --test fluid_variable_density -- --nocapture` (about a second).
 
-use glam::DVec3;
 use riprap::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
+use riprap::math::Vec3;
 
 const RHO_W: f64 = 1000.0; // water [kg m⁻³]
 const RHO_S: f64 = 2650.0; // quartz [kg m⁻³]
@@ -21,7 +21,7 @@ const G: f64 = 9.81; // [m s⁻²]
 
 fn parameters() -> FluidParameters {
     let mut p = FluidParameters::laminar(RHO_W, 1e-6);
-    p.gravity = DVec3::new(0.0, 0.0, -G);
+    p.gravity = Vec3::new(0.0, 0.0, -G);
     p
 }
 
@@ -44,7 +44,7 @@ fn vertical_momentum(fluid: &Fluid) -> f64 {
 
 #[test]
 fn heavy_slab_falls_with_the_exact_buoyant_acceleration() {
-    let grid = StaggeredGrid::new([4, 4, 32], DVec3::new(0.04, 0.04, 0.32), DVec3::ZERO);
+    let grid = StaggeredGrid::new([4, 4, 32], Vec3::new(0.04, 0.04, 0.32), Vec3::ZERO);
     let mut fluid = Fluid::new(grid, Boundaries::periodic(), parameters()).unwrap();
     // Quartz between z = 0.12 and 0.20 m: a quarter of the column.
     fluid.set_mixture_density(|x| {
@@ -97,7 +97,7 @@ fn heavy_slab_falls_with_the_exact_buoyant_acceleration() {
 
 #[test]
 fn stable_stratification_stays_at_rest_with_hydrostatic_pressure() {
-    let grid = StaggeredGrid::new([4, 4, 16], DVec3::new(0.04, 0.04, 0.16), DVec3::ZERO);
+    let grid = StaggeredGrid::new([4, 4, 16], Vec3::new(0.04, 0.04, 0.16), Vec3::ZERO);
     let bcs = Boundaries::periodic().with(2, Boundary::WALL, Boundary::FreeSlip);
     let mut fluid = Fluid::new(grid, bcs, parameters()).unwrap();
     // A mixture density decreasing upwards, from a sediment-laden layer to clear water.
@@ -133,10 +133,10 @@ fn stable_stratification_stays_at_rest_with_hydrostatic_pressure() {
 fn heavy_cube_released_in_still_water() {
     let n = 16;
     let l = 0.16;
-    let grid = StaggeredGrid::new([n, n, n], DVec3::splat(l), DVec3::ZERO);
+    let grid = StaggeredGrid::new([n, n, n], Vec3::splat(l), Vec3::ZERO);
     let mut fluid = Fluid::new(grid, Boundaries::periodic(), parameters()).unwrap();
     // A 4³-cell cube of quartz at the centre of the box.
-    let inside = |x: DVec3| (x - DVec3::splat(0.08)).abs().max_element() < 0.02;
+    let inside = |x: Vec3| (x - Vec3::splat(0.08)).abs().max_element() < 0.02;
     fluid.set_mixture_density(|x| if inside(x) { RHO_S } else { RHO_W });
     let excess_mass = (RHO_S - RHO_W) * 0.04f64.powi(3); // [kg]
                                                          // 5 steps of 2 ms: the cube would have moved by 0.25 mm, 2.5 % of a cell. ρ̄ is fixed in

@@ -5,11 +5,11 @@
 //!
 //! Run: `cargo test --release --test vtk_reader -- --nocapture`.
 
-use glam::DVec3;
 use riprap::io::pvd::PvdSeries;
 use riprap::io::vtk::{
     write_image, write_points, write_surface, Array, Compression, Format, Precision,
 };
+use riprap::math::Vec3;
 use std::process::Command;
 
 /// Points, image cells, and triangles + 2 (the formulas are those of read_back.py).
@@ -21,18 +21,18 @@ fn every_vtk_file_kind_and_format_reads_back_in_vtk() {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let f = |i: usize| i as f64;
-    let pos: Vec<DVec3> = (0..N)
-        .map(|i| DVec3::new(f(i) / 8.0, f(i) * 0.25 - 3.0, 1000.0 + f(i) / 1024.0))
+    let pos: Vec<Vec3> = (0..N)
+        .map(|i| Vec3::new(f(i) / 8.0, f(i) * 0.25 - 3.0, 1000.0 + f(i) / 1024.0))
         .collect();
     let id: Vec<i64> = (0..N as i64).map(|i| 3 * i - 7).collect();
     let diameter: Vec<f64> = (0..N).map(|i| 0.01 + f(i) * 2f64.powi(-20)).collect();
-    let velocity: Vec<DVec3> = (0..N)
-        .map(|i| DVec3::new(f(i) / 3.0, -f(i) / 7.0, 1.0))
+    let velocity: Vec<Vec3> = (0..N)
+        .map(|i| Vec3::new(f(i) / 3.0, -f(i) / 7.0, 1.0))
         .collect();
     let tri: Vec<[u32; 3]> = (0..N as u32 - 2).map(|i| [i, i + 1, i + 2]).collect();
     let wear: Vec<f64> = (0..N - 2).map(|i| f(i) * 0.25).collect();
     let p: Vec<f64> = (0..N).map(|i| f(i) / 3.0).collect();
-    let u: Vec<DVec3> = (0..N).map(|i| DVec3::new(f(i), -f(i) / 7.0, 0.5)).collect();
+    let u: Vec<Vec3> = (0..N).map(|i| Vec3::new(f(i), -f(i) / 7.0, 0.5)).collect();
 
     let mut series = PvdSeries::new(dir.join("series.pvd"));
     let mut time = 0.0;
@@ -66,7 +66,7 @@ fn every_vtk_file_kind_and_format_reads_back_in_vtk() {
             write_surface(&dir.join(&name), &pos, &tri, &cells, format).unwrap();
             series.add(time, &name, 1).unwrap();
             let name = format!("flow_{tag}.vti");
-            let (origin, spacing) = (DVec3::new(-1.0, 0.0, 0.5), DVec3::new(0.125, 0.25, 0.5));
+            let (origin, spacing) = (Vec3::new(-1.0, 0.0, 0.5), Vec3::new(0.125, 0.25, 0.5));
             let cells = [Array::scalars("p", &p), Array::vectors("u", &u)];
             write_image(
                 &dir.join(&name),

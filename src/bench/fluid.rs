@@ -16,7 +16,7 @@
 
 use std::time::Instant;
 
-use glam::DVec3;
+use crate::math::Vec3;
 
 use crate::fluid::pressure::fft::{AxisKind, SpectralPoisson};
 use crate::fluid::pressure::PoissonSolver;
@@ -31,17 +31,17 @@ use crate::fluid::{
 /// 0.1 cos 2πy) m s⁻¹ made divergence-free, then 3 steps so that the Adams-Bashforth history
 /// and the eddy viscosity are set.
 pub fn step_case(n: usize) -> Fluid {
-    let grid = StaggeredGrid::new([n; 3], DVec3::ONE, DVec3::ZERO);
+    let grid = StaggeredGrid::new([n; 3], Vec3::ONE, Vec3::ZERO);
     let bcs = Boundaries::periodic().with(1, Boundary::WALL, Boundary::WALL);
     let mut par = FluidParameters::laminar(1000.0, 1e-4);
     par.smagorinsky = Some(Smagorinsky::default());
     par.driving_pressure_gradient = DrivingPressureGradient::Constant {
-        force_density: DVec3::X,
+        force_density: Vec3::X,
     };
     let mut fluid = Fluid::new(grid, bcs, par).expect("valid benchmark set-up");
     let tau = std::f64::consts::TAU;
     fluid.set_velocity(|x| {
-        DVec3::new(
+        Vec3::new(
             (tau * x.z).sin() * (1.0 - (2.0 * x.y - 1.0).powi(2)),
             0.1 * (tau * x.x).sin(),
             0.1 * (tau * x.y).cos(),
@@ -96,8 +96,8 @@ pub fn time_pressure_solve(n: usize, repeats: usize) -> Vec<f64> {
 /// 1 m s⁻¹ along x, laminar, ν = 1/`re` m² s⁻¹, density 1 kg m⁻³, at rest at t = 0.
 /// `bench/openfoam/cavity` is the same case for OpenFOAM.
 pub fn cavity_case(n: usize, re: f64) -> Fluid {
-    let grid = StaggeredGrid::new([n; 3], DVec3::ONE, DVec3::ZERO);
-    let lid = Boundary::Wall { velocity: DVec3::X };
+    let grid = StaggeredGrid::new([n; 3], Vec3::ONE, Vec3::ZERO);
+    let lid = Boundary::Wall { velocity: Vec3::X };
     let bcs = Boundaries::periodic()
         .with(0, Boundary::WALL, Boundary::WALL)
         .with(1, Boundary::WALL, Boundary::WALL)

@@ -10,7 +10,7 @@
 //! [m² s⁻¹], C_D the drag coefficient [–] of a published law. Written as
 //! F_D = 3 π μ d (C_D Re_p / 24) (u − v), which is finite at Re_p = 0 (Stokes drag).
 
-use glam::DVec3;
+use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -90,7 +90,7 @@ pub fn clift_grace_weber_1978(re: f64) -> f64 {
 ///
 /// Implements [5].
 #[inline]
-pub fn drag_force(law: DragLaw, rho: f64, nu: f64, d: f64, u_rel: DVec3) -> DVec3 {
+pub fn drag_force(law: DragLaw, rho: f64, nu: f64, d: f64, u_rel: Vec3) -> Vec3 {
     let re = u_rel.length() * d / nu;
     3.0 * PI * rho * nu * d * law.stokes_ratio(re) * u_rel
 }
@@ -103,7 +103,7 @@ mod tests {
     #[test]
     fn drag_form_matches_the_coefficient() {
         let (rho, nu, d) = (1000.0, 1e-6, 2e-3);
-        let w = DVec3::new(0.03, -0.04, 0.0); // |w| = 0.05, Re = 100
+        let w = Vec3::new(0.03, -0.04, 0.0); // |w| = 0.05, Re = 100
         let f = drag_force(DragLaw::SchillerNaumann, rho, nu, d, w);
         let re = 100.0;
         let expected = 0.5 * schiller_naumann_1933(re) * rho * PI / 4.0 * d * d * 0.05 * w;
@@ -112,8 +112,8 @@ mod tests {
             "{f} vs {expected}"
         );
         assert_eq!(
-            drag_force(DragLaw::SchillerNaumann, rho, nu, d, DVec3::ZERO),
-            DVec3::ZERO
+            drag_force(DragLaw::SchillerNaumann, rho, nu, d, Vec3::ZERO),
+            Vec3::ZERO
         );
     }
 

@@ -34,7 +34,7 @@
 //! [`CellBox`]) within the box is written and read: a small grain in a mixture with large
 //! ones touches its own few cells, not B³.
 
-use glam::DVec3;
+use crate::math::Vec3;
 
 use crate::fluid::StaggeredGrid;
 
@@ -50,7 +50,7 @@ pub struct CellBox {
 
 impl CellBox {
     /// The cells that a sphere of centre `x` and radius `r` [m] can touch.
-    pub fn of_sphere(grid: &StaggeredGrid, x: DVec3, r: f64) -> CellBox {
+    pub fn of_sphere(grid: &StaggeredGrid, x: Vec3, r: f64) -> CellBox {
         let mut b = CellBox::default();
         for a in 0..3 {
             let lo = ((x[a] - r - grid.origin[a]) / grid.spacing[a]).floor() as i64;
@@ -84,7 +84,7 @@ pub fn box_size(grid: &StaggeredGrid, d_max: f64) -> usize {
 pub fn sphere_fractions(
     grid: &StaggeredGrid,
     cells: &CellBox,
-    x: DVec3,
+    x: Vec3,
     r: f64,
     m: usize,
     b: usize,
@@ -216,14 +216,14 @@ mod tests {
     use crate::dem::insertion::Rng;
 
     fn volume_error(d_cells: f64, m: usize, normalised: bool, seed: u64) -> f64 {
-        let grid = StaggeredGrid::new([32, 32, 32], DVec3::splat(32.0), DVec3::ZERO);
+        let grid = StaggeredGrid::new([32, 32, 32], Vec3::splat(32.0), Vec3::ZERO);
         let mut rng = Rng(seed);
         let r = 0.5 * d_cells;
         let b = box_size(&grid, d_cells);
         let mut phi = vec![0.0; b * b * b];
         let mut worst = 0.0f64;
         for _ in 0..20 {
-            let x = DVec3::new(
+            let x = Vec3::new(
                 16.0 + rng.uniform(),
                 16.0 + rng.uniform(),
                 16.0 + rng.uniform(),
@@ -270,8 +270,8 @@ mod tests {
     /// cell face through its centre puts half its volume on each side.
     #[test]
     fn full_empty_and_symmetric_cells() {
-        let grid = StaggeredGrid::new([8, 8, 8], DVec3::splat(8.0), DVec3::ZERO);
-        let (x, r) = (DVec3::new(4.0, 4.0, 4.0), 1.8);
+        let grid = StaggeredGrid::new([8, 8, 8], Vec3::splat(8.0), Vec3::ZERO);
+        let (x, r) = (Vec3::new(4.0, 4.0, 4.0), 1.8);
         let b = box_size(&grid, 2.0 * r);
         let cells = CellBox::of_sphere(&grid, x, r);
         let mut phi = vec![0.0; b * b * b];

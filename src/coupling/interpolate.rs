@@ -9,7 +9,7 @@
 //! conserves momentum exactly (the interpolation uses the same eight faces: the two are each
 //! other's transpose).
 
-use glam::DVec3;
+use crate::math::Vec3;
 
 use crate::fluid::{Boundaries, StaggeredGrid};
 
@@ -18,7 +18,7 @@ pub fn face_stencil(
     grid: &StaggeredGrid,
     bcs: &Boundaries,
     a: usize,
-    x: DVec3,
+    x: Vec3,
 ) -> [(usize, f64); 8] {
     let mut idx = [[0usize; 2]; 3];
     let mut t = [0.0; 3];
@@ -57,8 +57,8 @@ pub fn face_stencil(
 }
 
 /// The fluid velocity at `x` [m s⁻¹] (each component from its own faces).
-pub fn velocity_at(grid: &StaggeredGrid, bcs: &Boundaries, u: [&[f64]; 3], x: DVec3) -> DVec3 {
-    let mut v = DVec3::ZERO;
+pub fn velocity_at(grid: &StaggeredGrid, bcs: &Boundaries, u: [&[f64]; 3], x: Vec3) -> Vec3 {
+    let mut v = Vec3::ZERO;
     for a in 0..3 {
         for (c, w) in face_stencil(grid, bcs, a, x) {
             v[a] += w * u[a][c];
@@ -76,18 +76,18 @@ mod tests {
     /// everywhere, also next to walls.
     #[test]
     fn linear_fields_are_exact_and_weights_sum_to_one() {
-        let grid = StaggeredGrid::new([6, 5, 7], DVec3::new(0.6, 0.5, 0.7), DVec3::ZERO);
+        let grid = StaggeredGrid::new([6, 5, 7], Vec3::new(0.6, 0.5, 0.7), Vec3::ZERO);
         let bcs = Boundaries::periodic().with(2, Boundary::WALL, Boundary::WALL);
-        let f = |x: DVec3| DVec3::new(1.0 + 2.0 * x.x - x.y, 3.0 * x.z, x.x + x.y);
+        let f = |x: Vec3| Vec3::new(1.0 + 2.0 * x.x - x.y, 3.0 * x.z, x.x + x.y);
         let u: [Vec<f64>; 3] = std::array::from_fn(|a| {
             (0..grid.len())
                 .map(|c| f(grid.position(c, Some(a)))[a])
                 .collect()
         });
-        let x = DVec3::new(0.31, 0.22, 0.37);
+        let x = Vec3::new(0.31, 0.22, 0.37);
         let v = velocity_at(&grid, &bcs, [&u[0], &u[1], &u[2]], x);
         assert!((v - f(x)).length() < 1e-12, "{v} vs {}", f(x));
-        for x in [DVec3::new(0.0, 0.0, 0.0), DVec3::new(0.59, 0.49, 0.69)] {
+        for x in [Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.59, 0.49, 0.69)] {
             for a in 0..3 {
                 let s: f64 = face_stencil(&grid, &bcs, a, x).iter().map(|p| p.1).sum();
                 assert!((s - 1.0).abs() < 1e-14);

@@ -69,7 +69,7 @@ pub mod interpolate;
 pub mod resolved;
 pub mod slabs;
 
-use glam::DVec3;
+use crate::math::Vec3;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -128,7 +128,7 @@ pub struct Coupling {
     /// ρ_w [kg m⁻³], ν [m² s⁻¹], g [m s⁻²] of the water.
     rho_w: f64,
     nu: f64,
-    gravity: DVec3,
+    gravity: Vec3,
     /// Cells per box side B, and each sphere's box and B³ fractions (by slot, this call only).
     b: usize,
     boxes: Vec<CellBox>,
@@ -136,7 +136,7 @@ pub struct Coupling {
     /// The spheres and parameters `boxes` and `phi` were computed for (positions and radii by
     /// slot): the fluid load of a step reuses the fractions of the last correction, whose
     /// spheres have not moved since.
-    phi_of: (Vec<DVec3>, Vec<f64>, Option<CouplingParameters>),
+    phi_of: (Vec<Vec3>, Vec<f64>, Option<CouplingParameters>),
     /// (Σ_i w_i, Σ_i w_i (v_i + ω_i × r)_a) on the faces of each component (correction [62]).
     /// Paired, so that a sum over a sphere's faces touches one cache line per face.
     weight: [Vec<[f64; 2]>; 3],
@@ -151,7 +151,7 @@ pub struct Coupling {
     /// are set, in `compute_fractions`).
     slabs: Slabs,
     /// Force of the water on the fixed solid at the last step [N] ([59]).
-    pub obstacle_force: DVec3,
+    pub obstacle_force: Vec3,
     /// The interaction force F [63] of the last correction on the faces [N m⁻³] (for output:
     /// the correction has already applied it).
     interaction: [Vec<f64>; 3],
@@ -171,7 +171,7 @@ pub struct Coupling {
 ///
 /// so that a neutrally buoyant sphere follows the free stream U_∞(t). Held over the sub-steps
 /// like the rest of the load; it is zero without a driving gradient.
-fn driving_force_density(fluid: &Fluid) -> DVec3 {
+fn driving_force_density(fluid: &Fluid) -> Vec3 {
     let p = fluid.parameters();
     let t_mid = fluid.time() - 0.5 * fluid.state().previous_dt;
     p.driving_pressure_gradient.force_density(t_mid, p.density)
@@ -199,7 +199,7 @@ impl Coupling {
             cell_phi: vec![[0.0; 2]; grid.len()],
             obstacle: Vec::new(),
             slabs: Slabs::default(),
-            obstacle_force: DVec3::ZERO,
+            obstacle_force: Vec3::ZERO,
             interaction: std::array::from_fn(|_| field()),
         }
     }
@@ -289,7 +289,7 @@ impl Coupling {
                 if load.unresolved {
                     load.fluid_velocity = interpolate::velocity_at(&this.grid, &this.bcs, u, x);
                     load.force = buoyancy;
-                    load.torque = DVec3::ZERO;
+                    load.torque = Vec3::ZERO;
                 } else {
                     let own = &phi[i * b3..(i + 1) * b3];
                     let (fr, tr) = resolved::sphere_force(
@@ -307,7 +307,7 @@ impl Coupling {
                 let drag = if load.unresolved {
                     this.drag(load.fluid_velocity - s.velocity[i], r)
                 } else {
-                    DVec3::ZERO
+                    Vec3::ZERO
                 };
                 let total = load.force + drag;
                 *f += total - load.applied.0;
@@ -323,7 +323,7 @@ impl Coupling {
     }
 
     /// The drag [5] on a sphere of radius `r` [m] at relative velocity `u_rel` [m s⁻¹] [N].
-    fn drag(&self, u_rel: DVec3, r: f64) -> DVec3 {
+    fn drag(&self, u_rel: Vec3, r: f64) -> Vec3 {
         drag::drag_force(
             self.parameters.drag_law,
             self.rho_w,
@@ -593,7 +593,7 @@ impl Coupling {
                     u[a][c] -= w * load.impulse[a] / (rho_f * volume);
                 }
             }
-            load.impulse = DVec3::ZERO;
+            load.impulse = Vec3::ZERO;
         }
     }
 }
@@ -614,19 +614,19 @@ mod tests {
     #[test]
     fn a_neutral_sphere_in_an_oscillating_flow_receives_rho_v_du_dt() {
         let (rho, d, h) = (1000.0, 0.01, 0.01 / 5.0);
-        let grid = StaggeredGrid::new([16, 16, 16], DVec3::splat(16.0 * h), DVec3::ZERO);
+        let grid = StaggeredGrid::new([16, 16, 16], Vec3::splat(16.0 * h), Vec3::ZERO);
         let (u_max, period) = (0.85, 5.0);
         let mut par = FluidParameters::laminar(rho, 1.0e-6);
         par.driving_pressure_gradient = DrivingPressureGradient::Oscillatory {
-            velocity_amplitude: DVec3::X * u_max,
+            velocity_amplitude: Vec3::X * u_max,
             period,
         };
         let mut fluid = Fluid::new(grid, Boundaries::periodic(), par).expect("valid set-up");
         let mut spheres = Spheres::default();
         spheres.push(NewSphere {
-            position: DVec3::splat(8.0 * h),
-            velocity: DVec3::ZERO,
-            angular_velocity: DVec3::ZERO,
+            position: Vec3::splat(8.0 * h),
+            velocity: Vec3::ZERO,
+            angular_velocity: Vec3::ZERO,
             radius: 0.5 * d,
             material: 0,
             density: rho,
@@ -654,7 +654,7 @@ mod tests {
                 "{f}"
             );
             u_water += dt * du_dt;
-            spheres.velocity[0] = DVec3::X * u_water;
+            spheres.velocity[0] = Vec3::X * u_water;
             coupling.correct(&mut fluid, &mut spheres, dt, dt);
         }
     }

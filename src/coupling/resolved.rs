@@ -24,7 +24,7 @@
 //! buoyancy and weight are added apart (see the module docs of [`super`]). Only faces that
 //! the flow step moves count: boundary faces of walls carry no force density of their own.
 
-use glam::DVec3;
+use crate::math::Vec3;
 use rayon::prelude::*;
 
 use super::fraction::CellBox;
@@ -77,7 +77,7 @@ pub fn for_each_face(
     cells: &CellBox,
     b: usize,
     phi: &[f64],
-    mut f: impl FnMut(usize, usize, f64, DVec3),
+    mut f: impl FnMut(usize, usize, f64, Vec3),
 ) {
     let e = cells.extent;
     let p = grid.padded();
@@ -113,7 +113,7 @@ pub fn for_each_face(
                     let Some(ii) = axis_index(grid, bcs, Some(a), 0, gi) else {
                         continue;
                     };
-                    f(a, row + ii, w, DVec3::new(centre(0, gi), y, z));
+                    f(a, row + ii, w, Vec3::new(centre(0, gi), y, z));
                 }
             }
         }
@@ -257,12 +257,12 @@ pub fn sphere_force(
     cells: &CellBox,
     b: usize,
     phi: &[f64],
-    x: DVec3,
+    x: Vec3,
     loads: &[Vec<f64>; 3],
-) -> (DVec3, DVec3) {
-    let (mut force, mut torque) = (DVec3::ZERO, DVec3::ZERO);
+) -> (Vec3, Vec3) {
+    let (mut force, mut torque) = (Vec3::ZERO, Vec3::ZERO);
     for_each_face(grid, bcs, cells, b, phi, |a, c, w, x_face| {
-        let mut f = DVec3::ZERO;
+        let mut f = Vec3::ZERO;
         f[a] = w * loads[a][c];
         force += f;
         torque += (x_face - x).cross(f);
@@ -279,8 +279,8 @@ pub fn obstacle_force(
     bcs: &Boundaries,
     phi: &[f64],
     loads: &[Vec<f64>; 3],
-) -> DVec3 {
-    let mut force = DVec3::ZERO;
+) -> Vec3 {
+    let mut force = Vec3::ZERO;
     obstacle_faces(grid, bcs, phi, |a, c, w| {
         force[a] += w * loads[a][c];
     });
@@ -322,15 +322,15 @@ mod tests {
     /// across the periodic x and y boundaries (low and high side) and against the walls of z.
     #[test]
     fn row_enumeration_matches_the_face_by_face_definition() {
-        let grid = StaggeredGrid::new([10, 9, 8], DVec3::new(1.0, 0.9, 0.8), DVec3::ZERO);
+        let grid = StaggeredGrid::new([10, 9, 8], Vec3::new(1.0, 0.9, 0.8), Vec3::ZERO);
         let bcs = Boundaries::periodic().with(2, Boundary::WALL, Boundary::FreeSlip);
         let r = 0.23;
         let b = box_size(&grid, 2.0 * r);
         let mut phi = vec![0.0; b * b * b];
         for x in [
-            DVec3::new(0.05, 0.04, 0.1),
-            DVec3::new(0.97, 0.88, 0.75),
-            DVec3::new(0.5, 0.45, 0.4),
+            Vec3::new(0.05, 0.04, 0.1),
+            Vec3::new(0.97, 0.88, 0.75),
+            Vec3::new(0.5, 0.45, 0.4),
         ] {
             let cells = CellBox::of_sphere(&grid, x, r);
             sphere_fractions(&grid, &cells, x, r, 4, b, &mut phi);
@@ -362,7 +362,7 @@ mod tests {
                             if w == 0.0 {
                                 continue;
                             }
-                            let xf = DVec3::from_array(std::array::from_fn(|q| {
+                            let xf = Vec3::from_array(std::array::from_fn(|q| {
                                 let shift = if q == a { 0.0 } else { 0.5 };
                                 grid.origin[q] + (g[q] as f64 + shift) * grid.spacing[q]
                             }));

@@ -107,12 +107,12 @@ fn split<T: Send, const K: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::DVec3;
+    use crate::math::Vec3;
 
     /// Adding 1 at every plane a box reaches gives the same field for 1, 2, 3 and 7 slabs.
     #[test]
     fn any_cut_gives_the_same_sums() {
-        let grid = StaggeredGrid::new([4, 4, 12], DVec3::splat(1.0), DVec3::ZERO);
+        let grid = StaggeredGrid::new([4, 4, 12], Vec3::splat(1.0), Vec3::ZERO);
         let bcs = Boundaries::periodic();
         let boxes: Vec<CellBox> = (0..20)
             .map(|i| CellBox {

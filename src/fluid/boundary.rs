@@ -22,7 +22,7 @@
 //! up defined (by the last axis) and deterministic.
 
 use super::grid::StaggeredGrid;
-use glam::DVec3;
+use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
 
@@ -35,26 +35,26 @@ pub const HIGH: usize = 1;
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct InflowVelocity {
     /// Mean velocity [m s⁻¹] (all three components: the normal one is the inflow).
-    pub mean: DVec3,
+    pub mean: Vec3,
     /// Amplitude of the oscillating part [m s⁻¹]; zero for a steady inflow.
-    pub amplitude: DVec3,
+    pub amplitude: Vec3,
     /// Period T of the oscillation [s]; ignored when `amplitude` is zero.
     pub period: f64,
 }
 
 impl InflowVelocity {
     /// A steady inflow velocity [m s⁻¹].
-    pub fn steady(velocity: DVec3) -> InflowVelocity {
+    pub fn steady(velocity: Vec3) -> InflowVelocity {
         InflowVelocity {
             mean: velocity,
-            amplitude: DVec3::ZERO,
+            amplitude: Vec3::ZERO,
             period: 1.0,
         }
     }
 
     /// The inflow velocity at time `t` [s].
-    pub fn at(&self, t: f64) -> DVec3 {
-        if self.amplitude == DVec3::ZERO {
+    pub fn at(&self, t: f64) -> Vec3 {
+        if self.amplitude == Vec3::ZERO {
             self.mean
         } else {
             self.mean + self.amplitude * (TAU * t / self.period).sin()
@@ -72,7 +72,7 @@ pub enum Boundary {
     /// normal component must be zero). A lid-driven cavity has one such moving wall.
     Wall {
         /// Wall velocity [m s⁻¹], tangential.
-        velocity: DVec3,
+        velocity: Vec3,
     },
     /// Impermeable wall with zero shear stress (a symmetry plane, a rigid lid).
     FreeSlip,
@@ -87,7 +87,7 @@ pub enum Boundary {
 impl Boundary {
     /// A fixed no-slip wall.
     pub const WALL: Boundary = Boundary::Wall {
-        velocity: DVec3::ZERO,
+        velocity: Vec3::ZERO,
     };
 }
 
@@ -137,7 +137,7 @@ impl Boundaries {
                             NAMES[a], velocity[a]
                         ))
                     }
-                    Boundary::Inflow(v) if v.amplitude != DVec3::ZERO && v.period <= 0.0 => {
+                    Boundary::Inflow(v) if v.amplitude != Vec3::ZERO && v.period <= 0.0 => {
                         return Err(format!(
                             "boundary {} {side}: inflow period must be positive",
                             NAMES[a]

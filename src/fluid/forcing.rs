@@ -6,7 +6,7 @@
 //! pressure of water (METHOD.md §4), which is why gravity enters only through the excess
 //! density ρ̄ − ρ_w.
 
-use glam::DVec3;
+use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
 
@@ -19,13 +19,13 @@ pub enum DrivingPressureGradient {
     /// A steady driving force density −∇P [N m⁻³] (e.g. channel flow).
     Constant {
         /// −∇P [N m⁻³], pointing the way the flow is pushed.
-        force_density: DVec3,
+        force_density: Vec3,
     },
     /// Oscillatory flow whose free-stream velocity far from walls is
     /// U_∞(t) = U_max sin(2π t / T): −∇P = ρ_w dU_∞/dt = ρ_w U_max (2π/T) cos(2π t / T).
     Oscillatory {
         /// U_max: amplitude and direction of the free-stream velocity [m s⁻¹].
-        velocity_amplitude: DVec3,
+        velocity_amplitude: Vec3,
         /// Period T [s].
         period: f64,
     },
@@ -33,9 +33,9 @@ pub enum DrivingPressureGradient {
 
 impl DrivingPressureGradient {
     /// −∇P at time `t` [N m⁻³]; `rho_w` is the density of water [kg m⁻³].
-    pub fn force_density(&self, t: f64, rho_w: f64) -> DVec3 {
+    pub fn force_density(&self, t: f64, rho_w: f64) -> Vec3 {
         match *self {
-            DrivingPressureGradient::None => DVec3::ZERO,
+            DrivingPressureGradient::None => Vec3::ZERO,
             DrivingPressureGradient::Constant { force_density } => force_density,
             DrivingPressureGradient::Oscillatory {
                 velocity_amplitude,
@@ -48,13 +48,13 @@ impl DrivingPressureGradient {
     }
 
     /// The free-stream velocity U_∞(t) [m s⁻¹] of an oscillatory drive (zero otherwise).
-    pub fn free_stream_velocity(&self, t: f64) -> DVec3 {
+    pub fn free_stream_velocity(&self, t: f64) -> Vec3 {
         match *self {
             DrivingPressureGradient::Oscillatory {
                 velocity_amplitude,
                 period,
             } => velocity_amplitude * (TAU * t / period).sin(),
-            _ => DVec3::ZERO,
+            _ => Vec3::ZERO,
         }
     }
 }

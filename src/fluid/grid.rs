@@ -31,7 +31,7 @@
 //! `(u[c+1] − u[c])/Δx + (v[c+sy] − v[c])/Δy + (w[c+sz] − w[c])/Δz` and the gradient at face c
 //! is `(p[c] − p[c − s_a])/Δ_a`, with `s = [1, nx + 2, (nx + 2)(ny + 2)]` the strides.
 
-use glam::DVec3;
+use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 use std::ops::Range;
 
@@ -41,16 +41,16 @@ pub struct StaggeredGrid {
     /// Number of cells along x, y, z.
     pub n: [usize; 3],
     /// Cell size (Δx, Δy, Δz) [m].
-    pub spacing: DVec3,
+    pub spacing: Vec3,
     /// Low corner of the domain [m].
-    pub origin: DVec3,
+    pub origin: Vec3,
 }
 
 impl StaggeredGrid {
     /// A grid of `n` cells filling the box `origin .. origin + lengths` [m].
     ///
     /// Panics if a count is zero or a length is not positive and finite.
-    pub fn new(n: [usize; 3], lengths: DVec3, origin: DVec3) -> StaggeredGrid {
+    pub fn new(n: [usize; 3], lengths: Vec3, origin: Vec3) -> StaggeredGrid {
         for a in 0..3 {
             assert!(n[a] > 0, "grid needs at least one cell along axis {a}");
             assert!(
@@ -59,7 +59,7 @@ impl StaggeredGrid {
                 lengths[a]
             );
         }
-        let spacing = DVec3::new(
+        let spacing = Vec3::new(
             lengths.x / n[0] as f64,
             lengths.y / n[1] as f64,
             lengths.z / n[2] as f64,
@@ -68,8 +68,8 @@ impl StaggeredGrid {
     }
 
     /// Domain size (Lx, Ly, Lz) [m].
-    pub fn lengths(&self) -> DVec3 {
-        self.spacing * DVec3::new(self.n[0] as f64, self.n[1] as f64, self.n[2] as f64)
+    pub fn lengths(&self) -> Vec3 {
+        self.spacing * Vec3::new(self.n[0] as f64, self.n[1] as f64, self.n[2] as f64)
     }
 
     /// Padded counts (n + 2 along each axis: one ghost layer per side).
@@ -134,15 +134,15 @@ impl StaggeredGrid {
     }
 
     /// Position of the centre of cell (i, j, k) [m].
-    pub fn cell_centre(&self, i: usize, j: usize, k: usize) -> DVec3 {
-        self.origin + self.spacing * DVec3::new(i as f64 + 0.5, j as f64 + 0.5, k as f64 + 0.5)
+    pub fn cell_centre(&self, i: usize, j: usize, k: usize) -> Vec3 {
+        self.origin + self.spacing * Vec3::new(i as f64 + 0.5, j as f64 + 0.5, k as f64 + 0.5)
     }
 
     /// Position [m] of the point stored at padded index `c` for a field living on the faces
     /// normal to `axis` (`None`: a cell-centred field). Works for ghost slots too.
-    pub fn position(&self, c: usize, axis: Option<usize>) -> DVec3 {
+    pub fn position(&self, c: usize, axis: Option<usize>) -> Vec3 {
         let ijk = self.coordinates(c);
-        let mut x = DVec3::ZERO;
+        let mut x = Vec3::ZERO;
         for a in 0..3 {
             // Padded I ↔ cell I − 1, centre at (I − 1/2) Δ; the low face at (I − 1) Δ.
             let shift = if axis == Some(a) { 1.0 } else { 0.5 };
@@ -315,15 +315,15 @@ mod tests {
     fn index_and_positions_agree() {
         let g = StaggeredGrid::new(
             [4, 3, 2],
-            DVec3::new(2.0, 1.5, 1.0),
-            DVec3::new(1.0, 0.0, -1.0),
+            Vec3::new(2.0, 1.5, 1.0),
+            Vec3::new(1.0, 0.0, -1.0),
         );
         let c = g.cell(2, 1, 0);
         assert_eq!(g.coordinates(c), [3, 2, 1]);
         assert!((g.position(c, None) - g.cell_centre(2, 1, 0)).length() < 1e-15);
         // The x-face stored at a cell is its low face.
         let f = g.position(c, Some(0));
-        assert!((f - DVec3::new(2.0, 0.75, -0.75)).length() < 1e-15);
+        assert!((f - Vec3::new(2.0, 0.75, -0.75)).length() < 1e-15);
         assert_eq!(g.strides(), [1, 6, 30]);
         assert_eq!(g.len(), 6 * 5 * 4);
     }

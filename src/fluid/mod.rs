@@ -18,11 +18,11 @@
 //!
 //! ```
 //! use riprap::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
-//! use glam::DVec3;
+//! use riprap::math::Vec3;
 //!
 //! // A 2D lid-driven cavity (thin periodic y), lid on top moving at 1 m/s, Re = 100.
-//! let grid = StaggeredGrid::new([16, 1, 16], DVec3::new(1.0, 0.0625, 1.0), DVec3::ZERO);
-//! let lid = Boundary::Wall { velocity: DVec3::X };
+//! let grid = StaggeredGrid::new([16, 1, 16], Vec3::new(1.0, 0.0625, 1.0), Vec3::ZERO);
+//! let lid = Boundary::Wall { velocity: Vec3::X };
 //! let bcs = Boundaries::periodic()
 //!     .with(0, Boundary::WALL, Boundary::WALL)
 //!     .with(2, Boundary::WALL, lid);

@@ -8,7 +8,7 @@ use super::operators::{cell_velocity, cell_vorticity, divergence};
 use super::pressure::{Passes, PressureFields, Projection};
 use super::sgs::Smagorinsky;
 use super::timestep::{max_speed, stable_time_step, TimeStepLimits};
-use glam::DVec3;
+use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 
 /// Physical and numerical parameters of the water.
@@ -19,7 +19,7 @@ pub struct FluidParameters {
     /// Kinematic viscosity of water ν = μ/ρ_w [m² s⁻¹].
     pub kinematic_viscosity: f64,
     /// Gravitational acceleration g [m s⁻²] (riprap: (0, 0, −9.81), z up).
-    pub gravity: DVec3,
+    pub gravity: Vec3,
     /// The Smagorinsky model [56]-[58], or `None` for no SGS model (DNS or laminar flow).
     pub smagorinsky: Option<Smagorinsky>,
     /// A uniform driving pressure gradient, possibly oscillating in time.
@@ -39,7 +39,7 @@ impl FluidParameters {
         FluidParameters {
             density: 998.2,
             kinematic_viscosity: 1.004e-6,
-            gravity: DVec3::new(0.0, 0.0, -9.81),
+            gravity: Vec3::new(0.0, 0.0, -9.81),
             smagorinsky: Some(Smagorinsky::default()),
             driving_pressure_gradient: DrivingPressureGradient::None,
             time_step: TimeStepLimits::default(),
@@ -53,7 +53,7 @@ impl FluidParameters {
         FluidParameters {
             density: rho,
             kinematic_viscosity: nu,
-            gravity: DVec3::ZERO,
+            gravity: Vec3::ZERO,
             smagorinsky: None,
             driving_pressure_gradient: DrivingPressureGradient::None,
             time_step: TimeStepLimits::default(),
@@ -122,9 +122,9 @@ pub struct Fluid {
 #[derive(Clone, Debug, Default)]
 pub struct CellFields {
     /// Velocity at cell centres, the mean of the two faces [m s⁻¹].
-    pub velocity: Vec<DVec3>,
+    pub velocity: Vec<Vec3>,
     /// Vorticity ∇ × u at cell centres, the mean of the four edges around the cell [s⁻¹].
-    pub vorticity: Vec<DVec3>,
+    pub vorticity: Vec<Vec3>,
     /// Pressure less hydrostatic [Pa].
     pub pressure: Vec<f64>,
     /// Mixture density ρ̄ [kg m⁻³].
@@ -296,7 +296,7 @@ impl Fluid {
 
     /// Sets the velocity from a function of position, evaluated on each face for its own
     /// component, then fills ghosts. The field is not projected: see [`Fluid::project`].
-    pub fn set_velocity(&mut self, f: impl Fn(DVec3) -> DVec3) {
+    pub fn set_velocity(&mut self, f: impl Fn(Vec3) -> Vec3) {
         let g = self.grid;
         for (a, ua) in self.state.velocity.iter_mut().enumerate() {
             for (c, x) in ua.iter_mut().enumerate() {
@@ -307,7 +307,7 @@ impl Fluid {
     }
 
     /// Sets ρ̄ from a function of position (cell centres) [kg m⁻³].
-    pub fn set_mixture_density(&mut self, f: impl Fn(DVec3) -> f64) {
+    pub fn set_mixture_density(&mut self, f: impl Fn(Vec3) -> f64) {
         let g = self.grid;
         for (c, x) in self.state.mixture_density.iter_mut().enumerate() {
             *x = f(g.position(c, None));

@@ -16,7 +16,7 @@
 //! makes the projection exact (see [`super::pressure`]).
 
 use super::grid::Stencil;
-use glam::DVec3;
+use crate::math::Vec3;
 
 /// The three velocity components, each a padded face field [m s⁻¹].
 pub type Velocity<'a> = [&'a [f64]; 3];
@@ -55,8 +55,8 @@ pub fn laplacian(st: &Stencil, f: &[f64], c: usize) -> f64 {
 
 /// Velocity at the centre of cell `c`, the mean of the two faces of each component [m s⁻¹].
 #[inline]
-pub fn cell_velocity(st: &Stencil, u: Velocity, c: usize) -> DVec3 {
-    DVec3::new(
+pub fn cell_velocity(st: &Stencil, u: Velocity, c: usize) -> Vec3 {
+    Vec3::new(
         0.5 * (u[0][c] + u[0][c + st.s[0]]),
         0.5 * (u[1][c] + u[1][c + st.s[1]]),
         0.5 * (u[2][c] + u[2][c + st.s[2]]),
@@ -70,8 +70,8 @@ pub fn cell_velocity(st: &Stencil, u: Velocity, c: usize) -> DVec3 {
 /// stored at e (the low b and d faces of cell e). The cell value is the mean of the four
 /// edges e ∈ {c, c + s_b, c + s_d, c + s_b + s_d} around the cell.
 #[inline]
-pub fn cell_vorticity(st: &Stencil, u: Velocity, c: usize) -> DVec3 {
-    let mut w = DVec3::ZERO;
+pub fn cell_vorticity(st: &Stencil, u: Velocity, c: usize) -> Vec3 {
+    let mut w = Vec3::ZERO;
     for a in 0..3 {
         let (b, d) = ((a + 1) % 3, (a + 2) % 3);
         let (sb, sd) = (st.s[b], st.s[d]);

@@ -28,7 +28,7 @@
 use super::boundary::{fill_scalar_ghosts, Boundaries, Boundary, HIGH, LOW};
 use super::grid::{for_each_chunk, shifted, StaggeredGrid, Stencil};
 use super::operators::{cell_velocity, Velocity};
-use glam::DVec3;
+use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the Smagorinsky model [56]-[58].
@@ -145,7 +145,7 @@ fn edge_strain(ua: &[f64], ub: &[f64], sa: usize, sb: usize, ia: f64, ib: f64, e
 struct WallFace {
     axis: usize,
     side: usize,
-    velocity: DVec3,
+    velocity: Vec3,
 }
 
 /// Computes μ_SGS [Pa s] of [57] in every interior cell of `mu_t` and fills its ghosts.
@@ -415,7 +415,7 @@ mod tests {
         let st = Stencil::new(grid);
         let ijk = grid.coordinates(c);
         let cs_delta2 = (model.coefficient * grid.cell_volume().cbrt()).powi(2);
-        let mut nearest: Option<(f64, usize, usize, DVec3)> = None;
+        let mut nearest: Option<(f64, usize, usize, Vec3)> = None;
         for (a, faces) in bcs.faces.iter().enumerate() {
             for side in [LOW, HIGH] {
                 let Boundary::Wall { velocity } = faces[side] else {
@@ -450,7 +450,7 @@ mod tests {
 
     #[test]
     fn rows_match_the_pointwise_model_bit_for_bit() {
-        let grid = StaggeredGrid::new([7, 5, 6], DVec3::new(0.7, 0.4, 0.9), DVec3::ZERO);
+        let grid = StaggeredGrid::new([7, 5, 6], Vec3::new(0.7, 0.4, 0.9), Vec3::ZERO);
         let field = |seed: usize| -> Vec<f64> {
             (0..grid.len())
                 .map(|m| (((m * 7919 + seed * 104729) % 1009) as f64 / 1009.0 - 0.5) * 0.3)
@@ -460,7 +460,7 @@ mod tests {
         let rho: Vec<f64> = field(5).iter().map(|x| 1000.0 + 500.0 * x).collect();
         let u = [&u0[..], &u1[..], &u2[..]];
         let lid = Boundary::Wall {
-            velocity: DVec3::new(0.1, 0.0, 0.2),
+            velocity: Vec3::new(0.1, 0.0, 0.2),
         };
         let cases = [
             Boundaries::periodic(),
@@ -497,7 +497,7 @@ mod tests {
 
     #[test]
     fn strain_rows_match_the_pointwise_formula_bit_for_bit() {
-        let grid = StaggeredGrid::new([6, 7, 5], DVec3::new(0.6, 0.9, 0.4), DVec3::ZERO);
+        let grid = StaggeredGrid::new([6, 7, 5], Vec3::new(0.6, 0.9, 0.4), Vec3::ZERO);
         let st = Stencil::new(&grid);
         let field = |seed: usize| -> Vec<f64> {
             (0..grid.len())

@@ -140,13 +140,13 @@ mod tests {
     use crate::fluid::diffusion::{molecular, subgrid};
     use crate::fluid::grid::StaggeredGrid;
     use crate::fluid::operators::interp_to_face;
-    use glam::DVec3;
+    use crate::math::Vec3;
 
     /// The row kernel gives the same bits as the point-by-point formulas, on every face of
     /// every component, with and without the subgrid term, on a non-cubic grid.
     #[test]
     fn rows_match_the_pointwise_formulas_bit_for_bit() {
-        let grid = StaggeredGrid::new([7, 5, 6], DVec3::new(0.7, 0.4, 0.9), DVec3::ZERO);
+        let grid = StaggeredGrid::new([7, 5, 6], Vec3::new(0.7, 0.4, 0.9), Vec3::ZERO);
         let st = Stencil::new(&grid);
         let field = |seed: usize| -> Vec<f64> {
             (0..grid.len())

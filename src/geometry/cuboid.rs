@@ -1,6 +1,6 @@
 //! Axis-aligned box wall: a closed container or a solid obstacle.
 
-use glam::DVec3;
+use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 
 use super::{box_corners, SurfaceContact};
@@ -17,16 +17,16 @@ use super::{box_corners, SurfaceContact};
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Cuboid {
     /// Lower corner [m].
-    pub min: DVec3,
+    pub min: Vec3,
     /// Upper corner [m].
-    pub max: DVec3,
+    pub max: Vec3,
     /// Container (true) or solid obstacle (false).
     pub inside: bool,
 }
 
 /// Outward unit normal of face `f` of a box.
-fn face_normal(f: usize) -> DVec3 {
-    let axis = DVec3::AXES[f / 2];
+fn face_normal(f: usize) -> Vec3 {
+    let axis = Vec3::AXES[f / 2];
     if f % 2 == 0 {
         -axis
     } else {
@@ -38,7 +38,7 @@ impl Cuboid {
     /// Appends the contacts of a sphere (centre [m], radius [m]) to `out`, in face order.
     pub fn sphere_contacts(
         &self,
-        centre: DVec3,
+        centre: Vec3,
         radius: f64,
         out: &mut impl Extend<SurfaceContact>,
     ) {
@@ -69,7 +69,7 @@ impl Cuboid {
 
         let q = centre.clamp(self.min, self.max);
         let d = centre - q;
-        if d != DVec3::ZERO {
+        if d != Vec3::ZERO {
             // Outside the solid: face, edge or corner, whichever holds the clamped point.
             let dist = d.length();
             if dist < radius {
@@ -113,7 +113,7 @@ impl Cuboid {
 
     /// Triangulation [m] of the six faces (two triangles each, wound outwards, in face order).
     /// The bounds are unused: a box is finite.
-    pub fn surface(&self, _bounds_min: DVec3, _bounds_max: DVec3) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    pub fn surface(&self, _bounds_min: Vec3, _bounds_max: Vec3) -> (Vec<Vec3>, Vec<[u32; 3]>) {
         let k = box_corners(self.min, self.max);
         // Corner indices of each face, counter-clockwise seen from outside.
         const FACES: [[u32; 4]; 6] = [
@@ -136,94 +136,94 @@ impl Cuboid {
 mod tests {
     use super::*;
 
-    fn contacts(b: &Cuboid, c: DVec3, r: f64) -> Vec<SurfaceContact> {
+    fn contacts(b: &Cuboid, c: Vec3, r: f64) -> Vec<SurfaceContact> {
         let mut v = Vec::new();
         b.sphere_contacts(c, r, &mut v);
         v
     }
 
-    fn close(a: DVec3, b: DVec3) -> bool {
+    fn close(a: Vec3, b: Vec3) -> bool {
         (a - b).length() < 1e-14
     }
 
-    const MAX: DVec3 = DVec3::new(2.0, 3.0, 4.0);
+    const MAX: Vec3 = Vec3::new(2.0, 3.0, 4.0);
 
     #[test]
     fn container() {
         let b = Cuboid {
-            min: DVec3::ZERO,
+            min: Vec3::ZERO,
             max: MAX,
             inside: true,
         };
-        assert!(contacts(&b, DVec3::new(1.0, 1.5, 2.0), 0.5).is_empty());
+        assert!(contacts(&b, Vec3::new(1.0, 1.5, 2.0), 0.5).is_empty());
         // Near corner (0, 3, 4): -x and +z touched, +y exactly tangent (no contact).
-        let v = contacts(&b, DVec3::new(0.25, 2.5, 3.875), 0.5);
+        let v = contacts(&b, Vec3::new(0.25, 2.5, 3.875), 0.5);
         let got: Vec<(u32, f64)> = v.iter().map(|c| (c.element, c.overlap)).collect();
         assert_eq!(got, vec![(0, 0.25), (5, 0.375)]);
-        assert!(close(v[0].point, DVec3::new(0.0, 2.5, 3.875)));
-        assert_eq!(v[0].normal, -DVec3::X);
-        assert!(close(v[1].point, DVec3::new(0.25, 2.5, 4.0)));
-        assert_eq!(v[1].normal, DVec3::Z);
+        assert!(close(v[0].point, Vec3::new(0.0, 2.5, 3.875)));
+        assert_eq!(v[0].normal, -Vec3::X);
+        assert!(close(v[1].point, Vec3::new(0.25, 2.5, 4.0)));
+        assert_eq!(v[1].normal, Vec3::Z);
         // Touching all three faces at the corner.
-        let v = contacts(&b, DVec3::new(0.25, 2.75, 3.75), 0.5);
+        let v = contacts(&b, Vec3::new(0.25, 2.75, 3.75), 0.5);
         assert_eq!(
             v.iter().map(|c| c.element).collect::<Vec<_>>(),
             vec![0, 3, 5]
         );
         assert!(v.iter().all(|c| (c.overlap - 0.25).abs() < 1e-15));
         // Escaped through +x: still pushed back in.
-        let v = contacts(&b, DVec3::new(2.5, 1.5, 2.0), 0.25);
+        let v = contacts(&b, Vec3::new(2.5, 1.5, 2.0), 0.25);
         assert_eq!(v.len(), 1);
         assert_eq!(
             (v[0].element, v[0].overlap, v[0].normal),
-            (1, 0.75, DVec3::X)
+            (1, 0.75, Vec3::X)
         );
     }
 
     #[test]
     fn obstacle() {
         let b = Cuboid {
-            min: DVec3::ZERO,
+            min: Vec3::ZERO,
             max: MAX,
             inside: false,
         };
         // Face -z.
-        let v = contacts(&b, DVec3::new(1.0, 1.0, -0.25), 0.5);
+        let v = contacts(&b, Vec3::new(1.0, 1.0, -0.25), 0.5);
         assert_eq!(v.len(), 1);
-        assert_eq!((v[0].element, v[0].normal), (4, DVec3::Z));
+        assert_eq!((v[0].element, v[0].normal), (4, Vec3::Z));
         assert!((v[0].overlap - 0.25).abs() < 1e-15);
-        assert!(close(v[0].point, DVec3::new(1.0, 1.0, 0.0)));
+        assert!(close(v[0].point, Vec3::new(1.0, 1.0, 0.0)));
         // Edge along z at (2, 3): 0.3, 0.4 away -> distance 0.5.
-        let v = contacts(&b, DVec3::new(2.3, 3.4, 1.0), 0.6);
+        let v = contacts(&b, Vec3::new(2.3, 3.4, 1.0), 0.6);
         assert_eq!(v.len(), 1);
-        assert!(close(v[0].point, DVec3::new(2.0, 3.0, 1.0)));
-        assert!(close(v[0].normal, DVec3::new(-0.6, -0.8, 0.0)));
+        assert!(close(v[0].point, Vec3::new(2.0, 3.0, 1.0)));
+        assert!(close(v[0].normal, Vec3::new(-0.6, -0.8, 0.0)));
         assert!((v[0].overlap - 0.1).abs() < 1e-14);
         assert_eq!(v[0].element, 3); // dominant separation along +y
                                      // Corner (0, 0, 0): distance sqrt(3) * 0.1.
-        let v = contacts(&b, DVec3::splat(-0.1), 0.2);
-        assert!(close(v[0].point, DVec3::ZERO));
-        assert!(close(v[0].normal, DVec3::ONE.normalize()));
+        let v = contacts(&b, Vec3::splat(-0.1), 0.2);
+        assert!(close(v[0].point, Vec3::ZERO));
+        assert!(close(v[0].normal, Vec3::ONE.normalize()));
         assert!((v[0].overlap - (0.2 - 3f64.sqrt() * 0.1)).abs() < 1e-15);
-        assert!(contacts(&b, DVec3::splat(-0.1), 0.17).is_empty());
+        assert!(contacts(&b, Vec3::splat(-0.1), 0.17).is_empty());
         // Centre inside, nearest face +y (depth 0.25): pushed out along +y.
-        let v = contacts(&b, DVec3::new(1.0, 2.75, 2.0), 0.1);
+        let v = contacts(&b, Vec3::new(1.0, 2.75, 2.0), 0.1);
         assert_eq!(v.len(), 1);
-        assert_eq!((v[0].element, v[0].normal), (3, -DVec3::Y));
+        assert_eq!((v[0].element, v[0].normal), (3, -Vec3::Y));
         assert!((v[0].overlap - 0.35).abs() < 1e-15);
-        assert!(close(v[0].point, DVec3::new(1.0, 3.0, 2.0)));
+        assert!(close(v[0].point, Vec3::new(1.0, 3.0, 2.0)));
         // Far away: nothing.
-        assert!(contacts(&b, DVec3::new(5.0, 5.0, 5.0), 1.0).is_empty());
+        assert!(contacts(&b, Vec3::new(5.0, 5.0, 5.0), 1.0).is_empty());
     }
 
     #[test]
     fn surface_is_closed_and_outward() {
         let b = Cuboid {
-            min: DVec3::ZERO,
+            min: Vec3::ZERO,
             max: MAX,
             inside: true,
         };
-        let (pts, tris) = b.surface(DVec3::ZERO, DVec3::ZERO);
+        let (pts, tris) = b.surface(Vec3::ZERO, Vec3::ZERO);
         assert_eq!((pts.len(), tris.len()), (8, 12));
         // Divergence theorem: sum over faces of (centroid . n) area / 3 = volume, if outward.
         let vol: f64 = tris

@@ -1,6 +1,6 @@
 //! Finite circular cylinder wall: an open tube (tank) or a solid obstacle.
 
-use glam::DVec3;
+use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 
 use super::SurfaceContact;
@@ -21,9 +21,9 @@ pub const CYLINDER_SEGMENTS: u32 = 48;
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Cylinder {
     /// Centre of the first end [m].
-    pub start: DVec3,
+    pub start: Vec3,
     /// Centre of the second end [m].
-    pub end: DVec3,
+    pub end: Vec3,
     /// Radius [m].
     pub radius: f64,
     /// Tube (true) or solid obstacle (false).
@@ -35,7 +35,7 @@ impl Cylinder {
     #[inline]
     pub fn sphere_contacts(
         &self,
-        centre: DVec3,
+        centre: Vec3,
         radius: f64,
         out: &mut impl Extend<SurfaceContact>,
     ) {
@@ -44,7 +44,7 @@ impl Cylinder {
 
     /// The contact of a sphere (centre [m], radius [m]), if any. A cylinder of zero length
     /// touches nothing.
-    pub fn sphere_contact(&self, centre: DVec3, radius: f64) -> Option<SurfaceContact> {
+    pub fn sphere_contact(&self, centre: Vec3, radius: f64) -> Option<SurfaceContact> {
         let axis = self.end - self.start;
         let len = axis.length();
         if len.is_nan() || len <= 0.0 {
@@ -103,9 +103,9 @@ impl Cylinder {
 
     /// Triangulation [m] with [`CYLINDER_SEGMENTS`] segments, wound outwards: the lateral
     /// surface, plus the two end caps for a solid cylinder. The bounds are unused.
-    pub fn surface(&self, _bounds_min: DVec3, _bounds_max: DVec3) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    pub fn surface(&self, _bounds_min: Vec3, _bounds_max: Vec3) -> (Vec<Vec3>, Vec<[u32; 3]>) {
         let n = CYLINDER_SEGMENTS;
-        let u = (self.end - self.start).normalize_or(DVec3::Z);
+        let u = (self.end - self.start).normalize_or(Vec3::Z);
         let e1 = u.any_orthonormal_vector();
         let e2 = u.cross(e1);
         let ring = |i: u32| {
@@ -113,7 +113,7 @@ impl Cylinder {
             self.radius * (a.cos() * e1 + a.sin() * e2)
         };
         // Vertices: start ring 0..n, end ring n..2n, then the two cap centres.
-        let mut pts: Vec<DVec3> = (0..n).map(|i| self.start + ring(i)).collect();
+        let mut pts: Vec<Vec3> = (0..n).map(|i| self.start + ring(i)).collect();
         pts.extend((0..n).map(|i| self.end + ring(i)));
         let mut tris = Vec::with_capacity(4 * n as usize);
         for i in 0..n {
@@ -136,7 +136,7 @@ impl Cylinder {
 }
 
 /// Contact with the surface point `q` [m] closest to a centre on the free side (q != centre).
-fn touch(centre: DVec3, radius: f64, q: DVec3) -> Option<SurfaceContact> {
+fn touch(centre: Vec3, radius: f64, q: Vec3) -> Option<SurfaceContact> {
     let d = q - centre;
     let dist = d.length();
     (dist < radius && dist > 0.0).then(|| SurfaceContact {
@@ -150,10 +150,10 @@ fn touch(centre: DVec3, radius: f64, q: DVec3) -> Option<SurfaceContact> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::{DMat3, DQuat};
+    use crate::math::{Mat3, Quat};
 
     /// Single contact of `cyl` (if any), checked to be the only one.
-    fn one(cyl: &Cylinder, c: DVec3, r: f64) -> Option<SurfaceContact> {
+    fn one(cyl: &Cylinder, c: Vec3, r: f64) -> Option<SurfaceContact> {
         let mut v = Vec::new();
         cyl.sphere_contacts(c, r, &mut v);
         assert!(v.len() <= 1);
@@ -162,16 +162,16 @@ mod tests {
 
     /// (centre, sphere radius, expected point, normal, overlap) for the unit-radius cylinder
     /// along z from 0 to 2.
-    type Case = (DVec3, f64, DVec3, DVec3, f64);
+    type Case = (Vec3, f64, Vec3, Vec3, f64);
 
-    fn check(inside: bool, cases: &[Case], misses: &[(DVec3, f64)]) {
+    fn check(inside: bool, cases: &[Case], misses: &[(Vec3, f64)]) {
         // The canonical cylinder, and the same rotated and moved: the answers move with it.
-        let rot = DMat3::from_quat(DQuat::from_euler(glam::EulerRot::XYZ, 0.3, -1.1, 2.0));
-        let off = DVec3::new(1.0, -2.0, 0.5);
-        for (m, o) in [(DMat3::IDENTITY, DVec3::ZERO), (rot, off)] {
+        let rot = Mat3::from_quat(Quat::from_euler(glam::EulerRot::XYZ, 0.3, -1.1, 2.0));
+        let off = Vec3::new(1.0, -2.0, 0.5);
+        for (m, o) in [(Mat3::IDENTITY, Vec3::ZERO), (rot, off)] {
             let cyl = Cylinder {
                 start: o,
-                end: o + m * DVec3::new(0.0, 0.0, 2.0),
+                end: o + m * Vec3::new(0.0, 0.0, 2.0),
                 radius: 1.0,
                 inside,
             };
@@ -206,40 +206,40 @@ mod tests {
             &[
                 // Lateral wall.
                 (
-                    DVec3::new(0.7, 0.0, 1.0),
+                    Vec3::new(0.7, 0.0, 1.0),
                     0.5,
-                    DVec3::new(1.0, 0.0, 1.0),
-                    DVec3::X,
+                    Vec3::new(1.0, 0.0, 1.0),
+                    Vec3::X,
                     0.2,
                 ),
                 (
-                    DVec3::new(0.0, -0.6, 0.0),
+                    Vec3::new(0.0, -0.6, 0.0),
                     0.5,
-                    DVec3::new(0.0, -1.0, 0.0),
-                    -DVec3::Y,
+                    Vec3::new(0.0, -1.0, 0.0),
+                    -Vec3::Y,
                     0.1,
                 ),
                 // Escaped sideways: pushed back in.
                 (
-                    DVec3::new(1.2, 0.0, 1.0),
+                    Vec3::new(1.2, 0.0, 1.0),
                     0.1,
-                    DVec3::new(1.0, 0.0, 1.0),
-                    DVec3::X,
+                    Vec3::new(1.0, 0.0, 1.0),
+                    Vec3::X,
                     0.3,
                 ),
                 // Beyond the open end, touching the rim.
                 (
-                    DVec3::new(0.9, 0.0, 2.1),
+                    Vec3::new(0.9, 0.0, 2.1),
                     0.2,
-                    DVec3::new(1.0, 0.0, 2.0),
-                    DVec3::new(0.1, 0.0, -0.1) / s,
+                    Vec3::new(1.0, 0.0, 2.0),
+                    Vec3::new(0.1, 0.0, -0.1) / s,
                     0.2 - s,
                 ),
             ],
             &[
-                (DVec3::new(0.0, 0.0, 1.0), 0.5),
-                (DVec3::new(0.0, 0.0, 2.6), 0.5),
-                (DVec3::new(0.5, 0.0, -0.6), 0.5),
+                (Vec3::new(0.0, 0.0, 1.0), 0.5),
+                (Vec3::new(0.0, 0.0, 2.6), 0.5),
+                (Vec3::new(0.5, 0.0, -0.6), 0.5),
             ],
         );
     }
@@ -251,55 +251,55 @@ mod tests {
             &[
                 // Lateral surface.
                 (
-                    DVec3::new(1.2, 0.0, 1.0),
+                    Vec3::new(1.2, 0.0, 1.0),
                     0.5,
-                    DVec3::new(1.0, 0.0, 1.0),
-                    -DVec3::X,
+                    Vec3::new(1.0, 0.0, 1.0),
+                    -Vec3::X,
                     0.3,
                 ),
                 // End cap.
                 (
-                    DVec3::new(0.3, 0.4, 2.2),
+                    Vec3::new(0.3, 0.4, 2.2),
                     0.5,
-                    DVec3::new(0.3, 0.4, 2.0),
-                    -DVec3::Z,
+                    Vec3::new(0.3, 0.4, 2.0),
+                    -Vec3::Z,
                     0.3,
                 ),
                 (
-                    DVec3::new(0.3, 0.4, -0.1),
+                    Vec3::new(0.3, 0.4, -0.1),
                     0.5,
-                    DVec3::new(0.3, 0.4, 0.0),
-                    DVec3::Z,
+                    Vec3::new(0.3, 0.4, 0.0),
+                    Vec3::Z,
                     0.4,
                 ),
                 // Rim edge: 0.3 out, 0.4 beyond the end.
                 (
-                    DVec3::new(1.3, 0.0, 2.4),
+                    Vec3::new(1.3, 0.0, 2.4),
                     0.6,
-                    DVec3::new(1.0, 0.0, 2.0),
-                    DVec3::new(-0.6, 0.0, -0.8),
+                    Vec3::new(1.0, 0.0, 2.0),
+                    Vec3::new(-0.6, 0.0, -0.8),
                     0.1,
                 ),
                 // Centre inside, nearest the lateral surface (0.1 deep).
                 (
-                    DVec3::new(0.9, 0.0, 1.0),
+                    Vec3::new(0.9, 0.0, 1.0),
                     0.2,
-                    DVec3::new(1.0, 0.0, 1.0),
-                    -DVec3::X,
+                    Vec3::new(1.0, 0.0, 1.0),
+                    -Vec3::X,
                     0.3,
                 ),
                 // Centre inside, nearest the start cap (0.05 deep): pushed out along -z.
                 (
-                    DVec3::new(0.0, 0.2, 0.05),
+                    Vec3::new(0.0, 0.2, 0.05),
                     0.2,
-                    DVec3::new(0.0, 0.2, 0.0),
-                    DVec3::Z,
+                    Vec3::new(0.0, 0.2, 0.0),
+                    Vec3::Z,
                     0.25,
                 ),
             ],
             &[
-                (DVec3::new(1.6, 0.0, 1.0), 0.5),
-                (DVec3::new(1.3, 0.0, 2.4), 0.45),
+                (Vec3::new(1.6, 0.0, 1.0), 0.5),
+                (Vec3::new(1.3, 0.0, 2.4), 0.45),
             ],
         );
     }
@@ -307,15 +307,15 @@ mod tests {
     #[test]
     fn surface_sizes_and_area() {
         let mut cyl = Cylinder {
-            start: DVec3::ZERO,
-            end: DVec3::new(0.0, 3.0, 0.0),
+            start: Vec3::ZERO,
+            end: Vec3::new(0.0, 3.0, 0.0),
             radius: 2.0,
             inside: true,
         };
-        let (p, t) = cyl.surface(DVec3::ZERO, DVec3::ZERO);
+        let (p, t) = cyl.surface(Vec3::ZERO, Vec3::ZERO);
         assert_eq!((p.len(), t.len()), (96, 96));
         cyl.inside = false;
-        let (p, t) = cyl.surface(DVec3::ZERO, DVec3::ZERO);
+        let (p, t) = cyl.surface(Vec3::ZERO, Vec3::ZERO);
         assert_eq!((p.len(), t.len()), (98, 192));
         // Enclosed volume (divergence theorem) close to pi r^2 L, positive if wound outwards.
         let vol: f64 = t

@@ -4,7 +4,7 @@
 
 use std::collections::HashMap;
 
-use glam::{DMat3, DVec3};
+use crate::math::{Mat3, Vec3};
 use serde::{Deserialize, Serialize};
 
 use super::triangle::sphere_triangle_contacts;
@@ -22,7 +22,7 @@ pub enum MeshError {
         /// Index of the triangle.
         triangle: usize,
         /// The offending corner [m].
-        value: DVec3,
+        value: Vec3,
     },
     /// A vertex has a NaN or infinite coordinate.
     #[error("vertex {vertex} (from 0): non-finite coordinate {value}")]
@@ -30,7 +30,7 @@ pub enum MeshError {
         /// Index of the vertex.
         vertex: usize,
         /// Its value [m].
-        value: DVec3,
+        value: Vec3,
     },
     /// A triangle refers to a vertex that does not exist.
     #[error("triangle {triangle} (from 0): vertex index {index} out of range ({count} vertices)")]
@@ -48,16 +48,16 @@ pub enum MeshError {
 /// bounding boxes and an optional bin grid (see [`TriMesh::build_bins`]).
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct TriMesh {
-    vertices: Vec<DVec3>,
+    vertices: Vec<Vec3>,
     triangles: Vec<[u32; 3]>,
-    normals: Vec<DVec3>,
-    boxes: Vec<[DVec3; 2]>,
+    normals: Vec<Vec3>,
+    boxes: Vec<[Vec3; 2]>,
     bins: Option<BoxGrid>,
 }
 
 impl TriMesh {
     /// A mesh from indexed triangles (vertices [m]); nothing is merged.
-    pub fn new(vertices: Vec<DVec3>, triangles: Vec<[u32; 3]>) -> Result<TriMesh, MeshError> {
+    pub fn new(vertices: Vec<Vec3>, triangles: Vec<[u32; 3]>) -> Result<TriMesh, MeshError> {
         if triangles.is_empty() {
             return Err(MeshError::Empty);
         }
@@ -88,7 +88,7 @@ impl TriMesh {
     /// A mesh from a triangle soup (corners [m], as read from an STL file), merging vertices
     /// that are equal or within 1e-12 times the larger of the mesh size and its largest
     /// coordinate of each other (per component). Triangle order is kept.
-    pub fn from_triangle_soup(soup: &[[DVec3; 3]]) -> Result<TriMesh, MeshError> {
+    pub fn from_triangle_soup(soup: &[[Vec3; 3]]) -> Result<TriMesh, MeshError> {
         if soup.is_empty() {
             return Err(MeshError::Empty);
         }
@@ -100,13 +100,13 @@ impl TriMesh {
         let (lo, hi) = soup
             .iter()
             .flatten()
-            .fold((DVec3::MAX, DVec3::MIN), |(l, h), &p| (l.min(p), h.max(p)));
+            .fold((Vec3::MAX, Vec3::MIN), |(l, h), &p| (l.min(p), h.max(p)));
         // Relative to the size and to the coordinates, so that cell keys stay below ~1e12.
         let tol = 1e-12 * (hi - lo).length().max(lo.abs().max(hi.abs()).max_element());
         let cell = if tol > 0.0 { tol } else { 1.0 };
-        let key = |p: DVec3| (p / cell).floor().as_i64vec3().to_array();
+        let key = |p: Vec3| (p / cell).floor().as_i64vec3().to_array();
         let mut grid: HashMap<[i64; 3], Vec<u32>> = HashMap::new();
-        let mut vertices: Vec<DVec3> = Vec::new();
+        let mut vertices: Vec<Vec3> = Vec::new();
         let mut triangles = Vec::with_capacity(soup.len());
         for t in soup {
             triangles.push(t.map(|p| {
@@ -131,7 +131,7 @@ impl TriMesh {
 
     /// Recomputes normals and triangle boxes after the vertices changed.
     fn update_derived(&mut self) {
-        let corners: Vec<[DVec3; 3]> = (0..self.triangles.len()).map(|i| self.corners(i)).collect();
+        let corners: Vec<[Vec3; 3]> = (0..self.triangles.len()).map(|i| self.corners(i)).collect();
         self.normals = corners
             .iter()
             .map(|[a, b, c]| (*b - *a).cross(*c - *a).normalize_or_zero())
@@ -143,7 +143,7 @@ impl TriMesh {
     }
 
     /// The vertices [m].
-    pub fn vertices(&self) -> &[DVec3] {
+    pub fn vertices(&self) -> &[Vec3] {
         &self.vertices
     }
 
@@ -153,23 +153,21 @@ impl TriMesh {
     }
 
     /// Unit face normals, `(b - a) × (c - a)` normalised; zero for degenerate triangles.
-    pub fn normals(&self) -> &[DVec3] {
+    pub fn normals(&self) -> &[Vec3] {
         &self.normals
     }
 
     /// The three corners [m] of triangle `i`.
     #[inline]
-    pub fn corners(&self, i: usize) -> [DVec3; 3] {
+    pub fn corners(&self, i: usize) -> [Vec3; 3] {
         self.triangles[i].map(|v| self.vertices[v as usize])
     }
 
     /// Lower and upper corners [m] of the axis-aligned bounding box.
-    pub fn bounding_box(&self) -> (DVec3, DVec3) {
-        self.boxes
-            .iter()
-            .fold((DVec3::MAX, DVec3::MIN), |(l, h), b| {
-                (l.min(b[0]), h.max(b[1]))
-            })
+    pub fn bounding_box(&self) -> (Vec3, Vec3) {
+        self.boxes.iter().fold((Vec3::MAX, Vec3::MIN), |(l, h), b| {
+            (l.min(b[0]), h.max(b[1]))
+        })
     }
 
     /// Total area [m²].
@@ -185,7 +183,7 @@ impl TriMesh {
     /// The mesh scaled by `scale` about the origin, then rotated by `rotation` (orthonormal)
     /// and moved by `offset` [m]: `v' = rotation * (scale * v) + offset`. A bin grid is rebuilt
     /// with its cell scaled alike.
-    pub fn transformed(&self, scale: f64, rotation: DMat3, offset: DVec3) -> TriMesh {
+    pub fn transformed(&self, scale: f64, rotation: Mat3, offset: Vec3) -> TriMesh {
         let mut m = TriMesh {
             vertices: self
                 .vertices
@@ -219,7 +217,7 @@ impl TriMesh {
 
     /// Replaces `out` by the indices of the triangles whose bounding box is within `reach` [m]
     /// of `centre` [m], each once, ascending. Uses the bin grid if built, else checks all.
-    pub fn candidates(&self, centre: DVec3, reach: f64, out: &mut Vec<u32>) {
+    pub fn candidates(&self, centre: Vec3, reach: f64, out: &mut Vec<u32>) {
         out.clear();
         if reach.is_nan() || reach < 0.0 {
             return; // negative or NaN: nothing is within reach
@@ -229,7 +227,7 @@ impl TriMesh {
             let [lo, hi] = self.boxes[t as usize];
             (lo - centre)
                 .max(centre - hi)
-                .max(DVec3::ZERO)
+                .max(Vec3::ZERO)
                 .length_squared()
                 <= r2
         };
@@ -250,7 +248,7 @@ impl TriMesh {
     /// [`TriMesh::sphere_contacts`].
     pub fn contacts_near(
         &self,
-        centre: DVec3,
+        centre: Vec3,
         radius: f64,
         scratch: &mut Vec<u32>,
         out: &mut impl Extend<SurfaceContact>,
@@ -266,7 +264,7 @@ impl TriMesh {
     /// [`sphere_triangle_contacts`] for the rule.
     pub fn sphere_contacts(
         &self,
-        centre: DVec3,
+        centre: Vec3,
         radius: f64,
         candidates: &[u32],
         out: &mut impl Extend<SurfaceContact>,
@@ -276,7 +274,7 @@ impl TriMesh {
     }
 
     /// The mesh itself, for output; the bounds are unused.
-    pub fn surface(&self, _bounds_min: DVec3, _bounds_max: DVec3) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    pub fn surface(&self, _bounds_min: Vec3, _bounds_max: Vec3) -> (Vec<Vec3>, Vec<[u32; 3]>) {
         (self.vertices.clone(), self.triangles.clone())
     }
 }
@@ -290,7 +288,7 @@ mod tests {
     #[test]
     fn candidates_match_brute_force() {
         let mut rng = Rng(77);
-        let soup: Vec<[DVec3; 3]> = (0..300)
+        let soup: Vec<[Vec3; 3]> = (0..300)
             .map(|_| {
                 let a = rng.vec(2.0);
                 let s = 0.5 * rng.next().powi(3);
@@ -320,19 +318,19 @@ mod tests {
 
     #[test]
     fn construction_and_errors() {
-        let a = DVec3::ZERO;
+        let a = Vec3::ZERO;
         // Corners equal or within 1e-12 of the size are merged, farther ones kept.
         let soup = [
-            [a, DVec3::X, DVec3::Y],
-            [DVec3::X + DVec3::splat(1e-13), DVec3::ONE, DVec3::Y],
+            [a, Vec3::X, Vec3::Y],
+            [Vec3::X + Vec3::splat(1e-13), Vec3::ONE, Vec3::Y],
         ];
         assert_eq!(
             TriMesh::from_triangle_soup(&soup).unwrap().vertices().len(),
             4
         );
         let soup = [
-            [a, DVec3::X, DVec3::Y],
-            [DVec3::X + DVec3::splat(1e-9), DVec3::ONE, DVec3::Y],
+            [a, Vec3::X, Vec3::Y],
+            [Vec3::X + Vec3::splat(1e-9), Vec3::ONE, Vec3::Y],
         ];
         assert_eq!(
             TriMesh::from_triangle_soup(&soup).unwrap().vertices().len(),
@@ -342,16 +340,16 @@ mod tests {
             TriMesh::from_triangle_soup(&[]).unwrap_err(),
             MeshError::Empty
         );
-        let nan = DVec3::new(0.0, f64::NAN, 0.0);
-        let e = TriMesh::from_triangle_soup(&[[a, DVec3::X, DVec3::Y], [a, nan, DVec3::Y]])
-            .unwrap_err();
+        let nan = Vec3::new(0.0, f64::NAN, 0.0);
+        let e =
+            TriMesh::from_triangle_soup(&[[a, Vec3::X, Vec3::Y], [a, nan, Vec3::Y]]).unwrap_err();
         assert!(matches!(e, MeshError::NonFinite { triangle: 1, .. }), "{e}");
-        let e = TriMesh::new(vec![a, DVec3::X, DVec3::Y], vec![[0, 1, 3]]).unwrap_err();
+        let e = TriMesh::new(vec![a, Vec3::X, Vec3::Y], vec![[0, 1, 3]]).unwrap_err();
         assert_eq!(
             e.to_string(),
             "triangle 0 (from 0): vertex index 3 out of range (3 vertices)"
         );
-        assert!(TriMesh::new(vec![a, nan, DVec3::Y], vec![[0, 1, 2]]).is_err());
+        assert!(TriMesh::new(vec![a, nan, Vec3::Y], vec![[0, 1, 2]]).is_err());
     }
 
     #[test]
@@ -359,19 +357,19 @@ mod tests {
         let mut mesh = TriMesh::from_triangle_soup(&square_grid(2)).unwrap();
         mesh.build_bins(0.3);
         assert!((mesh.area() - 1.0).abs() < 1e-15);
-        let rot = DMat3::from_rotation_x(std::f64::consts::FRAC_PI_2);
-        let m = mesh.transformed(2.0, rot, DVec3::new(0.0, 0.0, 5.0));
+        let rot = Mat3::from_rotation_x(std::f64::consts::FRAC_PI_2);
+        let m = mesh.transformed(2.0, rot, Vec3::new(0.0, 0.0, 5.0));
         assert!((m.area() - 4.0).abs() < 1e-12);
         let (lo, hi) = m.bounding_box();
-        assert!((lo - DVec3::new(0.0, 0.0, 5.0)).length() < 1e-12);
-        assert!((hi - DVec3::new(2.0, 0.0, 7.0)).length() < 1e-12);
-        assert!(m.normals().iter().all(|n| (*n + DVec3::Y).length() < 1e-12));
+        assert!((lo - Vec3::new(0.0, 0.0, 5.0)).length() < 1e-12);
+        assert!((hi - Vec3::new(2.0, 0.0, 7.0)).length() < 1e-12);
+        assert!(m.normals().iter().all(|n| (*n + Vec3::Y).length() < 1e-12));
         assert!((m.bin_cell_size().unwrap() - 0.6).abs() < 1e-15);
         // A sphere in front of the rotated square (y < 0) touches it once.
         let mut v = Vec::new();
-        m.contacts_near(DVec3::new(1.0, -0.05, 6.0), 0.1, &mut Vec::new(), &mut v);
+        m.contacts_near(Vec3::new(1.0, -0.05, 6.0), 0.1, &mut Vec::new(), &mut v);
         assert_eq!(v.len(), 1);
-        assert!((v[0].normal - DVec3::Y).length() < 1e-12 && (v[0].overlap - 0.05).abs() < 1e-12);
+        assert!((v[0].normal - Vec3::Y).length() < 1e-12 && (v[0].overlap - 0.05).abs() < 1e-12);
     }
 
     #[test]
@@ -379,12 +377,12 @@ mod tests {
         // Random heightfield: convex and concave edges and vertices everywhere.
         let mut rng = Rng(4242);
         let heights: Vec<f64> = (0..81).map(|_| 0.3 * rng.next()).collect();
-        let soup: Vec<[DVec3; 3]> = square_grid(8)
+        let soup: Vec<[Vec3; 3]> = square_grid(8)
             .iter()
             .map(|t| {
                 t.map(|p| {
                     let k = (p.x * 8.0).round() as usize + 9 * (p.y * 8.0).round() as usize;
-                    DVec3::new(p.x, p.y, heights[k])
+                    Vec3::new(p.x, p.y, heights[k])
                 })
             })
             .collect();
@@ -392,7 +390,7 @@ mod tests {
         mesh.build_bins(0.2);
         let (mut scratch, mut v) = (Vec::new(), Vec::new());
         for _ in 0..5000 {
-            let c = DVec3::new(rng.next(), rng.next(), 0.6 * rng.next() - 0.1);
+            let c = Vec3::new(rng.next(), rng.next(), 0.6 * rng.next() - 0.1);
             let r = 0.05 + 0.2 * rng.next();
             let closest = (0..soup.len())
                 .map(|i| {

@@ -24,16 +24,16 @@ pub use plane::Plane;
 pub use stl::StlError;
 pub use triangle::{closest_point_on_triangle, sphere_triangle_contacts, Feature};
 
-use glam::DVec3;
+use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 
 /// Where a sphere touches a surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SurfaceContact {
     /// Closest point of the surface to the sphere centre [m].
-    pub point: DVec3,
+    pub point: Vec3,
     /// Unit vector from the sphere centre towards the surface (the direction in which the wall pushes back is -normal).
-    pub normal: DVec3,
+    pub normal: Vec3,
     /// Overlap δ = radius - distance(centre, surface) [m], > 0 for a contact.
     pub overlap: f64,
     /// Which element of the surface (triangle index for meshes, face index for cuboids, 0 otherwise).
@@ -42,8 +42,8 @@ pub struct SurfaceContact {
 
 impl SurfaceContact {
     const EMPTY: SurfaceContact = SurfaceContact {
-        point: DVec3::ZERO,
-        normal: DVec3::ZERO,
+        point: Vec3::ZERO,
+        normal: Vec3::ZERO,
         overlap: 0.0,
         element: 0,
     };
@@ -159,7 +159,7 @@ impl<'a> IntoIterator for &'a ContactBuf {
 /// registered in every cell it overlaps; `start[k]..start[k + 1]` indexes `items` for cell `k`.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub(crate) struct BoxGrid {
-    origin: DVec3,
+    origin: Vec3,
     cell: f64,
     dims: [usize; 3],
     start: Vec<u32>,
@@ -173,11 +173,11 @@ const MAX_ENTRIES: f64 = (1u64 << 25) as f64;
 impl BoxGrid {
     /// A grid with cells of `cell_size` [m] (enlarged if the grid would get too big; the size
     /// of the whole set if not positive) over `boxes` (`[min, max]` [m]), numbered from 0.
-    pub(crate) fn new(boxes: &[[DVec3; 2]], cell_size: f64) -> BoxGrid {
-        let (lo, hi) = boxes.iter().fold((DVec3::MAX, DVec3::MIN), |(l, h), b| {
+    pub(crate) fn new(boxes: &[[Vec3; 2]], cell_size: f64) -> BoxGrid {
+        let (lo, hi) = boxes.iter().fold((Vec3::MAX, Vec3::MIN), |(l, h), b| {
             (l.min(b[0]), h.max(b[1]))
         });
-        let ext = (hi - lo).max(DVec3::ZERO);
+        let ext = (hi - lo).max(Vec3::ZERO);
         let mut cell = if cell_size > 0.0 && cell_size.is_finite() {
             cell_size
         } else {
@@ -237,7 +237,7 @@ impl BoxGrid {
 
     /// Calls `f` with every box registered in a cell that overlaps `[lo, hi]` [m] (a box
     /// spanning several such cells comes several times).
-    pub(crate) fn for_each_near(&self, lo: DVec3, hi: DVec3, mut f: impl FnMut(u32)) {
+    pub(crate) fn for_each_near(&self, lo: Vec3, hi: Vec3, mut f: impl FnMut(u32)) {
         let Some((a, b)) = self.range(lo, hi) else {
             return;
         };
@@ -254,7 +254,7 @@ impl BoxGrid {
     }
 
     /// Inclusive cell ranges covering `[lo, hi]`, or None if it misses the grid.
-    fn range(&self, lo: DVec3, hi: DVec3) -> Option<([usize; 3], [usize; 3])> {
+    fn range(&self, lo: Vec3, hi: Vec3) -> Option<([usize; 3], [usize; 3])> {
         let a = ((lo - self.origin) / self.cell).floor();
         let b = ((hi - self.origin) / self.cell).floor();
         let mut r = ([0; 3], [0; 3]);
@@ -271,7 +271,7 @@ impl BoxGrid {
     }
 
     /// Indices of the cells overlapping `[lo, hi]`.
-    fn cells(&self, lo: DVec3, hi: DVec3) -> impl Iterator<Item = usize> + '_ {
+    fn cells(&self, lo: Vec3, hi: Vec3) -> impl Iterator<Item = usize> + '_ {
         let [nx, ny, _] = self.dims;
         let (a, b) = self.range(lo, hi).unwrap_or(([1; 3], [0; 3])); // empty if missed
         (a[2]..=b[2]).flat_map(move |z| {
@@ -282,9 +282,9 @@ impl BoxGrid {
 
 /// Box-shaped triangulation helper shared by [`Cuboid`] and the plane clipping: the eight
 /// corners of the box `[min, max]`, corner `i` taking max on axis `k` when bit `k` of `i` is set.
-pub(crate) fn box_corners(min: DVec3, max: DVec3) -> [DVec3; 8] {
+pub(crate) fn box_corners(min: Vec3, max: Vec3) -> [Vec3; 8] {
     std::array::from_fn(|i| {
-        DVec3::new(
+        Vec3::new(
             if i & 1 != 0 { max.x } else { min.x },
             if i & 2 != 0 { max.y } else { min.y },
             if i & 4 != 0 { max.z } else { min.z },
@@ -295,7 +295,7 @@ pub(crate) fn box_corners(min: DVec3, max: DVec3) -> [DVec3; 8] {
 /// Helpers shared by the tests of several shapes.
 #[cfg(test)]
 pub(crate) mod test_util {
-    use glam::DVec3;
+    use crate::math::Vec3;
 
     /// xorshift64*, deterministic and dependency-free.
     pub struct Rng(pub u64);
@@ -310,15 +310,15 @@ pub(crate) mod test_util {
         }
 
         /// Uniform in the cube [-s/2, s/2)³.
-        pub fn vec(&mut self, s: f64) -> DVec3 {
-            DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * s
+        pub fn vec(&mut self, s: f64) -> Vec3 {
+            Vec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * s
         }
     }
 
     /// The unit square [0, 1]² at z = 0 as an n x n grid of cells, two triangles each, with
     /// alternating diagonals (so that vertices are shared by 3 to 8 triangles).
-    pub fn square_grid(n: usize) -> Vec<[DVec3; 3]> {
-        let p = |i: usize, j: usize| DVec3::new(i as f64 / n as f64, j as f64 / n as f64, 0.0);
+    pub fn square_grid(n: usize) -> Vec<[Vec3; 3]> {
+        let p = |i: usize, j: usize| Vec3::new(i as f64 / n as f64, j as f64 / n as f64, 0.0);
         let mut tris = Vec::new();
         for j in 0..n {
             for i in 0..n {
@@ -363,9 +363,9 @@ mod tests {
 
     #[test]
     fn box_corners_bits() {
-        let k = box_corners(DVec3::ZERO, DVec3::new(1.0, 2.0, 3.0));
-        assert_eq!(k[0], DVec3::ZERO);
-        assert_eq!(k[5], DVec3::new(1.0, 0.0, 3.0));
-        assert_eq!(k[7], DVec3::new(1.0, 2.0, 3.0));
+        let k = box_corners(Vec3::ZERO, Vec3::new(1.0, 2.0, 3.0));
+        assert_eq!(k[0], Vec3::ZERO);
+        assert_eq!(k[5], Vec3::new(1.0, 0.0, 3.0));
+        assert_eq!(k[7], Vec3::new(1.0, 2.0, 3.0));
     }
 }

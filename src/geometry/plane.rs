@@ -1,6 +1,6 @@
 //! Infinite plane wall, acting as a half-space.
 
-use glam::DVec3;
+use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 
 use super::{box_corners, SurfaceContact};
@@ -11,9 +11,9 @@ use super::{box_corners, SurfaceContact};
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Plane {
     /// Any point of the plane [m].
-    pub point: DVec3,
+    pub point: Vec3,
     /// Unit normal, pointing into the free side.
-    pub normal: DVec3,
+    pub normal: Vec3,
 }
 
 impl Plane {
@@ -21,7 +21,7 @@ impl Plane {
     ///
     /// # Panics
     /// If `normal` is zero or not finite.
-    pub fn new(point: DVec3, normal: DVec3) -> Plane {
+    pub fn new(point: Vec3, normal: Vec3) -> Plane {
         let normal = normal
             .try_normalize()
             .expect("plane normal must be finite and non-zero");
@@ -30,13 +30,13 @@ impl Plane {
 
     /// Signed distance [m] of `p` from the plane, positive on the free side.
     #[inline]
-    pub fn signed_distance(&self, p: DVec3) -> f64 {
+    pub fn signed_distance(&self, p: Vec3) -> f64 {
         (p - self.point).dot(self.normal)
     }
 
     /// The contact of a sphere (centre [m], radius [m]) with the half-space, if any.
     #[inline]
-    pub fn sphere_contact(&self, centre: DVec3, radius: f64) -> Option<SurfaceContact> {
+    pub fn sphere_contact(&self, centre: Vec3, radius: f64) -> Option<SurfaceContact> {
         let s = self.signed_distance(centre);
         let overlap = radius - s;
         (overlap > 0.0).then(|| SurfaceContact {
@@ -51,7 +51,7 @@ impl Plane {
     #[inline]
     pub fn sphere_contacts(
         &self,
-        centre: DVec3,
+        centre: Vec3,
         radius: f64,
         out: &mut impl Extend<SurfaceContact>,
     ) {
@@ -60,12 +60,12 @@ impl Plane {
 
     /// Triangulation [m] of the part of the plane inside the box `[bounds_min, bounds_max]`
     /// (empty if they do not meet), wound counter-clockwise around `normal`.
-    pub fn surface(&self, bounds_min: DVec3, bounds_max: DVec3) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    pub fn surface(&self, bounds_min: Vec3, bounds_max: Vec3) -> (Vec<Vec3>, Vec<[u32; 3]>) {
         let k = box_corners(bounds_min, bounds_max);
         let s = k.map(|p| self.signed_distance(p));
         let tol = 1e-12 * (bounds_max - bounds_min).length();
-        let mut pts: Vec<DVec3> = Vec::with_capacity(12);
-        let mut add = |p: DVec3| {
+        let mut pts: Vec<Vec3> = Vec::with_capacity(12);
+        let mut add = |p: Vec3| {
             if !pts.iter().any(|q| (*q - p).length() <= tol) {
                 pts.push(p);
             }
@@ -93,10 +93,10 @@ impl Plane {
             return (Vec::new(), Vec::new());
         }
         // Order the (convex) polygon by angle around its centroid, then fan it.
-        let centroid = pts.iter().sum::<DVec3>() / pts.len() as f64;
+        let centroid = pts.iter().sum::<Vec3>() / pts.len() as f64;
         let u = self.normal.any_orthonormal_vector();
         let v = self.normal.cross(u);
-        let angle = |p: &DVec3| (*p - centroid).dot(v).atan2((*p - centroid).dot(u));
+        let angle = |p: &Vec3| (*p - centroid).dot(v).atan2((*p - centroid).dot(u));
         pts.sort_by(|a, b| angle(a).total_cmp(&angle(b)));
         let tris = (1..pts.len() as u32 - 1).map(|i| [0, i, i + 1]).collect();
         (pts, tris)
@@ -115,15 +115,15 @@ pub(crate) fn assert_like_plane(mesh: &super::TriMesh, n: usize) {
     let steps = 1000;
     for k in 0..=steps {
         let t = k as f64 / steps as f64;
-        centres.push(DVec3::new(t, 0.5, 0.07)); // across edges
-        centres.push(DVec3::new(t, t, 0.07)); // along the diagonal, through vertices
-        centres.push(DVec3::new(1.0 - t, t, 0.03)); // the other diagonal
-        centres.push(DVec3::new(h, t, 0.05)); // along a grid line
-        centres.push(DVec3::new(0.5, 0.5, 0.999 * r * (1.0 - t) + 1e-9)); // bouncing on a vertex
+        centres.push(Vec3::new(t, 0.5, 0.07)); // across edges
+        centres.push(Vec3::new(t, t, 0.07)); // along the diagonal, through vertices
+        centres.push(Vec3::new(1.0 - t, t, 0.03)); // the other diagonal
+        centres.push(Vec3::new(h, t, 0.05)); // along a grid line
+        centres.push(Vec3::new(0.5, 0.5, 0.999 * r * (1.0 - t) + 1e-9)); // bouncing on a vertex
     }
     let mut rng = Rng(12345);
     for _ in 0..3000 {
-        let mut q = DVec3::new(rng.next(), rng.next(), r * (1e-6 + rng.next()) * 0.999);
+        let mut q = Vec3::new(rng.next(), rng.next(), r * (1e-6 + rng.next()) * 0.999);
         match (rng.next() * 4.0) as u32 {
             0 => q.x = (q.x * n as f64).round() * h,
             1 => (q.x, q.y) = ((q.x * n as f64).round() * h, (q.y * n as f64).round() * h),
@@ -138,15 +138,20 @@ pub(crate) fn assert_like_plane(mesh: &super::TriMesh, n: usize) {
                 0.0, 1e-15, 1e-13, 1e-11, 1e-10, 3e-10, 1e-9, 3e-9, 1e-8, 1e-6, 1e-4,
             ] {
                 let a = std::f64::consts::TAU * rng.next();
-                let p = DVec3::new(i as f64 * h + e * a.cos(), j as f64 * h + e * a.sin(), 0.0);
-                centres.push(p.clamp(DVec3::ZERO, DVec3::ONE) + DVec3::new(0.0, 0.0, 0.05));
+                let p = Vec3::new(i as f64 * h + e * a.cos(), j as f64 * h + e * a.sin(), 0.0);
+                centres.push(p.clamp(Vec3::ZERO, Vec3::ONE) + Vec3::new(0.0, 0.0, 0.05));
             }
         }
     }
-    let rot = glam::DMat3::from_quat(glam::DQuat::from_euler(glam::EulerRot::ZXY, 0.4, 1.3, -0.7));
-    let off = DVec3::new(0.3, -1.7, 2.2);
-    for (m, o) in [(glam::DMat3::IDENTITY, DVec3::ZERO), (rot, off)] {
-        let plane = Plane::new(o, m * DVec3::Z);
+    let rot = crate::math::Mat3::from_quat(crate::math::Quat::from_euler(
+        glam::EulerRot::ZXY,
+        0.4,
+        1.3,
+        -0.7,
+    ));
+    let off = Vec3::new(0.3, -1.7, 2.2);
+    for (m, o) in [(crate::math::Mat3::IDENTITY, Vec3::ZERO), (rot, off)] {
+        let plane = Plane::new(o, m * Vec3::Z);
         let mesh_a = mesh.transformed(1.0, m, o);
         let mut mesh_b = mesh_a.clone();
         mesh_b.build_bins(0.13);
@@ -184,23 +189,23 @@ mod tests {
 
     #[test]
     fn half_space_contact() {
-        let p = Plane::new(DVec3::new(0.0, 0.0, 1.0), DVec3::new(0.0, 0.0, 2.0));
-        let c = p.sphere_contact(DVec3::new(3.0, 4.0, 1.25), 0.5).unwrap();
-        assert_eq!(c.point, DVec3::new(3.0, 4.0, 1.0));
-        assert_eq!(c.normal, -DVec3::Z);
+        let p = Plane::new(Vec3::new(0.0, 0.0, 1.0), Vec3::new(0.0, 0.0, 2.0));
+        let c = p.sphere_contact(Vec3::new(3.0, 4.0, 1.25), 0.5).unwrap();
+        assert_eq!(c.point, Vec3::new(3.0, 4.0, 1.0));
+        assert_eq!(c.normal, -Vec3::Z);
         assert!((c.overlap - 0.25).abs() < 1e-15);
-        assert!(p.sphere_contact(DVec3::new(0.0, 0.0, 1.5), 0.5).is_none());
+        assert!(p.sphere_contact(Vec3::new(0.0, 0.0, 1.5), 0.5).is_none());
         // Centre behind the plane: still pushed back, overlap > radius.
-        let c = p.sphere_contact(DVec3::new(0.0, 0.0, 0.5), 0.5).unwrap();
+        let c = p.sphere_contact(Vec3::new(0.0, 0.0, 0.5), 0.5).unwrap();
         assert!((c.overlap - 1.0).abs() < 1e-15);
-        assert_eq!(c.normal, -DVec3::Z);
-        assert_eq!(c.point, DVec3::new(0.0, 0.0, 1.0));
+        assert_eq!(c.normal, -Vec3::Z);
+        assert_eq!(c.point, Vec3::new(0.0, 0.0, 1.0));
         let mut v = Vec::new();
-        p.sphere_contacts(DVec3::new(0.0, 0.0, 1.1), 0.5, &mut v);
+        p.sphere_contacts(Vec3::new(0.0, 0.0, 1.1), 0.5, &mut v);
         assert_eq!(v.len(), 1);
     }
 
-    fn area(pts: &[DVec3], tris: &[[u32; 3]], n: DVec3) -> f64 {
+    fn area(pts: &[Vec3], tris: &[[u32; 3]], n: Vec3) -> f64 {
         let mut a = 0.0;
         for t in tris {
             let [p, q, r] = t.map(|i| pts[i as usize]);
@@ -213,26 +218,26 @@ mod tests {
 
     #[test]
     fn clipped_surface() {
-        let (lo, hi) = (DVec3::ZERO, DVec3::new(2.0, 3.0, 4.0));
+        let (lo, hi) = (Vec3::ZERO, Vec3::new(2.0, 3.0, 4.0));
         // Axis-aligned plane through the middle: a 2 x 3 rectangle.
-        let p = Plane::new(DVec3::new(0.0, 0.0, 1.0), DVec3::Z);
+        let p = Plane::new(Vec3::new(0.0, 0.0, 1.0), Vec3::Z);
         let (pts, tris) = p.surface(lo, hi);
         assert_eq!(pts.len(), 4);
         assert!((area(&pts, &tris, p.normal) - 6.0).abs() < 1e-12);
         // On a box face (corners exactly on the plane): still one rectangle, no duplicates.
-        let p = Plane::new(DVec3::ZERO, -DVec3::Z);
+        let p = Plane::new(Vec3::ZERO, -Vec3::Z);
         let (pts, tris) = p.surface(lo, hi);
         assert_eq!(pts.len(), 4);
         assert!((area(&pts, &tris, p.normal) - 6.0).abs() < 1e-12);
         // Oblique cut of a unit cube through its centre, normal (1,1,1): a regular hexagon.
-        let p = Plane::new(DVec3::splat(0.5), DVec3::ONE);
-        let (pts, tris) = p.surface(DVec3::ZERO, DVec3::ONE);
+        let p = Plane::new(Vec3::splat(0.5), Vec3::ONE);
+        let (pts, tris) = p.surface(Vec3::ZERO, Vec3::ONE);
         assert_eq!(pts.len(), 6);
         let side = 0.5f64.sqrt();
         let hex = 1.5 * 3f64.sqrt() * side * side;
         assert!((area(&pts, &tris, p.normal) - hex).abs() < 1e-12);
         // Outside the box: nothing.
-        let p = Plane::new(DVec3::new(0.0, 0.0, 9.0), DVec3::Z);
+        let p = Plane::new(Vec3::new(0.0, 0.0, 9.0), Vec3::Z);
         assert!(p.surface(lo, hi).0.is_empty());
     }
 
@@ -250,15 +255,15 @@ mod tests {
     fn irregular_flat_mesh_acts_as_plane() {
         // Interior vertices moved in the plane (deterministically): irregular triangles.
         let n = 6;
-        let jitter = |p: DVec3| {
+        let jitter = |p: Vec3| {
             if p.x <= 0.0 || p.x >= 1.0 || p.y <= 0.0 || p.y >= 1.0 {
                 return p;
             }
             let (i, j) = ((p.x * n as f64).round(), (p.y * n as f64).round());
             p + 0.2 / n as f64
-                * DVec3::new((7.0 * i + 3.0 * j).sin(), (5.0 * i - 11.0 * j).cos(), 0.0)
+                * Vec3::new((7.0 * i + 3.0 * j).sin(), (5.0 * i - 11.0 * j).cos(), 0.0)
         };
-        let soup: Vec<[DVec3; 3]> = square_grid(n).iter().map(|t| t.map(jitter)).collect();
+        let soup: Vec<[Vec3; 3]> = square_grid(n).iter().map(|t| t.map(jitter)).collect();
         assert_like_plane(&TriMesh::from_triangle_soup(&soup).unwrap(), n);
         // Unmerged vertices (no shared indices at all) behave the same.
         let tris = (0..soup.len() as u32)

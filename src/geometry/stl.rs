@@ -3,7 +3,7 @@
 use std::io::{self, Write};
 use std::path::Path;
 
-use glam::DVec3;
+use crate::math::Vec3;
 
 use super::mesh::{MeshError, TriMesh};
 
@@ -64,7 +64,7 @@ pub enum StlError {
 /// announces (some binary files start with "solid", like ASCII ones); otherwise a file starting
 /// with "solid" is ASCII unless it holds NUL bytes. Facet normals are ignored (the corner order
 /// defines the orientation).
-pub fn parse_stl(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
+pub fn parse_stl(bytes: &[u8], file: &str) -> Result<Vec<[Vec3; 3]>, StlError> {
     let exact_binary = binary_size(bytes) == Some(bytes.len() as u64);
     let text_start = bytes
         .iter()
@@ -87,7 +87,7 @@ fn binary_size(bytes: &[u8]) -> Option<u64> {
     Some(84 + 50 * u64::from(n))
 }
 
-fn parse_binary(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
+fn parse_binary(bytes: &[u8], file: &str) -> Result<Vec<[Vec3; 3]>, StlError> {
     let Some(size) = binary_size(bytes) else {
         let reason = if bytes.is_empty() {
             "empty file".into()
@@ -122,8 +122,8 @@ fn parse_binary(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
     let mut tris = Vec::with_capacity(n);
     for (triangle, rec) in bytes[84..size as usize].chunks_exact(50).enumerate() {
         // Skip the 12-byte normal; the 2-byte attribute count at the end is unused.
-        let t: [DVec3; 3] = std::array::from_fn(|v| {
-            DVec3::new(f(rec, 3 + 3 * v), f(rec, 4 + 3 * v), f(rec, 5 + 3 * v))
+        let t: [Vec3; 3] = std::array::from_fn(|v| {
+            Vec3::new(f(rec, 3 + 3 * v), f(rec, 4 + 3 * v), f(rec, 5 + 3 * v))
         });
         if let Some(v) = t.iter().position(|p| !p.is_finite()) {
             let reason = format!("vertex {} has a non-finite coordinate {}", v + 1, t[v]);
@@ -148,7 +148,7 @@ enum State {
     EndFacet,
 }
 
-fn parse_ascii(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
+fn parse_ascii(bytes: &[u8], file: &str) -> Result<Vec<[Vec3; 3]>, StlError> {
     let text = String::from_utf8_lossy(bytes);
     let err = |line, reason| StlError::Ascii {
         file: file.into(),
@@ -156,7 +156,7 @@ fn parse_ascii(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
         reason,
     };
     let (mut state, mut corners, mut tris, mut last) =
-        (State::Outside, [DVec3::ZERO; 3], Vec::new(), 0);
+        (State::Outside, [Vec3::ZERO; 3], Vec::new(), 0);
     for (i, line) in text.lines().enumerate() {
         if !line.trim().is_empty() {
             last = i + 1;
@@ -182,8 +182,8 @@ fn parse_ascii(bytes: &[u8], file: &str) -> Result<Vec<[DVec3; 3]>, StlError> {
 fn step(
     state: State,
     line: &str,
-    corners: &mut [DVec3; 3],
-    tris: &mut Vec<[DVec3; 3]>,
+    corners: &mut [Vec3; 3],
+    tris: &mut Vec<[Vec3; 3]>,
 ) -> Result<State, String> {
     let mut tok = line.split_whitespace();
     let word = tok.next().unwrap_or_default().to_ascii_lowercase();
@@ -235,7 +235,7 @@ fn expected(s: State) -> String {
 
 /// Writes triangles (corners [m]) as ASCII STL named `name`; numbers are written so that they
 /// read back exactly.
-pub fn write_stl_ascii(w: &mut impl Write, name: &str, triangles: &[[DVec3; 3]]) -> io::Result<()> {
+pub fn write_stl_ascii(w: &mut impl Write, name: &str, triangles: &[[Vec3; 3]]) -> io::Result<()> {
     writeln!(w, "solid {name}")?;
     for [a, b, c] in triangles {
         let n = (*b - *a).cross(*c - *a).normalize_or_zero();
@@ -254,7 +254,7 @@ pub fn write_stl_ascii(w: &mut impl Write, name: &str, triangles: &[[DVec3; 3]])
 
 /// Writes triangles (corners [m]) as binary STL (single precision), with a header that does
 /// not start with "solid".
-pub fn write_stl_binary(w: &mut impl Write, triangles: &[[DVec3; 3]]) -> io::Result<()> {
+pub fn write_stl_binary(w: &mut impl Write, triangles: &[[Vec3; 3]]) -> io::Result<()> {
     let mut header = [b' '; 80];
     header[..23].copy_from_slice(b"binary STL from riprap.");
     w.write_all(&header)?;
@@ -299,7 +299,7 @@ impl TriMesh {
     }
 
     /// The corners [m] of every triangle, in order (e.g. for [`write_stl_ascii`]).
-    pub fn triangle_soup(&self) -> Vec<[DVec3; 3]> {
+    pub fn triangle_soup(&self) -> Vec<[Vec3; 3]> {
         (0..self.triangles().len())
             .map(|i| self.corners(i))
             .collect()
@@ -321,19 +321,19 @@ mod tests {
         mesh.unwrap()
     }
 
-    fn ascii(tris: &[[DVec3; 3]]) -> Vec<u8> {
+    fn ascii(tris: &[[Vec3; 3]]) -> Vec<u8> {
         let mut b = Vec::new();
         write_stl_ascii(&mut b, "test", tris).unwrap();
         b
     }
 
-    fn binary(tris: &[[DVec3; 3]]) -> Vec<u8> {
+    fn binary(tris: &[[Vec3; 3]]) -> Vec<u8> {
         let mut b = Vec::new();
         write_stl_binary(&mut b, tris).unwrap();
         b
     }
 
-    fn random_soup(n: usize) -> Vec<[DVec3; 3]> {
+    fn random_soup(n: usize) -> Vec<[Vec3; 3]> {
         let mut rng = Rng(99);
         (0..n)
             .map(|_| [rng.vec(3.0), rng.vec(3.0), rng.vec(3.0)])
@@ -356,7 +356,7 @@ mod tests {
     #[test]
     fn binary_round_trip_in_single_precision() {
         let soup = random_soup(20);
-        let single: Vec<[DVec3; 3]> = soup
+        let single: Vec<[Vec3; 3]> = soup
             .iter()
             .map(|t| t.map(|p| p.as_vec3().as_dvec3()))
             .collect();

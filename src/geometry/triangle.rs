@@ -1,7 +1,7 @@
 //! Closest point of a triangle to a point (Ericson, *Real-Time Collision Detection*, 5.1.5),
 //! and the contacts of a sphere with a set of triangles forming one surface.
 
-use glam::DVec3;
+use crate::math::Vec3;
 
 use super::SurfaceContact;
 
@@ -30,7 +30,7 @@ const DEGENERATE_SIN2: f64 = 1e-18;
 /// along the unit normal, so slivers give accurate points. Degenerate triangles (collinear or
 /// coincident corners) have no face: the answer is then the closest of the three edges, and
 /// never [`Feature::Face`].
-pub fn closest_point_on_triangle(p: DVec3, a: DVec3, b: DVec3, c: DVec3) -> (DVec3, Feature) {
+pub fn closest_point_on_triangle(p: Vec3, a: Vec3, b: Vec3, c: Vec3) -> (Vec3, Feature) {
     let ab = b - a;
     let ac = c - a;
     let n = ab.cross(ac);
@@ -81,7 +81,7 @@ pub fn closest_point_on_triangle(p: DVec3, a: DVec3, b: DVec3, c: DVec3) -> (DVe
 
 /// Closest point of the segment `[a, b]` to `p` (the parameter clamped to the segment).
 #[inline]
-fn on_segment(p: DVec3, a: DVec3, b: DVec3) -> DVec3 {
+fn on_segment(p: Vec3, a: Vec3, b: Vec3) -> Vec3 {
     let ab = b - a;
     let l2 = ab.length_squared();
     if l2 > 0.0 {
@@ -92,7 +92,7 @@ fn on_segment(p: DVec3, a: DVec3, b: DVec3) -> DVec3 {
 }
 
 /// Closest point of the three edges of a (degenerate) triangle.
-fn closest_on_edges(p: DVec3, v: [DVec3; 3]) -> (DVec3, Feature) {
+fn closest_on_edges(p: Vec3, v: [Vec3; 3]) -> (Vec3, Feature) {
     let mut best = (v[0], Feature::Vertex(0));
     let mut best_d2 = f64::INFINITY;
     for i in 0..3u8 {
@@ -122,27 +122,27 @@ const HIT_CAP: usize = 16;
 struct Hit {
     tri: u32,
     face: bool,
-    point: DVec3,
-    normal: DVec3,
+    point: Vec3,
+    normal: Vec3,
     overlap: f64,
 }
 
 /// `(e_i × (p - v_i))·n` for the three edges `e_i = v_{i+1} - v_i`: |e_i| times the signed
 /// distance of `p` from the edge line, positive on the inner side; None if `n` is zero.
 #[inline]
-fn edge_functions(p: DVec3, [a, b, c]: [DVec3; 3], n: DVec3) -> Option<[f64; 3]> {
-    (n != DVec3::ZERO).then(|| [(a, b), (b, c), (c, a)].map(|(v, w)| (w - v).cross(p - v).dot(n)))
+fn edge_functions(p: Vec3, [a, b, c]: [Vec3; 3], n: Vec3) -> Option<[f64; 3]> {
+    (n != Vec3::ZERO).then(|| [(a, b), (b, c), (c, a)].map(|(v, w)| (w - v).cross(p - v).dot(n)))
 }
 
 /// The answer of triangle `id` (corners [m], unit normal along (b-a)×(c-a) or zero) to a
 /// sphere, if it touches.
-fn hit(id: u32, (t, n): ([DVec3; 3], DVec3), centre: DVec3, radius: f64, tol: f64) -> Option<Hit> {
+fn hit(id: u32, (t, n): ([Vec3; 3], Vec3), centre: Vec3, radius: f64, tol: f64) -> Option<Hit> {
     let [a, b, c] = t;
     let s = (centre - a).dot(n);
     // Cheap rejections: too far from the plane (never for degenerate triangles: n = 0) or
     // from the bounding box.
     let gap = (a.min(b).min(c) - centre).max(centre - a.max(b).max(c));
-    if s.abs() >= radius || gap.max(DVec3::ZERO).length_squared() >= radius * radius {
+    if s.abs() >= radius || gap.max(Vec3::ZERO).length_squared() >= radius * radius {
         return None;
     }
     let side = if s >= 0.0 { -n } else { n };
@@ -153,7 +153,7 @@ fn hit(id: u32, (t, n): ([DVec3; 3], DVec3), centre: DVec3, radius: f64, tol: f6
     };
     // An edge or vertex straight below the centre (within rounding) counts as the face, so
     // that the normal comes from the plane, not from a tiny, noisy offset.
-    let above = n != DVec3::ZERO && (centre - s * n - p).length() <= tol;
+    let above = n != Vec3::ZERO && (centre - s * n - p).length() <= tol;
     let (point, normal, dist, face) = if feature == Feature::Face || above {
         // From the plane equation, as for a plane wall: coplanar triangles agree exactly.
         (centre - s * n, side, s.abs(), true)
@@ -167,7 +167,7 @@ fn hit(id: u32, (t, n): ([DVec3; 3], DVec3), centre: DVec3, radius: f64, tol: f6
         (p, normal, dist, false)
     };
     let overlap = radius - dist;
-    (overlap > 0.0 && normal != DVec3::ZERO).then_some(Hit {
+    (overlap > 0.0 && normal != Vec3::ZERO).then_some(Hit {
         tri: id,
         face,
         point,
@@ -192,10 +192,10 @@ fn hit(id: u32, (t, n): ([DVec3; 3], DVec3), centre: DVec3, radius: f64, tol: f6
 /// geometrically, so unmerged vertices and T-junctions behave too. Every triangle containing a
 /// contact point must be in `ids`, as it is when `ids` holds all within `radius`.
 pub fn sphere_triangle_contacts(
-    centre: DVec3,
+    centre: Vec3,
     radius: f64,
     ids: &[u32],
-    triangle: impl Fn(u32) -> ([DVec3; 3], DVec3),
+    triangle: impl Fn(u32) -> ([Vec3; 3], Vec3),
     out: &mut impl Extend<SurfaceContact>,
 ) {
     let tol = 1e-9 * radius + 1e-14 * centre.abs().max_element();
@@ -219,12 +219,12 @@ pub fn sphere_triangle_contacts(
 fn resolve(
     n: usize,
     get: impl Fn(usize) -> Option<Hit>,
-    triangle: &impl Fn(u32) -> ([DVec3; 3], DVec3),
+    triangle: &impl Fn(u32) -> ([Vec3; 3], Vec3),
     tol: f64,
     out: &mut impl Extend<SurfaceContact>,
 ) {
-    let same = |p: DVec3, q: DVec3| (p - q).length() <= tol;
-    let on_triangle = |p: DVec3, id: u32| {
+    let same = |p: Vec3, q: Vec3| (p - q).length() <= tol;
+    let on_triangle = |p: Vec3, id: u32| {
         let (t @ [a, b, c], n) = triangle(id);
         if (a.min(b).min(c) - p).max(p - a.max(b).max(c)).max_element() > tol {
             return false;
@@ -281,7 +281,7 @@ mod tests {
     use crate::geometry::TriMesh;
 
     /// Minimum distance over a dense barycentric grid of the triangle, and the grid spacing.
-    fn brute(p: DVec3, a: DVec3, b: DVec3, c: DVec3, n: usize) -> (f64, f64) {
+    fn brute(p: Vec3, a: Vec3, b: Vec3, c: Vec3, n: usize) -> (f64, f64) {
         let mut best = f64::INFINITY;
         for i in 0..=n {
             for j in 0..=n - i {
@@ -336,7 +336,7 @@ mod tests {
 
     #[test]
     fn regions_of_unit_triangle() {
-        let (a, b, c) = (DVec3::ZERO, DVec3::X, DVec3::Y);
+        let (a, b, c) = (Vec3::ZERO, Vec3::X, Vec3::Y);
         let cases = [
             ([0.2, 0.2, 1.0], [0.2, 0.2, 0.0], Feature::Face),
             ([-1.0, -1.0, 0.5], [0.0; 3], Feature::Vertex(0)),
@@ -347,7 +347,7 @@ mod tests {
             ([-1.0, 0.25, 0.0], [0.0, 0.25, 0.0], Feature::Edge(2)),
         ];
         for (p, q, f) in cases {
-            let (p, q) = (DVec3::from_array(p), DVec3::from_array(q));
+            let (p, q) = (Vec3::from_array(p), Vec3::from_array(q));
             let (q2, f2) = closest_point_on_triangle(p, a, b, c);
             assert!((q2 - q).length() < 1e-15, "{p}: {q2} != {q}");
             assert_eq!(f2, f, "{p}");
@@ -356,23 +356,23 @@ mod tests {
 
     #[test]
     fn degenerate_triangles() {
-        let p = DVec3::new(0.5, 1.0, 0.0);
+        let p = Vec3::new(0.5, 1.0, 0.0);
         // Collinear corners: the closest point of the segment, never a face.
-        let (q, f) = closest_point_on_triangle(p, DVec3::ZERO, DVec3::X, 2.0 * DVec3::X);
-        assert_eq!(q, DVec3::new(0.5, 0.0, 0.0));
+        let (q, f) = closest_point_on_triangle(p, Vec3::ZERO, Vec3::X, 2.0 * Vec3::X);
+        assert_eq!(q, Vec3::new(0.5, 0.0, 0.0));
         assert_eq!(f, Feature::Edge(0));
         // All corners equal: that point, as a vertex.
-        let (q, f) = closest_point_on_triangle(p, DVec3::X, DVec3::X, DVec3::X);
-        assert_eq!(q, DVec3::X);
+        let (q, f) = closest_point_on_triangle(p, Vec3::X, Vec3::X, Vec3::X);
+        assert_eq!(q, Vec3::X);
         assert!(matches!(f, Feature::Vertex(_)));
         // Two corners equal.
-        let (q, f) = closest_point_on_triangle(p, DVec3::ZERO, DVec3::ZERO, DVec3::X);
-        assert_eq!(q, DVec3::new(0.5, 0.0, 0.0));
+        let (q, f) = closest_point_on_triangle(p, Vec3::ZERO, Vec3::ZERO, Vec3::X);
+        assert_eq!(q, Vec3::new(0.5, 0.0, 0.0));
         assert!(matches!(f, Feature::Edge(_)));
         assert!(q.is_finite());
     }
 
-    fn all(mesh: &TriMesh, c: DVec3, r: f64) -> Vec<SurfaceContact> {
+    fn all(mesh: &TriMesh, c: Vec3, r: f64) -> Vec<SurfaceContact> {
         let cand: Vec<u32> = (0..mesh.triangles().len() as u32).collect();
         let mut v = Vec::new();
         mesh.sphere_contacts(c, r, &cand, &mut v);
@@ -382,16 +382,16 @@ mod tests {
     #[test]
     fn convex_ridge_gives_one_contact() {
         // Roof along y with the ridge at x = 0, z = 1 and 45° slopes; rolling over it.
-        let (l0, l1) = (DVec3::new(-1.0, 0.0, 0.0), DVec3::new(-1.0, 2.0, 0.0));
-        let (t0, t1) = (DVec3::new(0.0, 0.0, 1.0), DVec3::new(0.0, 2.0, 1.0));
-        let (r0, r1) = (DVec3::new(1.0, 0.0, 0.0), DVec3::new(1.0, 2.0, 0.0));
+        let (l0, l1) = (Vec3::new(-1.0, 0.0, 0.0), Vec3::new(-1.0, 2.0, 0.0));
+        let (t0, t1) = (Vec3::new(0.0, 0.0, 1.0), Vec3::new(0.0, 2.0, 1.0));
+        let (r0, r1) = (Vec3::new(1.0, 0.0, 0.0), Vec3::new(1.0, 2.0, 0.0));
         let mesh =
             TriMesh::from_triangle_soup(&[[l0, t0, t1], [l0, t1, l1], [t0, r0, r1], [t0, r1, t1]])
                 .unwrap();
         let (r, d) = (0.3, 0.2);
         for k in -160..=160 {
             let th = (k as f64 * 0.5).to_radians();
-            let c = t0 + DVec3::new(0.0, 1.0, 0.0) + d * DVec3::new(th.sin(), 0.0, th.cos());
+            let c = t0 + Vec3::new(0.0, 1.0, 0.0) + d * Vec3::new(th.sin(), 0.0, th.cos());
             let v = all(&mesh, c, r);
             assert_eq!(v.len(), 1, "angle {}: {v:?}", k as f64 * 0.5);
             let off = th.abs() - std::f64::consts::FRAC_PI_4;
@@ -406,21 +406,21 @@ mod tests {
 
     #[test]
     fn concave_crease_gives_two_contacts() {
-        let (a0, a1) = (DVec3::new(-1.0, 0.0, 1.0), DVec3::new(-1.0, 2.0, 1.0));
-        let (m0, m1) = (DVec3::new(0.0, 0.0, 0.0), DVec3::new(0.0, 2.0, 0.0));
-        let (b0, b1) = (DVec3::new(1.0, 0.0, 1.0), DVec3::new(1.0, 2.0, 1.0));
+        let (a0, a1) = (Vec3::new(-1.0, 0.0, 1.0), Vec3::new(-1.0, 2.0, 1.0));
+        let (m0, m1) = (Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 2.0, 0.0));
+        let (b0, b1) = (Vec3::new(1.0, 0.0, 1.0), Vec3::new(1.0, 2.0, 1.0));
         let mesh =
             TriMesh::from_triangle_soup(&[[a0, m0, m1], [a0, m1, a1], [m0, b0, b1], [m0, b1, m1]])
                 .unwrap();
-        let v = all(&mesh, DVec3::new(0.0, 1.0, 0.3), 0.3);
+        let v = all(&mesh, Vec3::new(0.0, 1.0, 0.3), 0.3);
         assert_eq!(v.len(), 2, "{v:?}");
         let d = 0.3 / 2f64.sqrt();
         for c in &v {
             assert!((c.overlap - (0.3 - d)).abs() < 1e-12);
         }
         let s = 0.5f64.sqrt();
-        assert!((v[0].normal - DVec3::new(-s, 0.0, -s)).length() < 1e-12);
-        assert!((v[1].normal - DVec3::new(s, 0.0, -s)).length() < 1e-12);
+        assert!((v[0].normal - Vec3::new(-s, 0.0, -s)).length() < 1e-12);
+        assert!((v[1].normal - Vec3::new(s, 0.0, -s)).length() < 1e-12);
         assert!(v[0].element < v[1].element);
     }
 
@@ -428,10 +428,10 @@ mod tests {
     fn fan(n: usize, tip: f64) -> TriMesh {
         let p = |i: usize| {
             let a = std::f64::consts::TAU * i as f64 / n as f64;
-            DVec3::new(a.cos(), a.sin(), 0.0)
+            Vec3::new(a.cos(), a.sin(), 0.0)
         };
         let soup: Vec<_> = (0..n)
-            .map(|i| [DVec3::new(0.0, 0.0, tip), p(i), p(i + 1)])
+            .map(|i| [Vec3::new(0.0, 0.0, tip), p(i), p(i + 1)])
             .collect();
         TriMesh::from_triangle_soup(&soup).unwrap()
     }
@@ -440,18 +440,17 @@ mod tests {
     fn shared_vertex_of_many_triangles() {
         // 12 hits fit the stack buffer, 40 take the recomputing path: same answer.
         for n in [12, 40] {
-            for c in [DVec3::new(0.0, 0.0, 0.05), DVec3::new(0.03, 0.01, 0.05)] {
+            for c in [Vec3::new(0.0, 0.0, 0.05), Vec3::new(0.03, 0.01, 0.05)] {
                 let v = all(&fan(n, 0.0), c, 0.1);
                 assert_eq!(v.len(), 1, "{n} triangles: {v:?}");
                 assert!(
-                    (v[0].overlap - 0.05).abs() < 1e-12
-                        && (v[0].normal + DVec3::Z).length() < 1e-12
+                    (v[0].overlap - 0.05).abs() < 1e-12 && (v[0].normal + Vec3::Z).length() < 1e-12
                 );
             }
             // Convex cone tip: one vertex contact.
-            let v = all(&fan(n, 0.5), DVec3::new(0.0, 0.0, 0.55), 0.1);
+            let v = all(&fan(n, 0.5), Vec3::new(0.0, 0.0, 0.55), 0.1);
             assert_eq!(v.len(), 1, "{n}-cone: {v:?}");
-            assert_eq!(v[0].point, DVec3::new(0.0, 0.0, 0.5));
+            assert_eq!(v[0].point, Vec3::new(0.0, 0.0, 0.5));
             assert_eq!(v[0].element, 0);
         }
     }

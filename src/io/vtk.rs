@@ -10,7 +10,7 @@
 mod appended;
 
 use super::{invalid_input, write_replacing, xml_escape};
-use glam::DVec3;
+use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -68,7 +68,7 @@ pub enum Values<'a> {
     /// One f64 per item (written as Float64, one component).
     Scalars(&'a [f64]),
     /// One 3-vector per item (Float64, three components), e.g. velocity \[m/s\].
-    Vectors(&'a [DVec3]),
+    Vectors(&'a [Vec3]),
     /// One integer per item (Int64), e.g. particle ids or material indices.
     Ints(&'a [i64]),
 }
@@ -109,7 +109,7 @@ impl<'a> Array<'a> {
     }
 
     /// A 3-vector array (Float64, three components).
-    pub fn vectors(name: &'a str, values: &'a [DVec3]) -> Self {
+    pub fn vectors(name: &'a str, values: &'a [Vec3]) -> Self {
         Array {
             name,
             values: Values::Vectors(values),
@@ -137,7 +137,7 @@ const VTK_VERTEX: u8 = 1;
 /// `positions.len()`. An empty `positions` gives a valid file with no points.
 pub fn write_points(
     path: &Path,
-    positions: &[DVec3],
+    positions: &[Vec3],
     point_data: &[Array],
     format: Format,
 ) -> std::io::Result<()> {
@@ -168,7 +168,7 @@ pub fn write_points(
 /// does not exist; ParaView would crash or draw garbage on such a file.
 pub fn write_surface(
     path: &Path,
-    vertices: &[DVec3],
+    vertices: &[Vec3],
     triangles: &[[u32; 3]],
     cell_data: &[Array],
     format: Format,
@@ -211,8 +211,8 @@ pub fn write_surface(
 pub fn write_image(
     path: &Path,
     n: [usize; 3],
-    origin: DVec3,
-    spacing: DVec3,
+    origin: Vec3,
+    spacing: Vec3,
     cell_data: &[Array],
     format: Format,
 ) -> std::io::Result<()> {
@@ -356,7 +356,7 @@ impl VtkFile {
     /// Writes the `<Points>` section, always in Float64: positions keep every
     /// digit (a 1e-7 relative error is 10 µm at 100 m, the size of contact
     /// overlaps), and they are a small part of a file.
-    fn points(&mut self, positions: &[DVec3]) {
+    fn points(&mut self, positions: &[Vec3]) {
         self.xml.push_str("      <Points>\n");
         self.array_float(Some("Points"), 3, Precision::Float64, flatten(positions));
         self.xml.push_str("      </Points>\n");
@@ -377,7 +377,7 @@ impl VtkFile {
     }
 }
 
-fn flatten(v: &[DVec3]) -> impl Iterator<Item = f64> + '_ {
+fn flatten(v: &[Vec3]) -> impl Iterator<Item = f64> + '_ {
     v.iter().flat_map(|p| p.to_array())
 }
 
@@ -465,7 +465,7 @@ mod tests {
         assert_eq!(stack, ["VTKFile"], "in {header}");
     }
 
-    fn flat(v: &[DVec3]) -> Vec<f64> {
+    fn flat(v: &[Vec3]) -> Vec<f64> {
         flatten(v).collect()
     }
 
@@ -473,10 +473,10 @@ mod tests {
     fn points_round_trip() {
         let dir = test_dir("vtk_points");
         let pos = [
-            DVec3::new(0.1, -2.0, 3.5e-7),
-            DVec3::new(1.0 / 3.0, 5.0, -0.0),
+            Vec3::new(0.1, -2.0, 3.5e-7),
+            Vec3::new(1.0 / 3.0, 5.0, -0.0),
         ];
-        let vel = [DVec3::X, DVec3::new(-1.0, 2.0, f64::MAX)];
+        let vel = [Vec3::X, Vec3::new(-1.0, 2.0, f64::MAX)];
         let arrays = [
             Array::scalars("radius", &[0.01, 0.0125]),
             Array::vectors("velocity <m/s>", &vel),
@@ -514,12 +514,12 @@ mod tests {
         const F: Format = Format::EXACT;
         let dir = test_dir("vtk_bad");
         let one = [Array::scalars("radius", &[1.0])];
-        let err = write_points(&dir.join("p.vtu"), &[DVec3::ZERO; 2], &one, F).unwrap_err();
+        let err = write_points(&dir.join("p.vtu"), &[Vec3::ZERO; 2], &one, F).unwrap_err();
         assert_eq!(err.kind(), InvalidInput);
         assert!(err.to_string().contains("radius"), "{err}");
-        let bad_tri = write_surface(&dir.join("s.vtp"), &[DVec3::ZERO; 3], &[[0, 1, 3]], &[], F);
+        let bad_tri = write_surface(&dir.join("s.vtp"), &[Vec3::ZERO; 3], &[[0, 1, 3]], &[], F);
         assert_eq!(bad_tri.unwrap_err().kind(), InvalidInput);
-        let (o, h) = (DVec3::ZERO, DVec3::ONE);
+        let (o, h) = (Vec3::ZERO, Vec3::ONE);
         let err = write_image(&dir.join("g.vti"), [2, 2, 2], o, h, &one, F).unwrap_err();
         assert!(err.to_string().contains("radius"), "{err}");
         let huge = write_image(&dir.join("g.vti"), [usize::MAX, 2, 1], o, h, &[], F);
@@ -532,8 +532,8 @@ mod tests {
     #[test]
     fn surface_round_trip() {
         let dir = test_dir("vtk_surface");
-        let v = [DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::new(1.0, 1.0, 0.25)];
-        let force = [DVec3::new(0.0, 0.0, -9.81), DVec3::new(1e-300, 0.0, 2.5)];
+        let v = [Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::new(1.0, 1.0, 0.25)];
+        let force = [Vec3::new(0.0, 0.0, -9.81), Vec3::new(1e-300, 0.0, 2.5)];
         let arrays = [
             Array::vectors("force", &force),
             Array::scalars("wear", &[0.5, 1.5]),
@@ -554,9 +554,9 @@ mod tests {
     fn image_round_trip() {
         let dir = test_dir("vtk_image");
         let p: Vec<f64> = (0..6).map(|i| i as f64 * 0.1).collect();
-        let u: Vec<DVec3> = (0..6).map(|i| DVec3::splat(i as f64)).collect();
+        let u: Vec<Vec3> = (0..6).map(|i| Vec3::splat(i as f64)).collect();
         let arrays = [Array::scalars("p", &p), Array::vectors("u", &u)];
-        let (origin, spacing) = (DVec3::new(-1.0, 0.0, 0.5), DVec3::new(0.1, 0.2, 0.3));
+        let (origin, spacing) = (Vec3::new(-1.0, 0.0, 0.5), Vec3::new(0.1, 0.2, 0.3));
         write_image(
             &dir.join("g.vti"),
             [3, 2, 1],
@@ -589,10 +589,10 @@ mod tests {
         let dir = test_dir("vtk_formats");
         // Over two zlib blocks of vectors, so the block header and the partial block count.
         let n = 1500;
-        let pos: Vec<DVec3> = (0..n)
-            .map(|i| DVec3::new(i as f64 / 7.0, (i as f64).sin(), 1e3 + 1e-9 * i as f64))
+        let pos: Vec<Vec3> = (0..n)
+            .map(|i| Vec3::new(i as f64 / 7.0, (i as f64).sin(), 1e3 + 1e-9 * i as f64))
             .collect();
-        let vel: Vec<DVec3> = pos.iter().map(|p| *p * 0.1 - DVec3::Y).collect();
+        let vel: Vec<Vec3> = pos.iter().map(|p| *p * 0.1 - Vec3::Y).collect();
         let d: Vec<f64> = (0..n).map(|i| 0.01 + 1e-5 * i as f64).collect();
         let ids: Vec<i64> = (0..n as i64).map(|i| 3 * i - 7).collect();
         let tri: Vec<[u32; 3]> = (0..n as u32 - 2).map(|i| [i, i + 1, i + 2]).collect();
@@ -611,7 +611,7 @@ mod tests {
                 write_points(&dir.join("p.vtu"), &pos, &arrays, fmt).unwrap();
                 let wall = [Array::scalars("wear", &wear)];
                 write_surface(&dir.join("s.vtp"), &pos, &tri, &wall, fmt).unwrap();
-                let (o, h) = (DVec3::new(-1.0, 0.0, 0.5), DVec3::splat(0.1));
+                let (o, h) = (Vec3::new(-1.0, 0.0, 0.5), Vec3::splat(0.1));
                 write_image(&dir.join("g.vti"), [10, 15, 10], o, h, &arrays[1..], fmt).unwrap();
                 let (p, s, g) = (
                     Parsed::read(&dir.join("p.vtu")),

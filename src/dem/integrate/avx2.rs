@@ -60,7 +60,7 @@ unsafe fn spread(s: __m256d, c: usize) -> __m256d {
     }
 }
 
-/// The per-sphere sums (a_x + a_y) + a_z of the layout `a` (as `DVec3::length_squared` adds
+/// The per-sphere sums (a_x + a_y) + a_z of the layout `a` (as `Vec3::length_squared` adds
 /// the squares), one sphere per lane.
 #[inline(always)]
 unsafe fn sums(a: [__m256d; 3]) -> __m256d {
@@ -107,7 +107,7 @@ pub(super) unsafe fn close_and_open(
     for q in 0..groups {
         let k = 4 * q;
         // SAFETY (the loads and stores below): spheres k..k + 4 <= n of columns of length n,
-        // each sphere three f64 in a row (`DVec3` is `repr(C)` of three f64); register c of
+        // each sphere three f64 in a row (`Vec3` is `repr(C)` of three f64); register c of
         // the four is the numbers 4c..4c + 4 from the first.
         let at = |col: &[Vec3], c: usize| col.as_ptr().add(k).cast::<f64>().add(4 * c);
         let at_mut = |col: &mut [Vec3], c: usize| col.as_mut_ptr().add(k).cast::<f64>().add(4 * c);

@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 
-use glam::DVec3;
+use crate::math::Vec3;
 
 use crate::coupling::drag::clift_grace_weber_1978;
 use crate::scenario::{build, Source};
@@ -77,7 +77,7 @@ pub fn run_block_settling(quick: bool) -> anyhow::Result<BlockSettlingResult> {
     let mut samples = Vec::new();
     loop {
         let s = &sim.dem.spheres;
-        let (mut m, mut x, mut v) = (0.0, DVec3::ZERO, DVec3::ZERO);
+        let (mut m, mut x, mut v) = (0.0, Vec3::ZERO, Vec3::ZERO);
         for i in 0..s.len() {
             m += s.mass[i];
             x += s.mass[i] * s.position[i];

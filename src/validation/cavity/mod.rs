@@ -5,7 +5,7 @@
 //! `ghia1982_*.csv` with their provenance.
 
 use crate::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
-use glam::DVec3;
+use crate::math::Vec3;
 
 /// Ghia, Ghia & Shin (1982) Table I: u/U on the vertical centreline; columns y, Re 100/400/1000.
 const GHIA_U: &str = include_str!("ghia1982_u_vertical_centreline.csv");
@@ -78,8 +78,8 @@ pub fn lid_driven_cavity(re: u32, n: usize, steady_tolerance: f64, t_max: f64) -
     assert!(n % 2 == 0, "the cavity needs an even number of cells");
     let (u_ref, v_ref) = ghia_1982(re).expect("Ghia et al. tabulate Re = 100, 400, 1000");
     let h = 1.0 / n as f64;
-    let grid = StaggeredGrid::new([n, 1, n], DVec3::new(1.0, h, 1.0), DVec3::ZERO);
-    let lid = Boundary::Wall { velocity: DVec3::X };
+    let grid = StaggeredGrid::new([n, 1, n], Vec3::new(1.0, h, 1.0), Vec3::ZERO);
+    let lid = Boundary::Wall { velocity: Vec3::X };
     let bcs = Boundaries::periodic()
         .with(0, Boundary::WALL, Boundary::WALL)
         .with(2, Boundary::WALL, lid);

@@ -29,7 +29,7 @@ use crate::fluid::{
     Boundaries, Boundary, DrivingPressureGradient, Fluid, FluidParameters, Smagorinsky,
     StaggeredGrid, TimeStepLimits,
 };
-use glam::DVec3;
+use crate::math::Vec3;
 use std::f64::consts::{PI, TAU};
 
 /// The mean velocity of Moser, Kim & Mansour (1999) at Re_τ = 178.12: y/h, y⁺, U⁺ (columns
@@ -191,14 +191,14 @@ pub fn channel_fluid(case: &ChannelCase) -> Fluid {
     let [lx, lz] = case.lengths;
     let grid = StaggeredGrid::new(
         case.cells,
-        DVec3::new(lx, 2.0, lz),
-        DVec3::new(0.0, -1.0, 0.0),
+        Vec3::new(lx, 2.0, lz),
+        Vec3::new(0.0, -1.0, 0.0),
     );
     let bcs = Boundaries::periodic().with(1, Boundary::WALL, Boundary::WALL);
     let mut par = FluidParameters::laminar(1.0, 1.0 / case.re_tau);
     par.smagorinsky = Some(case.smagorinsky);
     par.driving_pressure_gradient = DrivingPressureGradient::Constant {
-        force_density: DVec3::X, // ρ u_τ² / h with ρ = u_τ = h = 1
+        force_density: Vec3::X, // ρ u_τ² / h with ρ = u_τ = h = 1
     };
     par.time_step = TimeStepLimits {
         cfl: case.cfl,
@@ -233,7 +233,7 @@ pub fn channel_fluid(case: &ChannelCase) -> Fluid {
     fluid.set_velocity(|x| {
         let y_plus = (1.0 - x.y.abs()) * re_tau;
         let envelope = 1.0 - x.y * x.y;
-        let mut u = DVec3::new(reichardt(y_plus.max(0.0)), 0.0, 0.0);
+        let mut u = Vec3::new(reichardt(y_plus.max(0.0)), 0.0, 0.0);
         for &(c, kx, kz, amp, px, pz) in &modes {
             let wave = (TAU * kx * x.x / lx + px).cos() * (TAU * kz * x.z / lz + pz).cos();
             u[c] += scale * amp * wave * envelope;

@@ -9,7 +9,7 @@
 //! A small cross-stream velocity blob behind it starts the shedding. After a spin-up the
 //! lift's upward zero crossings give the shedding period T and St = D / (U T).
 
-use glam::DVec3;
+use crate::math::Vec3;
 
 use crate::coupling::{Coupling, CouplingParameters};
 use crate::dem::spheres::Spheres;
@@ -106,10 +106,10 @@ pub fn run_cylinder(case: &CylinderCase) -> CylinderResult {
     ];
     let grid = StaggeredGrid::new(
         n,
-        DVec3::new(case.lengths[0], case.lengths[1], h),
-        DVec3::ZERO,
+        Vec3::new(case.lengths[0], case.lengths[1], h),
+        Vec3::ZERO,
     );
-    let inflow = Boundary::Inflow(InflowVelocity::steady(DVec3::X));
+    let inflow = Boundary::Inflow(InflowVelocity::steady(Vec3::X));
     let bcs = Boundaries::periodic().with(0, inflow, Boundary::Outflow);
     let mut fluid =
         Fluid::new(grid, bcs, FluidParameters::laminar(1.0, 1.0 / case.re)).expect("valid");
@@ -117,7 +117,7 @@ pub fn run_cylinder(case: &CylinderCase) -> CylinderResult {
     // A cross-stream blob behind the cylinder breaks the symmetry.
     fluid.set_velocity(|x| {
         let r2 = (x.x - xc - 1.5).powi(2) + (x.y - yc).powi(2);
-        DVec3::new(1.0, 0.3 * (-r2).exp(), 0.0)
+        Vec3::new(1.0, 0.3 * (-r2).exp(), 0.0)
     });
     fluid.project();
     let mut coupling = Coupling::new(CouplingParameters::default(), &fluid, 1.0);

@@ -5,7 +5,7 @@
 
 use std::f64::consts::PI;
 
-use glam::DVec3;
+use crate::math::Vec3;
 
 /// The concentration centroid of one size class: the volume-weighted mean height of the
 /// centres of its spheres,
@@ -15,7 +15,7 @@ use glam::DVec3;
 /// ```
 ///
 /// over the spheres with `in_class(r_i)`; `None` when the class is empty.
-pub fn centroid(positions: &[DVec3], radii: &[f64], in_class: impl Fn(f64) -> bool) -> Option<f64> {
+pub fn centroid(positions: &[Vec3], radii: &[f64], in_class: impl Fn(f64) -> bool) -> Option<f64> {
     let (mut vz, mut v) = (0.0, 0.0);
     for (x, &r) in positions.iter().zip(radii) {
         if in_class(r) {
@@ -34,12 +34,7 @@ pub fn centroid(positions: &[DVec3], radii: &[f64], in_class: impl Fn(f64) -> bo
 /// ```text
 /// φ(z) = Σ_i π (r_i² − (z − z_i)²)⁺ / A          [–]
 /// ```
-pub fn solid_fraction_profile(
-    positions: &[DVec3],
-    radii: &[f64],
-    area: f64,
-    z: &[f64],
-) -> Vec<f64> {
+pub fn solid_fraction_profile(positions: &[Vec3], radii: &[f64], area: f64, z: &[f64]) -> Vec<f64> {
     z.iter()
         .map(|&h| {
             positions
@@ -212,9 +207,9 @@ mod tests {
     #[test]
     fn centroid_is_volume_weighted_per_class() {
         let x = [
-            DVec3::new(0.0, 0.0, 1.0),
-            DVec3::new(0.0, 0.0, 3.0),
-            DVec3::new(0.0, 0.0, 10.0),
+            Vec3::new(0.0, 0.0, 1.0),
+            Vec3::new(0.0, 0.0, 3.0),
+            Vec3::new(0.0, 0.0, 10.0),
         ];
         let r = [1.0, 1.0, 2.0];
         assert_eq!(centroid(&x, &r, |r| r < 1.5), Some(2.0));
@@ -232,7 +227,7 @@ mod tests {
         let d = 1.0;
         let mut x = Vec::new();
         for layer in 0..4 {
-            x.push(DVec3::new(0.0, 0.0, 0.5 * d + layer as f64 * d));
+            x.push(Vec3::new(0.0, 0.0, 0.5 * d + layer as f64 * d));
         }
         let r = vec![0.5 * d; 4];
         let z: Vec<f64> = (0..=80).map(|k| k as f64 * 0.05).collect();

@@ -18,7 +18,7 @@ pub mod stats;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use glam::DVec3;
+use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 
 use crate::dem::neighbor::close_pairs;
@@ -416,7 +416,7 @@ fn mid_plane(fluid: &Fluid, u: &mut Vec<f64>, w: &mut Vec<f64>) {
 /// positions.
 fn sample(
     sim: &Simulation,
-    fixed_start: &[(SphereId, DVec3)],
+    fixed_start: &[(SphereId, Vec3)],
     u: &mut Vec<f64>,
     w: &mut Vec<f64>,
 ) -> SheetSample {
@@ -513,7 +513,7 @@ pub fn run_on_bed(
     let src = Source::from_str(&text, "sheet_flow/scenario.toml", work.to_path_buf())?;
     let mut sim = build(&src)?.simulation;
     let s = &sim.dem.spheres;
-    let fixed_start: Vec<(SphereId, DVec3)> = (0..s.len())
+    let fixed_start: Vec<(SphereId, Vec3)> = (0..s.len())
         .filter(|&i| s.fixed[i])
         .map(|i| (s.id[i], s.position[i]))
         .collect();

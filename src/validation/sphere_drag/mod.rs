@@ -9,7 +9,7 @@
 //! at rest and [59] gives its force. The force is averaged over the last `average` time units
 //! (d/U) after a spin-up; C_D = F_x / (½ ρ U² π d²/4).
 
-use glam::DVec3;
+use crate::math::Vec3;
 
 use crate::coupling::drag::clift_grace_weber_1978;
 use crate::coupling::{Coupling, CouplingMode, CouplingParameters};
@@ -88,18 +88,18 @@ pub fn run_sphere_drag(case: &SphereDragCase) -> SphereDragResult {
     let (d, u) = (1.0, 1.0);
     let h = d / case.cells_per_diameter as f64;
     let n = case.lengths.map(|l| (l / h).round() as usize);
-    let grid = StaggeredGrid::new(n, DVec3::from_array(case.lengths), DVec3::ZERO);
-    let inflow = Boundary::Inflow(InflowVelocity::steady(DVec3::X * u));
+    let grid = StaggeredGrid::new(n, Vec3::from_array(case.lengths), Vec3::ZERO);
+    let inflow = Boundary::Inflow(InflowVelocity::steady(Vec3::X * u));
     let bcs = Boundaries::periodic().with(0, inflow, Boundary::Outflow);
     let mut fluid = Fluid::new(grid, bcs, FluidParameters::laminar(1.0, u * d / case.re))
         .expect("valid set-up");
-    fluid.set_velocity(|_| DVec3::X * u);
+    fluid.set_velocity(|_| Vec3::X * u);
     let mut spheres = Spheres::default();
-    let centre = DVec3::new(case.upstream, 0.5 * case.lengths[1], 0.5 * case.lengths[2]);
+    let centre = Vec3::new(case.upstream, 0.5 * case.lengths[1], 0.5 * case.lengths[2]);
     spheres.push(NewSphere {
         position: centre,
-        velocity: DVec3::ZERO,
-        angular_velocity: DVec3::ZERO,
+        velocity: Vec3::ZERO,
+        angular_velocity: Vec3::ZERO,
         radius: 0.5 * d,
         material: 0,
         density: 1.0,
