@@ -121,3 +121,57 @@ fn a_random_block_set_in_a_huge_region_is_refused_before_it_allocates() {
         &["candidate places", "give the region where the blocks should go"],
     );
 }
+
+/// `check` states how two materials mix (issue 27: the rule and the default restitution were
+/// written nowhere a user looks): friction and restitution are the means of the two
+/// materials' values, the restitution of a material that gives none is 0.5, and a
+/// `[[contact.pair]]` overrides both.
+#[test]
+fn check_prints_the_mixing_rule_and_each_pairings_friction_and_restitution() {
+    let text = format!(
+        "{BASE}{ONE_SPHERE}
+[[material]]
+name = \"steel\"
+density = 7800.0
+young_modulus = 2.0e11
+poisson_ratio = 0.3
+friction_coefficient = 0.3
+restitution_coefficient = 0.9
+
+[[wall]]
+kind = \"plane\"
+material = \"steel\"
+point = [0.0, 0.0, 0.0]
+normal = [0.0, 0.0, 1.0]
+
+[[wall]]
+kind = \"plane\"
+material = \"rock\"
+point = [0.0, 0.0, 1.0]
+normal = [0.0, 0.0, -1.0]
+
+[[contact.pair]]
+materials = [\"rock\", \"rock\"]
+restitution_coefficient = 0.2
+"
+    );
+    let dir = temp_dir("mixing_rule");
+    let src = riprap::scenario::Source::from_str(&text, "case.toml", dir.clone()).unwrap();
+    let report = riprap::scenario::check(&src).unwrap().report();
+    assert!(
+        report.contains("the mean of the two materials' values unless a [[contact.pair]]")
+            && report.contains("restitution_coefficient is 0.5 when not given"),
+        "{report}"
+    );
+    // rock/steel: μ (0.5 + 0.3)/2, e (0.5 + 0.9)/2; rock/rock: e from the pair.
+    let line = |pair: &str| {
+        report
+            .lines()
+            .find(|l| l.contains(pair) && l.contains(" μ "))
+            .unwrap_or_else(|| panic!("no {pair} in\n{report}"))
+            .to_string()
+    };
+    assert!(line("wall steel").contains("μ 0.400, e 0.700"), "{report}");
+    assert!(line("wall rock").contains("μ 0.500, e 0.200"), "{report}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

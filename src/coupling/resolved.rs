@@ -17,7 +17,7 @@
 //! face load g_a(c) = ΔV f_a(c) / Σ_j w_j(c) [N], evaluated once per face
 //! ([`FlowView::face_loads`]): the per-sphere sums then read one number per face.
 //!
-//! evaluated with the provisional flow n+1* (velocity and pressure after the projection of
+//! Both are evaluated with the provisional flow n+1* (velocity and pressure after the projection of
 //! the fluid step, μ_SGS of that step). ΔV = Δx Δy Δz [m³]; x_c the face centre, unwrapped
 //! across periodic boundaries so that the lever arm is the short one. μ ∇²u = ∇·σ̃ for the
 //! divergence-free flow; the last term is −∇·τ^SGS ([56], `fluid::diffusion::subgrid`). The

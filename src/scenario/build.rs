@@ -125,6 +125,20 @@ impl Derived {
         }
         let _ = writeln!(
             s,
+            "friction μ and restitution e of each pairing: the mean of the two materials' \
+             values unless a [[contact.pair]] sets them (a material's restitution_coefficient \
+             is 0.5 when not given); E* and G* from both materials, 1/E* = Σ (1 − ν²)/E, \
+             1/G* = Σ 2 (2 − ν)(1 + ν)/E:"
+        );
+        for (name, c) in &self.pairings {
+            let _ = writeln!(
+                s,
+                "  {:<34} μ {:.3}, e {:.3}, E* {:.3e} Pa, G* {:.3e} Pa",
+                name, c.law.friction, c.law.restitution, c.law.e_star, c.law.g_star
+            );
+        }
+        let _ = writeln!(
+            s,
             "restitution a run at this time step shows (head-on, reference velocity):"
         );
         for ((name, c), (e, n)) in self.pairings.iter().zip(&self.at_step) {
