@@ -33,6 +33,7 @@ use crate::io::csv::{read_csv, CsvSeries};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
 use crate::io::pvd::PvdSeries;
 use crate::io::vtk::{write_points, write_surface, Array, Format};
+use crate::scenario::schema::{OutputKind, OutputSection};
 use crate::scenario::{build, Source};
 use crate::simulation::Simulation;
 use fingerprint::Fingerprint;
@@ -225,21 +226,32 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     }
     let mut spheres_pvd = open_pvd(&out.join("spheres.pvd"), resuming, t0)?;
     let mut walls_pvd = open_pvd(&out.join("walls.pvd"), resuming, t0)?;
+    let kinds = Kinds::of(&sc.output);
     let columns = flow::series_columns(&sim);
     let series_path = out.join("series.csv");
-    let mut series = if resuming {
-        CsvSeries::resume(&series_path, &columns, t0)
+    let mut series = if !kinds.series {
+        None
+    } else if resuming {
+        Some(CsvSeries::resume(&series_path, &columns, t0))
     } else {
-        CsvSeries::create(&series_path, &columns)
+        Some(CsvSeries::create(&series_path, &columns))
     }
+    .transpose()
     .context("cannot open the time series")?;
-    let mut block_out = BlockOutput::open(&sim, &out, resuming, t0, format)
+    let mut block_out = BlockOutput::open(&sim, &out, resuming, t0, format, kinds.blocks)
         .context("cannot open the block files")?;
     let mut reference =
         DisplacementReference::new(sc.output.displacement_reference_time, t0, &sim.rigid);
     let samples = sc.fluid.as_ref().map_or(&[][..], |f| &f.samples[..]);
     let flow_interval = sc.output.flow_interval.unwrap_or(vtk_interval);
-    let mut flow_out = FlowOutput::open(&sim, samples, &out, resuming, flow_interval, format)?;
+    let mut flow_out = FlowOutput::open(
+        &sim,
+        samples,
+        &out,
+        resuming,
+        kinds.flow.then_some(flow_interval),
+        format,
+    )?;
     let mut probes = Vec::new();
     for &id in &sc.output.probes {
         let p = out.join(format!("probe_{id}.csv"));
@@ -256,10 +268,18 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     let ck_path = out.join("checkpoint.ck");
     if !resuming {
         if particles {
-            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd, format)?;
+            snapshot(
+                &sim,
+                &out,
+                (&mut spheres_pvd, &mut walls_pvd),
+                kinds,
+                format,
+            )?;
             block_out.write(&sim, &out).context(BLOCKS)?;
         }
-        series.row(&series_row(&sim)).context(SERIES)?;
+        if let Some(series) = &mut series {
+            series.row(&series_row(&sim)).context(SERIES)?;
+        }
         record_probes(&sim, &mut probes).context(PROBES)?;
     }
 
@@ -323,11 +343,19 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         record_probes(&sim, &mut probes).context(PROBES)?;
         let (n, t) = (sim.step, sim.time);
         if csv_every.due(t, n) {
-            series.row(&series_row(&sim)).context(SERIES)?;
+            if let Some(series) = &mut series {
+                series.row(&series_row(&sim)).context(SERIES)?;
+            }
         }
         let frame = vtk_every.due(t, n);
         if frame && particles {
-            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd, format)?;
+            snapshot(
+                &sim,
+                &out,
+                (&mut spheres_pvd, &mut walls_pvd),
+                kinds,
+                format,
+            )?;
             block_out.write(&sim, &out).context(BLOCKS)?;
         }
         if let Some(f) = &mut flow_out {
@@ -352,7 +380,13 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     // uninterrupted run would.
     if interrupted_by.is_none() {
         if !vtk_every.fired_at(sim.step) && particles {
-            snapshot(&sim, &out, &mut spheres_pvd, &mut walls_pvd, format)?;
+            snapshot(
+                &sim,
+                &out,
+                (&mut spheres_pvd, &mut walls_pvd),
+                kinds,
+                format,
+            )?;
             block_out.write(&sim, &out).context(BLOCKS)?;
         }
         // The flow keeps its own schedule (`flow_interval`).
@@ -360,10 +394,12 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             f.finish(&sim)?;
         }
         if !csv_every.fired_at(sim.step) {
-            series.row(&series_row(&sim)).context(SERIES)?;
+            if let Some(series) = &mut series {
+                series.row(&series_row(&sim)).context(SERIES)?;
+            }
         }
     }
-    if sc.output.plots && particles {
+    if kinds.plots && particles {
         plot_energy(&out)
             .with_context(|| format!("cannot draw {}", out.join("energy.png").display()))?;
     }
@@ -533,8 +569,9 @@ impl BlockOutput {
         resuming: bool,
         t0: f64,
         format: Format,
+        wanted: bool,
     ) -> std::io::Result<Self> {
-        if sim.rigid.is_empty() {
+        if sim.rigid.is_empty() || !wanted {
             return Ok(BlockOutput(None));
         }
         let csv = out.join("blocks.csv");
@@ -588,19 +625,55 @@ fn write_spheres(sim: &Simulation, path: &Path, format: Format) -> std::io::Resu
     )
 }
 
+/// The output kinds a run writes (`[output] skip`, `plots`).
+#[derive(Clone, Copy, Debug)]
+struct Kinds {
+    spheres: bool,
+    walls: bool,
+    blocks: bool,
+    flow: bool,
+    series: bool,
+    plots: bool,
+}
+
+impl Kinds {
+    fn of(o: &OutputSection) -> Kinds {
+        Kinds {
+            spheres: o.writes(OutputKind::Spheres),
+            walls: o.writes(OutputKind::Walls),
+            blocks: o.writes(OutputKind::Blocks),
+            flow: o.writes(OutputKind::Flow),
+            series: o.writes(OutputKind::Series),
+            plots: o.writes(OutputKind::Plots),
+        }
+    }
+}
+
+/// Writes the frame of the spheres and walls that `kinds` keeps, numbered by the frames
+/// written before (those of the spheres, or of the walls when the spheres are skipped).
 fn snapshot(
     sim: &Simulation,
     out: &Path,
-    spheres: &mut PvdSeries,
-    walls: &mut PvdSeries,
+    (spheres, walls): (&mut PvdSeries, &mut PvdSeries),
+    kinds: Kinds,
     format: Format,
 ) -> anyhow::Result<()> {
-    let k = spheres.entries().len();
-    let name = format!("spheres_{k:06}.vtu");
-    write_spheres(sim, &out.join(&name), format).context("cannot write the spheres' frame")?;
-    spheres
-        .add(sim.time, &name, 0)
-        .context("cannot update the spheres' series")?;
+    let n_walls = sim.dem.walls.len().max(1);
+    let k = if kinds.spheres {
+        spheres.entries().len()
+    } else {
+        walls.entries().len() / n_walls
+    };
+    if kinds.spheres {
+        let name = format!("spheres_{k:06}.vtu");
+        write_spheres(sim, &out.join(&name), format).context("cannot write the spheres' frame")?;
+        spheres
+            .add(sim.time, &name, 0)
+            .context("cannot update the spheres' series")?;
+    }
+    if !kinds.walls {
+        return Ok(());
+    }
     let d = &sim.dem.domain;
     for (w, wall) in sim.dem.walls.iter().enumerate() {
         let (v, tri) = wall.surface(sim.time, d.min, d.max);

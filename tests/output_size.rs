@@ -179,3 +179,34 @@ fn flow_images_follow_their_own_interval_and_size() {
     near(e.flow * images, bytes, 0.01, "flow images");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// `[output] skip` switches output kinds off (issue 27): the skipped files are not written,
+/// the others are as before (the walls' frames numbered on their own when the spheres are
+/// skipped), the estimate leaves them out, and an unknown kind is refused naming the key.
+#[test]
+fn skipped_output_kinds_are_not_written_nor_estimated() {
+    let dir = temp_dir("skip");
+    let all = run(CASE, &dir, None);
+    let frames = files(&dir, "walls_0", ".vtp").0;
+    std::fs::remove_dir_all(&dir).unwrap();
+
+    let skip = format!("{CASE}skip = [\"spheres\", \"blocks\", \"series\"]\n");
+    let e = run(&skip, &dir, None);
+    assert_eq!(files(&dir, "spheres", "").0, 0, "spheres written");
+    assert_eq!(files(&dir, "blocks", "").0, 0, "blocks written");
+    assert!(!dir.join("series.csv").exists() && !dir.join("energy.png").exists());
+    assert_eq!(files(&dir, "walls_0", ".vtp").0, frames, "the walls' frames as before");
+    let last = (frames / 2 - 1) as usize;
+    assert!(dir.join(format!("walls_{last:06}_1.vtp")).exists());
+    assert!(dir.join("probe_3.csv").exists() && dir.join("checkpoint.ck").exists());
+    assert_eq!((e.spheres, e.blocks), (0, 0));
+    assert!(e.total() < all.total() && e.csv < all.csv, "{e:?} vs {all:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+
+    let bad = format!("{CASE}skip = [\"walls\", \"checkpoints\"]\n");
+    let err = Source::from_str(&bad, "case.toml", PathBuf::from("."))
+        .err()
+        .expect("an unknown kind is refused")
+        .to_string();
+    assert!(err.contains("skip") && err.contains("checkpoints"), "{err}");
+}

@@ -205,18 +205,20 @@ pub struct FlowOutput {
     /// When an image is due (`[output] flow_interval`).
     images: Schedule,
     format: Format,
+    /// Images written at all (`[output] skip` without `"flow"`).
+    write_images: bool,
 }
 
 impl FlowOutput {
     /// Opens `flow.pvd` and the sample files in `dir` (resuming them at the simulation's time
     /// when `resuming`), and, for a fresh run, writes the state at t = 0. Images follow
-    /// `interval` [s], in `format`.
+    /// `interval` [s], in `format` (None: no images, the samples only).
     pub fn open(
         sim: &Simulation,
         sections: &[SampleSection],
         dir: &Path,
         resuming: bool,
-        interval: f64,
+        interval: Option<f64>,
         format: Format,
     ) -> anyhow::Result<Option<FlowOutput>> {
         let Some(fluid) = &sim.fluid else {
@@ -249,7 +251,8 @@ impl FlowOutput {
                 pending: false,
             });
         }
-        let mut images = Schedule::new(interval, 0.0, true);
+        // No images: a schedule that never falls due.
+        let mut images = Schedule::new(interval.unwrap_or(f64::INFINITY), 0.0, true);
         images.start(t0, sim.step);
         let mut out = FlowOutput {
             dir: dir.to_path_buf(),
@@ -257,10 +260,13 @@ impl FlowOutput {
             samples,
             images,
             format,
+            write_images: interval.is_some(),
         };
         if !resuming {
             let fields = fluid.cell_fields();
-            out.snapshot(sim, &fields)?;
+            if out.write_images {
+                out.snapshot(sim, &fields)?;
+            }
             for s in &mut out.samples {
                 s.write(t0, &fields)?;
             }
@@ -307,7 +313,7 @@ impl FlowOutput {
     /// Writes the final image, unless the schedule just wrote it.
     pub fn finish(&mut self, sim: &Simulation) -> anyhow::Result<()> {
         match &sim.fluid {
-            Some(fluid) if !self.images.fired_at(sim.step) => {
+            Some(fluid) if self.write_images && !self.images.fired_at(sim.step) => {
                 self.snapshot(sim, &fluid.cell_fields())
             }
             _ => Ok(()),

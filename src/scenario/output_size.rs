@@ -9,6 +9,7 @@
 //! estimate, not a promise.
 
 use super::fluid::SampleKind;
+use super::schema::OutputKind;
 use super::text::bytes;
 use super::Scenario;
 use crate::dem::Dem;
@@ -79,14 +80,33 @@ impl OutputEstimate {
                 e.blocks = vtk(14, b * (24 + 4 * 8 + 1 + 20 * w));
             }
         }
+        // What `[output] skip` leaves out.
+        if !o.writes(OutputKind::Spheres) {
+            e.spheres = 0;
+        }
+        if !o.writes(OutputKind::Walls) {
+            e.walls = 0;
+        }
+        let blocks = if o.writes(OutputKind::Blocks) {
+            blocks
+        } else {
+            0
+        };
+        e.blocks = if blocks > 0 { e.blocks } else { 0 };
         let steps = (end / dem.dt).round() as u64;
-        let series_rows = (end / o.series_interval.unwrap_or(end / 500.0)).floor() as u64 + 2;
+        let series_rows = if o.writes(OutputKind::Series) {
+            (end / o.series_interval.unwrap_or(end / 500.0)).floor() as u64 + 2
+        } else {
+            0
+        };
         let mut values = series_rows * (11 + if grid.is_some() { 4 } else { 0 });
         values += o.probes.len() as u64 * (steps + 1) * 17;
         values += e.frames * blocks as u64 * 11;
         if let Some(g) = grid {
             let cells = g.cell_count() as u64;
-            e.flow_frames = count(o.flow_interval.unwrap_or(vtk_interval));
+            if o.writes(OutputKind::Flow) {
+                e.flow_frames = count(o.flow_interval.unwrap_or(vtk_interval));
+            }
             // Velocity, vorticity, and four scalars.
             e.flow = vtk(6, cells * 10 * w);
             for s in sc.fluid.iter().flat_map(|f| &f.samples) {
@@ -119,7 +139,7 @@ impl OutputEstimate {
                 bytes(self.flow as f64)
             ));
         }
-        if self.frames > 0 {
+        if self.frames > 0 && self.spheres + self.walls + self.blocks > 0 {
             let mut frame = format!(
                 "{} frames: spheres {}",
                 self.frames,

@@ -541,6 +541,27 @@ pub struct OutputSection {
     /// Draw the energy plot (PNG) at the end.
     #[serde(default = "yes")]
     pub plots: bool,
+    /// Output kinds not written; checkpoints always are (a failing run keeps its last one).
+    #[serde(default)]
+    pub skip: Vec<OutputKind>,
+}
+
+/// A kind of output that `[output] skip` can switch off.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum OutputKind {
+    /// `spheres_*.vtu` and `spheres.pvd`.
+    Spheres,
+    /// `walls_*.vtp` and `walls.pvd`.
+    Walls,
+    /// `blocks_*.vtu`, `blocks.pvd` and `blocks.csv`.
+    Blocks,
+    /// The flow images `flow_*.vti` and `flow.pvd` (line and plane samples stay).
+    Flow,
+    /// `series.csv` (and the energy plot drawn from it).
+    Series,
+    /// The energy plot `energy.png` (as `plots = false`).
+    Plots,
 }
 
 fn yes() -> bool {
@@ -560,11 +581,22 @@ impl Default for OutputSection {
             checkpoint_interval: None,
             probes: Vec::new(),
             plots: true,
+            skip: Vec::new(),
         }
     }
 }
 
 impl OutputSection {
+    /// Whether the run writes output of `kind` (not in `skip`; the energy plot also needs
+    /// `plots` and the series it is drawn from).
+    pub fn writes(&self, kind: OutputKind) -> bool {
+        let kept = |k| !self.skip.contains(&k);
+        match kind {
+            OutputKind::Plots => self.plots && kept(kind) && kept(OutputKind::Series),
+            _ => kept(kind),
+        }
+    }
+
     /// The format of the VTK files.
     pub fn vtk_format(&self) -> Format {
         Format {
