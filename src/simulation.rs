@@ -2,22 +2,22 @@
 //!
 //! A DEM step (velocity Verlet, see `dem::integrate`):
 //!
-//! 1. half kick of v and ω with the forces of the last evaluation [1][2]; the members of each
-//!    rigid block are then given the block's rigid velocity again ([34][35], see
-//!    `RigidBodies::project_velocities`)
-//! 2. drift of the positions
-//! 3. boundaries: wrap periodic axes; remove spheres that left the domain
-//! 4. insertion: feeders add the spheres due
-//! 5. neighbour list: rebuild when a sphere moved more than skin/2 (history carried over)
-//! 6. forces at t + Δt: contacts [6]-[14] with walls as infinite spheres, gravity
-//!    and the links between bodies (wires, bonds)
-//! 7. half kick with the new forces
-//! 8. rigid blocks: the PMS recovery of each block from its members, which are put back in the
-//!    rigid shape [34]-[36], [41]-[49]
-//! 9. stability checks: NaN, absurd speed, overlap beyond bound
+//! 1. open: half kick of v and ω with the forces of the last evaluation [1][2] (the members of
+//!    each rigid block first get the block's rigid velocity back, [34][35], see
+//!    `RigidBodies::project_velocities`); drift; periodic wrap; F ← m g
+//! 2. boundaries: remove spheres that left the domain
+//! 3. insertion: feeders add the spheres due
+//! 4. neighbour list: rebuilt when two spheres may have moved more than the skin relative to
+//!    each other (`dem::neighbor::validity`), a wall moved more than half the skin, or spheres
+//!    came or went (history carried over)
+//! 5. forces at t + Δt: contacts [6]-[14] with walls as infinite spheres, the water's held
+//!    load and the links between bodies (wires, bonds)
+//! 6. close: half kick with the new forces; rigid blocks: the PMS recovery of each block from
+//!    its members, which are put back in the rigid shape [34]-[36], [41]-[49]
+//! 7. stability checks: NaN, absurd speed, overlap beyond bound
 //!
 //! [`Simulation::advance`] takes several steps, doing phase 1 of each step in the pass of
-//! phase 7 of the one before (to the same bits) where nothing else comes between them.
+//! phase 6 of the one before (to the same bits) where nothing else comes between them.
 //!
 //! With a fluid ([`Simulation::with_fluid`]) one step of the simulation is one fluid step
 //! Δt_f with the DEM steps inside it (coupled by `crate::coupling` when the scenario has
@@ -181,7 +181,7 @@ impl Simulation {
 
     /// Advances `n` time steps, as `n` calls of `step` would and to the same bits, but faster
     /// where it can: without a fluid, blocks or links, the closing pass of each step but the
-    /// last also opens the next one (phases 7 and 9 of a step and 1-2 of the next in one pass
+    /// last also opens the next one (phases 6 and 7 of a step and 1 of the next in one pass
     /// over the spheres, `forces::Kick::open_next`). In between the steps the state is not that of
     /// a step's end (velocities are half a kick ahead), which is why only a whole `advance`
     /// does this: the state it returns in is the end of step n.
@@ -210,7 +210,7 @@ impl Simulation {
         self.rigid.is_empty() && self.coupling.is_none()
     }
 
-    /// One DEM step Δt, phases 1-8 above (the caller counts `self.step`).
+    /// One DEM step Δt, phases 1-7 above (the caller counts `self.step`).
     fn dem_step(&mut self) -> Result<(), Instability> {
         self.dem_step_with(None, false).map(|_| ())
     }

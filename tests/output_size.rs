@@ -195,12 +195,19 @@ fn skipped_output_kinds_are_not_written_nor_estimated() {
     assert_eq!(files(&dir, "spheres", "").0, 0, "spheres written");
     assert_eq!(files(&dir, "blocks", "").0, 0, "blocks written");
     assert!(!dir.join("series.csv").exists() && !dir.join("energy.png").exists());
-    assert_eq!(files(&dir, "walls_0", ".vtp").0, frames, "the walls' frames as before");
+    assert_eq!(
+        files(&dir, "walls_0", ".vtp").0,
+        frames,
+        "the walls' frames as before"
+    );
     let last = (frames / 2 - 1) as usize;
     assert!(dir.join(format!("walls_{last:06}_1.vtp")).exists());
     assert!(dir.join("probe_3.csv").exists() && dir.join("checkpoint.ck").exists());
     assert_eq!((e.spheres, e.blocks), (0, 0));
-    assert!(e.total() < all.total() && e.csv < all.csv, "{e:?} vs {all:?}");
+    assert!(
+        e.total() < all.total() && e.csv < all.csv,
+        "{e:?} vs {all:?}"
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 
     let bad = format!("{CASE}skip = [\"walls\", \"checkpoints\"]\n");

@@ -24,7 +24,7 @@ pub struct DemTimes {
     pub opening: f64,
     /// Outflow, feeders and, when due, the neighbour, contact-history and wall lists (2-4).
     pub lists: f64,
-    /// Pairs, walls, closing kick and checks (5-6), with blocks and links.
+    /// Pairs, walls, closing kick and checks (5-7), with blocks and links.
     pub forces: f64,
 }
 
