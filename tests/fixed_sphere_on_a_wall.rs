@@ -14,7 +14,11 @@ use riprap::math::Vec3;
 
 /// Every contact law riprap offers, with both dashpot choices of the source's Voigt model.
 fn laws() -> Vec<(&'static str, ContactModel)> {
-    let voigt = |spring, damping| ContactModel::Voigt { spring, damping };
+    let voigt = |spring, damping| ContactModel::Voigt {
+        spring,
+        damping,
+        tangential: Default::default(),
+    };
     vec![
         ("hertz", voigt(NormalSpring::Hertz, Damping::Restitution)),
         (

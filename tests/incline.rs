@@ -41,6 +41,7 @@ fn run(spring: NormalSpring, theta_deg: f64) -> Run {
     let model = ContactModel::Voigt {
         spring,
         damping: Damping::Restitution,
+        tangential: Default::default(),
     };
     let m = sphere_mass(DENSITY, R);
     let load = m * G * th.cos();

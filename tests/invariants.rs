@@ -49,6 +49,7 @@ fn static_overlap_on_a_plane() {
         let model = ContactModel::Voigt {
             spring,
             damping: Damping::Restitution,
+            tangential: Default::default(),
         };
         let mut d = dem(mat.clone(), model, open_box(1.0), period / 50.0);
         d.gravity = Vec3::new(0.0, 0.0, -g);
@@ -156,6 +157,7 @@ fn elastic_gas_conserves_energy() {
             ContactModel::Voigt {
                 spring: NormalSpring::Hertz,
                 damping: Damping::Restitution,
+                tangential: Default::default(),
             },
         ),
         ("Hertz-Mindlin", ContactModel::HertzMindlin),
@@ -203,6 +205,7 @@ fn momentum_is_conserved_with_friction_and_damping() {
             ContactModel::Voigt {
                 spring: NormalSpring::Hertz,
                 damping: Damping::Restitution,
+                tangential: Default::default(),
             },
         ),
         (
@@ -210,6 +213,7 @@ fn momentum_is_conserved_with_friction_and_damping() {
             ContactModel::Voigt {
                 spring: NormalSpring::Linear { stiffness: 2.0e4 },
                 damping: Damping::Critical,
+                tangential: Default::default(),
             },
         ),
         ("Hertz-Mindlin", ContactModel::HertzMindlin),

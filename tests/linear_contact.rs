@@ -130,6 +130,7 @@ fn collide(choice: &Choice, wall: bool, steps: f64) -> (f64, f64, f64, f64) {
     let model = ContactModel::Voigt {
         spring: NormalSpring::Linear { stiffness: K },
         damping,
+        tangential: Default::default(),
     };
     let m = sphere_mass(DENSITY, R);
     let m_star = if wall { m } else { 0.5 * m };

@@ -32,6 +32,7 @@ fn base(e: f64, gravity: Vec3, dt: f64) -> Dem {
     let model = ContactModel::Voigt {
         spring: NormalSpring::Linear { stiffness: K },
         damping: Damping::Restitution,
+        tangential: Default::default(),
     };
     let mut d = dem(mat, model, open_box(1.0), dt);
     d.gravity = gravity;

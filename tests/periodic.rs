@@ -25,6 +25,7 @@ fn model() -> ContactModel {
     ContactModel::Voigt {
         spring: NormalSpring::Hertz,
         damping: Damping::Restitution,
+        tangential: Default::default(),
     }
 }
 

@@ -48,6 +48,7 @@ fn measured(spring: NormalSpring, e: f64, v: f64, r0: f64, r1: f64) -> f64 {
     let model = ContactModel::Voigt {
         spring,
         damping: Damping::Restitution,
+        tangential: Default::default(),
     };
     let m_star = harmonic(sphere_mass(DENSITY, r0), sphere_mass(DENSITY, r1));
     let tc = elastic_duration(spring, harmonic(r0, r1), m_star, v);

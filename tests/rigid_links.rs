@@ -475,6 +475,7 @@ fn a_bonded_pair_pulled_past_its_tensile_strength_breaks_and_lets_go() {
     let model = ContactModel::Voigt {
         spring: NormalSpring::Hertz,
         damping: Damping::Restitution,
+        tangential: Default::default(),
     };
     let mut dem = Dem::new(vec![material], model, domain, dt);
     dem.gravity = Vec3::ZERO;

@@ -31,6 +31,7 @@ fn setup(
     let model = ContactModel::Voigt {
         spring: NormalSpring::Hertz,
         damping: Damping::Restitution,
+        tangential: Default::default(),
     };
     let mut dem = Dem::new(
         vec![material(2400.0, 1.0e8, 0.2, mu, e)],

@@ -149,6 +149,7 @@ mod tests {
         let model = ContactModel::Voigt {
             spring: NormalSpring::Hertz,
             damping: Damping::Restitution,
+            tangential: Default::default(),
         };
         let law = PairLaw::new(&model, &m, &m, PairOverride::default());
         let c = contact_scales(&law, 0.005, 1e-3, 1.0, 0.0);

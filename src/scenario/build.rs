@@ -791,7 +791,11 @@ fn contact_model(
             "only the linear model takes a stiffness; the others derive it from the materials",
         ));
     }
-    Ok(ContactModel::Voigt { spring, damping })
+    Ok(ContactModel::Voigt {
+        spring,
+        damping,
+        tangential: Default::default(),
+    })
 }
 
 fn check_motion(src: &Source, key: &str, motion: Option<Motion>) -> Result<(), ScenarioError> {

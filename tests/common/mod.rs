@@ -373,6 +373,7 @@ pub fn models() -> [(&'static str, ContactModel); 2] {
             ContactModel::Voigt {
                 spring: NormalSpring::Hertz,
                 damping: Damping::Restitution,
+                tangential: Default::default(),
             },
         ),
         ("Hertz-Mindlin", ContactModel::HertzMindlin),
