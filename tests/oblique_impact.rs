@@ -229,3 +229,52 @@ fn no_slip_impact_leaves_with_the_tangential_velocity_its_stiffness_ratio_gives(
         assert!((imp.restitution() - 1.0).abs() < 1e-3, "elastic");
     }
 }
+
+/// Hertz-Mindlin with the Coulomb limit kept (issue 27; what a scenario's `hertz_mindlin`
+/// gets): in gross sliding the tangential impulse is μ times the normal one, to round-off, as
+/// the rigid-body Coulomb solution at the top of this file has it, at any incidence and
+/// restitution. The LIGGGHTS law (`hertz_mindlin_liggghts`, the benchmarks') adds its
+/// tangential dashpot after the Coulomb test and takes friction from |F_n| while the damped
+/// normal force pulls: the same impacts get more tangential impulse than Coulomb allows.
+#[test]
+fn hertz_mindlin_with_the_coulomb_limit_gives_coulomb_impulses_in_gross_sliding() {
+    let (n, t) = frame();
+    let m = sphere_mass(DENSITY, R);
+    let impulse_ratio = |model: ContactModel, e: f64, vt: f64| {
+        let mat = material(DENSITY, 5.0e7, 0.3, MU, e);
+        let k_h = 4.0 / 3.0 * e_star(&mat, &mat) * R.sqrt();
+        let tc = hertz_theory(k_h, m, 1.0).duration;
+        let dt = tc / 200.0;
+        let mut d = dem(mat, model, open_box(1.0), dt);
+        d.walls.push(plane_wall(Vec3::ZERO, n));
+        d.add_sphere((R + 10.37 * dt) * n, vt * t - n, Vec3::ZERO, R, 0);
+        let imp = run_impact(d, 2.0 * tc, 100_000);
+        let jn = 1.0 + imp.restitution(); // J_n / (m v_n), v_n = 1 m/s
+        let jt = vt - imp.state.v[0].dot(t);
+        (jt / jn, imp.restitution())
+    };
+    let mut excess: f64 = 0.0;
+    for e in [0.9, 0.5, 0.2] {
+        for ratio in [1.1, 3.0] {
+            let vt = ratio * 3.5 * MU * (1.0 + e);
+            let (coulomb, e_c) = impulse_ratio(ContactModel::HertzMindlinCoulomb, e, vt);
+            let (liggghts, _) = impulse_ratio(ContactModel::HertzMindlin, e, vt);
+            eprintln!(
+                "e = {e} (measured {e_c:.4}), v_t/v_n = {vt:.3}: J_t/J_n = {coulomb:.12} \
+                 (Coulomb {MU}), LIGGGHTS law {liggghts:.5}"
+            );
+            assert!(
+                (coulomb - MU).abs() < 1e-9 * MU,
+                "e = {e}: J_t/J_n = {coulomb}"
+            );
+            // Its dashpot is calibrated for the law without tension: the target restitution,
+            // to the first-order error of the half-step dashpot velocity at 200 steps.
+            assert!((e_c - e).abs() < 0.01, "e = {e}: measured {e_c}");
+            excess = excess.max(liggghts / MU - 1.0);
+        }
+    }
+    assert!(
+        excess > 1e-3,
+        "the LIGGGHTS law kept the Coulomb ratio too (largest excess {excess:.2e})"
+    );
+}

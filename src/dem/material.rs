@@ -78,6 +78,10 @@ pub enum ContactModel {
     /// LIGGGHTS `model hertz tangential history` (= LAMMPS `hertz/material` + `mindlin`), exactly
     /// as `bench/peers/README.md` specifies it, for users coming from those codes.
     HertzMindlin,
+    /// Hertz-Mindlin with the Coulomb limit kept (`contact::hertz_mindlin::coulomb_force`): the
+    /// same springs and dashpots, but the whole tangential force within μ F_n and no tension,
+    /// so that a sliding contact's tangential impulse is exactly μ times its normal one.
+    HertzMindlinCoulomb,
     /// LAMMPS `pair_style gran/hooke/history k_n k_t γ_n γ_t xmu dampflag` (`contact::hooke`):
     /// a linear spring-dashpot with tangential history, for users of LAMMPS and its chute
     /// benchmark (B2). The friction coefficient (LAMMPS xmu) is the pair's.
@@ -133,6 +137,8 @@ pub enum LawKind {
     ApparentLinear,
     /// LIGGGHTS/LAMMPS Hertz-Mindlin.
     HertzMindlin,
+    /// Hertz-Mindlin with the Coulomb limit on the whole tangential force, no tension.
+    HertzMindlinCoulomb,
     /// LAMMPS Hooke with history.
     HookeHistory,
 }
@@ -222,12 +228,26 @@ impl PairLaw {
                 law.tangential_stiffness = tangential_stiffness;
                 law.gamma = (normal_damping, tangential_damping);
             }
-            ContactModel::HertzMindlin => {
-                law.kind = LawKind::HertzMindlin;
+            ContactModel::HertzMindlin | ContactModel::HertzMindlinCoulomb => {
+                law.kind = match model {
+                    ContactModel::HertzMindlin => LawKind::HertzMindlin,
+                    _ => LawKind::HertzMindlinCoulomb,
+                };
                 let ln_e = e.max(1e-12).ln();
                 law.beta = ln_e / (ln_e * ln_e + std::f64::consts::PI.powi(2)).sqrt();
-                // γ = -2 √(5/6) β √(S m*), S = 2 E* a (normal) or 8 G* a (tangential).
-                let c = -2.0 * (5.0f64 / 6.0).sqrt() * law.beta;
+                // γ = -2 √(5/6) β √(S m*), S = 2 E* a (normal) or 8 G* a (tangential): LIGGGHTS's
+                // damping, which gives e for a law that may pull. Without tension the contact
+                // ends sooner and rebounds faster, so the Coulomb variant takes the damping ratio
+                // of the clamped Hertz law instead (its S_n is the Hertz tangent stiffness):
+                // γ = 2 ζ √(S m*), ζ from `damping::damping_ratio_for_restitution`.
+                let c = match law.kind {
+                    LawKind::HertzMindlin => -2.0 * (5.0f64 / 6.0).sqrt() * law.beta,
+                    _ => {
+                        law.damping_ratio =
+                            damping::damping_ratio_for_restitution(e, damping::Spring::Hertz);
+                        2.0 * law.damping_ratio
+                    }
+                };
                 law.hertz_mindlin = (
                     4.0 / 3.0 * law.e_star,
                     8.0 * law.g_star,

@@ -70,11 +70,11 @@ pub fn contact_scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64
                 law: *law,
             }
         }
-        LawKind::Hertz | LawKind::HertzMindlin => {
+        LawKind::Hertz | LawKind::HertzMindlin | LawKind::HertzMindlinCoulomb => {
             let k_h = law.hertz_coefficient(r_star);
             let scale = (m_star * m_star / (k_h * k_h * v)).powf(0.2);
             let elastic = HERTZ_DURATION_FACTOR * scale;
-            let duration = if law.kind == LawKind::Hertz {
+            let duration = if matches!(law.kind, LawKind::Hertz | LawKind::HertzMindlinCoulomb) {
                 let d0 = (m_star * v * v / k_h).powf(0.4);
                 damping::hertz_contact(law.damping_ratio).0 * d0 / v
             } else {

@@ -743,7 +743,7 @@ fn ideal_restitution(law: &PairLaw) -> f64 {
     match law.kind {
         LawKind::Linear | LawKind::ApparentLinear => damping::linear_contact(law.damping_ratio).1,
         LawKind::Hertz => damping::hertz_contact(law.damping_ratio).1,
-        LawKind::HertzMindlin => law.restitution,
+        LawKind::HertzMindlin | LawKind::HertzMindlinCoulomb => law.restitution,
         LawKind::HookeHistory => {
             // e = exp(-γ_n π / (2 ω)) for a pair of unit effective mass scale: γ_n and k_n/m*
             // both enter; report the value for m* = 1 (scenarios do not use this law).

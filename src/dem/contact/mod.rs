@@ -123,6 +123,7 @@ pub struct Reaction {
 pub fn contact_force(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
     match law.kind {
         LawKind::HertzMindlin => hertz_mindlin::force(law, p, hist, dt),
+        LawKind::HertzMindlinCoulomb => hertz_mindlin::coulomb_force(law, p, hist, dt),
         LawKind::HookeHistory => hooke::force(law, p, hist, dt),
         _ => voigt::force(law, p, hist, dt),
     }
