@@ -34,6 +34,7 @@ fn ensemble_members_side_by_side_give_the_bits_they_give_alone() {
     assert!(md.contains("Ensemble of 2 independent beds"), "{md}");
     assert!(md.contains("(a) **UNDECIDED.**"), "{md}");
     assert!(a.join("sheet_flow_ensemble_centroids.png").exists());
+    assert!(a.join("sheet_flow_ensemble_centroid_changes.png").exists());
     assert!(a.join("sheet_flow_ensemble_small.png").exists());
     assert!(
         a.join("sheet_flow_quick_seed2.bin").exists(),

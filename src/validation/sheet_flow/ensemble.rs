@@ -211,8 +211,15 @@ pub fn summarise_ensemble(runs: &[SheetFlowRun]) -> EnsembleSummary {
 }
 
 /// The mean curve of class `c`'s centroid [d1] over the members on the times `k dt` up to
-/// the shortest member's end, with its standard error: (t, mean, SE).
-pub fn mean_centroid(runs: &[SheetFlowRun], c: usize, dt: f64) -> Vec<(f64, f64, f64)> {
+/// the shortest member's end, with its standard error: (t, mean, SE). With `from_start`, of
+/// each member's change since t = 0 (the beds start at different heights; the change is what
+/// the criteria judge, and its spread is much smaller).
+pub fn mean_centroid(
+    runs: &[SheetFlowRun],
+    c: usize,
+    dt: f64,
+    from_start: bool,
+) -> Vec<(f64, f64, f64)> {
     let end = runs
         .iter()
         .map(|r| r.samples.last().map_or(0.0, |p| p.time))
@@ -230,7 +237,10 @@ pub fn mean_centroid(runs: &[SheetFlowRun], c: usize, dt: f64) -> Vec<(f64, f64,
         .map(|k| k as f64 * dt)
         .take_while(|&t| t <= end + 1e-9 && t <= 2.0 * PERIOD)
         .map(|t| {
-            let e = Estimate::of(&curves.iter().map(|c| at_time(c, t)).collect::<Vec<_>>());
+            let at = |c: &Vec<(f64, f64)>| {
+                at_time(c, t) - if from_start { at_time(c, 0.0) } else { 0.0 }
+            };
+            let e = Estimate::of(&curves.iter().map(at).collect::<Vec<_>>());
             (t, e.mean, e.se)
         })
         .collect()
@@ -313,10 +323,13 @@ mod tests {
     #[test]
     fn the_mean_curve_and_its_error_follow_the_members() {
         let runs = [member(|_| 4.0, 0.0), member(|_| 5.0, 0.0)];
-        let c = mean_centroid(&runs, 0, PERIOD / 8.0);
+        let c = mean_centroid(&runs, 0, PERIOD / 8.0, false);
         assert_eq!(c.len(), 5, "φ = 0 … π in steps of π/4");
         for (_, m, se) in c {
             assert!((m - 4.5).abs() < 1e-12 && (se - 0.5).abs() < 1e-12);
+        }
+        for (_, m, se) in mean_centroid(&runs, 0, PERIOD / 8.0, true) {
+            assert!(m == 0.0 && se == 0.0, "no change since the start");
         }
     }
 

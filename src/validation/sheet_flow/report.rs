@@ -384,6 +384,17 @@ fn est(e: Option<Estimate>) -> String {
     e.map_or("–".to_string(), |e| e.text())
 }
 
+/// `±x̄ ± SE` of an optional change, or a dash.
+fn change(e: Option<Estimate>) -> String {
+    e.map_or("–".to_string(), |e| e.signed())
+}
+
+/// The phase kπ/4 as a person writes it: 0, π/4, π/2, 3π/4, π, …
+fn phase_label(k: usize) -> String {
+    const NAMES: [&str; 9] = ["0", "π/4", "π/2", "3π/4", "π", "5π/4", "3π/2", "7π/4", "2π"];
+    NAMES.get(k).map_or(format!("{k}π/4"), |n| n.to_string())
+}
+
 /// The outline of the band mean ± SE of a curve (t, mean, SE), with t as phase φ/π.
 fn band(curve: &[(f64, f64, f64)]) -> Vec<(f64, f64)> {
     let up = curve.iter().map(|&(t, m, e)| (phase(t), m + e));
@@ -447,8 +458,8 @@ pub fn write_ensemble_report(
     for p in &sum.phases {
         let _ = writeln!(
             md,
-            "| {}π/4 | {} | {} | {} | {} | {} |",
-            p.k,
+            "| {} | {} | {} | {} | {} | {} |",
+            phase_label(p.k),
             p.centroid[0].text(),
             p.centroid[1].text(),
             p.centroid[2].text(),
@@ -472,11 +483,11 @@ pub fn write_ensemble_report(
          over 5π/8…π; |after| − |fall| member by member {} d1 (bounds {}; criterion: below 0, \
          members needed: {}).",
         sum.sinking.text(),
-        est(sum.fall),
+        change(sum.fall),
         bound(sum.fall),
         needed(sum.fall, -0.1),
-        est(sum.after),
-        est(sum.level_off),
+        change(sum.after),
+        change(sum.level_off),
         bound(sum.level_off),
         needed(sum.level_off, 0.0),
     );
@@ -488,7 +499,7 @@ pub fn write_ensemble_report(
         sum.sieving.text(),
         sum.gap_start.text(),
         sum.gap_end.text(),
-        sum.gap_change.text(),
+        sum.gap_change.signed(),
         sum.gap_change.lower(),
         sum.gap_change.upper()
     );
@@ -499,32 +510,53 @@ pub fn write_ensemble_report(
         runs.len(),
         if ok { "pass" } else { "FAIL" }
     );
-    // The mean centroids with their bands.
+    // The mean centroids with their bands: the heights, and their changes since the start.
     let dt = PERIOD / 80.0;
-    let curves: Vec<Vec<(f64, f64, f64)>> = (0..3).map(|c| mean_centroid(runs, c, dt)).collect();
-    let bands: Vec<Vec<(f64, f64)>> = curves.iter().map(|c| band(c)).collect();
-    let means: Vec<Vec<(f64, f64)>> = curves
-        .iter()
-        .map(|c| c.iter().map(|&(t, m, _)| (phase(t), m)).collect())
-        .collect();
-    let labels = ["small (d1)", "medium (d2)", "large (d3)"];
-    let mut series = Vec::new();
-    for c in 0..3 {
-        series.push(Series::new("", &bands[c], LineStyle::Band));
-        series.push(Series::new(labels[c], &means[c], LineStyle::Line));
+    let mut means = Vec::new();
+    for (from_start, name, title, y) in [
+        (
+            false,
+            "centroids",
+            "Sheet flow: concentration centroids, ensemble mean ± standard error",
+            "z_c / d1",
+        ),
+        (
+            true,
+            "centroid_changes",
+            "Sheet flow: change of the centroids since the start, mean ± standard error",
+            "(z_c − z_c(0)) / d1",
+        ),
+    ] {
+        let curves: Vec<Vec<(f64, f64, f64)>> = (0..3)
+            .map(|c| mean_centroid(runs, c, dt, from_start))
+            .collect();
+        let bands: Vec<Vec<(f64, f64)>> = curves.iter().map(|c| band(c)).collect();
+        let lines: Vec<Vec<(f64, f64)>> = curves
+            .iter()
+            .map(|c| c.iter().map(|&(t, m, _)| (phase(t), m)).collect())
+            .collect();
+        let labels = ["small (d1)", "medium (d2)", "large (d3)"];
+        let mut series = Vec::new();
+        for c in 0..3 {
+            series.push(Series::new("", &bands[c], LineStyle::Band));
+            series.push(Series::new(labels[c], &lines[c], LineStyle::Line));
+        }
+        let png = format!("{prefix}_ensemble_{name}.png");
+        line_plot(
+            &out.join(&png),
+            &Axes {
+                title,
+                x_label: "phase φ/π",
+                y_label: y,
+                log_y: false,
+            },
+            &series,
+        )?;
+        let _ = writeln!(md, "![ensemble {name}]({png})\n");
+        if !from_start {
+            means = lines;
+        }
     }
-    let png = format!("{prefix}_ensemble_centroids.png");
-    line_plot(
-        &out.join(&png),
-        &Axes {
-            title: "Sheet flow: concentration centroids, ensemble mean ± standard error",
-            x_label: "phase φ/π",
-            y_label: "z_c / d1",
-            log_y: false,
-        },
-        &series,
-    )?;
-    let _ = writeln!(md, "![ensemble centroids]({png})\n");
     let members: Vec<(String, Vec<(f64, f64)>)> = runs
         .iter()
         .map(|r| {
@@ -558,15 +590,15 @@ pub fn write_ensemble_report(
 }
 
 /// Writes the sensitivity table of ensembles: the base (its first half period) and each
-/// variant, criterion (a)'s windows as mean ± SE, the largest difference of the mean
-/// centroid curves from the base's over the first half period, and a plot of the mean small
-/// class of each with its band.
+/// variant, criterion (a)'s windows as mean ± SE, the largest difference of the mean change
+/// of the centroids since the start from the base's over the first half period, and a plot of
+/// the small class's mean change in each with its band.
 pub fn write_ensemble_sensitivity(
     out: &Path,
     ensembles: &[(String, Vec<SheetFlowRun>)],
 ) -> anyhow::Result<String> {
     let mut md = String::from(
-        "| ensemble | members | Δ [mm] | (a) small 2π/8…5π/8 [d1] | 5π/8…π [d1] | (a) | largest Δ of the mean z_c from the base, small [d1] | medium [d1] | large [d1] | wall-clock per member [s] |\n\
+        "| ensemble | members | Δ [mm] | (a) small 2π/8…5π/8 [d1] | 5π/8…π [d1] | (a) | largest difference of the mean change of z_c from the base's, small [d1] | medium [d1] | large [d1] | wall-clock per member [s] |\n\
          |---|---:|---:|---:|---:|---|---:|---:|---:|---:|\n",
     );
     let dt = PERIOD / 80.0;
@@ -579,14 +611,19 @@ pub fn write_ensemble_sensitivity(
     let base: Option<Vec<Vec<(f64, f64, f64)>>> = ensembles
         .first()
         .filter(|(n, _)| n == super::Level::FULL.name)
-        .map(|(_, r)| (0..3).map(|c| half(mean_centroid(r, c, dt))).collect());
+        .map(|(_, r)| {
+            (0..3)
+                .map(|c| half(mean_centroid(r, c, dt, true)))
+                .collect()
+        });
     // (name, band, mean) of the small class per ensemble.
     type Points = Vec<(f64, f64)>;
     let mut plots: Vec<(&str, Points, Points)> = Vec::new();
     for (name, runs) in ensembles {
         let s = summarise_ensemble(runs);
-        let mine: Vec<Vec<(f64, f64, f64)>> =
-            (0..3).map(|c| half(mean_centroid(runs, c, dt))).collect();
+        let mine: Vec<Vec<(f64, f64, f64)>> = (0..3)
+            .map(|c| half(mean_centroid(runs, c, dt, true)))
+            .collect();
         let diff: Vec<String> = (0..3)
             .map(|c| match &base {
                 Some(base) if name != super::Level::FULL.name => {
@@ -606,8 +643,8 @@ pub fn write_ensemble_sensitivity(
             "| {name} | {} | {:.4} | {} | {} | {} | {} | {} | {} | {:.0} |",
             runs.len(),
             runs.first().map_or(0.0, |r| r.cell_size) * 1e3,
-            est(s.fall),
-            est(s.after),
+            change(s.fall),
+            change(s.after),
             s.sinking.text(),
             diff[0],
             diff[1],
@@ -625,9 +662,9 @@ pub fn write_ensemble_sensitivity(
     line_plot(
         &out.join("sheet_flow_sensitivity.png"),
         &Axes {
-            title: "Sheet flow: small class, ensemble mean ± SE, base and variants",
+            title: "Sheet flow: small class, change since the start, mean ± SE, base and variants",
             x_label: "phase φ/π",
-            y_label: "z_c / d1",
+            y_label: "(z_c − z_c(0)) / d1",
             log_y: false,
         },
         &series,

@@ -73,6 +73,11 @@ impl Estimate {
 
     /// `x̄ ± SE` with three decimals.
     pub fn text(&self) -> String {
+        format!("{:.3} ± {:.3}", self.mean, self.se)
+    }
+
+    /// `x̄ ± SE` with three decimals and the sign of x̄ always written (for changes).
+    pub fn signed(&self) -> String {
         format!("{:+.3} ± {:.3}", self.mean, self.se)
     }
 }
