@@ -57,7 +57,8 @@ pub fn check(src: &Source) -> Result<Derived, ScenarioError> {
     build_or_check(src, false).map(|(_, derived)| derived)
 }
 
-/// Checks the scenario and, with `run`, builds the simulation.
+/// Checks the scenario and, with `run`, builds the simulation: the parts in the order of
+/// the checks (`granular`, then `parts`), the report from them, then the simulation.
 fn build_or_check(src: &Source, run: bool) -> Result<(Option<Simulation>, Derived), ScenarioError> {
     let parts = parts(src, run)?;
     let (min_period, coupling) = (parts.report.steps.min_period, parts.report.coupling);
@@ -107,7 +108,8 @@ struct Parts {
     report: Report,
 }
 
-/// The pieces of `riprap check`'s report, as the steps make them.
+/// The pieces of `riprap check`'s report, as the steps make them (`granular` the first ones,
+/// `parts` the block lines, the flow's and the coupling's).
 struct Report {
     v_ref: f64,
     memory: MemoryEstimate,
@@ -369,5 +371,28 @@ fn derived(src: &Source, dem: &Dem, blocks: usize, r: Report) -> Derived {
         fluid: r.fluid,
         mesh_lines: mesh_lines(src, &dem.walls),
         output,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dem::neighbor::DEFAULT_SKIN_FRACTION;
+
+    /// Issue 27: the default skin, 0.2 of the largest diameter, was written twice (for
+    /// scenarios and for a `Dem` made by hand); both now take `DEFAULT_SKIN_FRACTION`.
+    #[test]
+    fn a_scenario_and_a_hand_made_dem_get_the_same_default_skin() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
+        let text = std::fs::read_to_string(dir.join("single_impact.toml")).unwrap();
+        let src = Source::from_str(&text, "single_impact.toml", dir).unwrap();
+        assert_eq!(src.scenario.run.skin_fraction, None);
+        let built = build(&src).unwrap().simulation;
+        // One sphere of diameter 1 cm.
+        assert_eq!(built.dem.neighbors.skin, DEFAULT_SKIN_FRACTION * 0.01);
+        let mut dem = built.dem.clone();
+        dem.neighbors.skin = 0.0;
+        let by_hand = Simulation::new(dem, Vec::new(), 1.0);
+        assert_eq!(by_hand.dem.neighbors.skin, built.dem.neighbors.skin);
     }
 }
