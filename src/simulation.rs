@@ -37,6 +37,7 @@ use crate::dem::contacts::SavedContact;
 use crate::dem::forces::{compute_forces, start_forces, Kick};
 use crate::dem::insertion::Feeder;
 use crate::dem::integrate::{half_kick, open_step, Opener, Opening};
+use crate::dem::neighbor::DEFAULT_SKIN_FRACTION;
 use crate::dem::spheres::Spheres;
 use crate::dem::timestep::MIN_STEPS_PER_PERIOD;
 use crate::dem::wall_contacts::SavedWallContacts;
@@ -109,7 +110,7 @@ impl Simulation {
                 .radius
                 .iter()
                 .fold(0.0f64, |a, &r| a.max(2.0 * r));
-            dem.neighbors.skin = 0.2 * d_max;
+            dem.neighbors.skin = DEFAULT_SKIN_FRACTION * d_max;
         }
         // Along periodic axes, positions are kept inside the box (the pair loops rely on it).
         let domain = dem.domain;

@@ -7,7 +7,7 @@
 //! chains that climb to the crate root) outside comments, and fails on each one the map does
 //! not allow. Comments are skipped: a doc comment may point anywhere without a dependency.
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The map: each top-level module and the modules it may use (those to its left).
@@ -317,5 +317,148 @@ fn glam_types_go_by_the_names_math_gives_them() {
         bad.is_empty(),
         "glam's names outside math.rs:\n{}",
         bad.join("\n")
+    );
+}
+
+/// The modules directly inside `src/scenario/` (a file's stem, or a folder's name) and, for
+/// each, the siblings its files name with their first `file:line`. `mod.rs` is the parent
+/// that declares them all (and gives them `Source` and `ScenarioError`), so it is left out.
+fn scenario_siblings(src: &Path) -> BTreeMap<String, BTreeMap<String, String>> {
+    let dir = src.join("scenario");
+    let mut files = Vec::new();
+    rust_files(&dir, &mut files);
+    let mut graph: BTreeMap<String, BTreeMap<String, String>> = BTreeMap::new();
+    for f in &files {
+        let module = module_path(f.strip_prefix(src).unwrap());
+        if module.len() > 1 {
+            graph.entry(module[1].clone()).or_default();
+        }
+    }
+    let siblings: BTreeSet<String> = graph.keys().cloned().collect();
+    for f in &files {
+        let rel = f.strip_prefix(src).unwrap();
+        let module = module_path(rel);
+        if module.len() < 2 {
+            continue;
+        }
+        let text = std::fs::read_to_string(f).unwrap();
+        for (line, name) in sibling_uses(&text, module.len() - 1) {
+            if name != module[1] && siblings.contains(&name) {
+                graph
+                    .get_mut(&module[1])
+                    .unwrap()
+                    .entry(name)
+                    .or_insert_with(|| format!("src/{}:{line}", rel.display()));
+            }
+        }
+    }
+    graph
+}
+
+/// The modules of `scenario` a file's code names: `crate::scenario::x`, or `super::` chains
+/// of `up` steps (a file `depth` below `scenario`) followed by `x`. Comments are skipped.
+fn sibling_uses(text: &str, up: usize) -> Vec<(usize, String)> {
+    let code: String = text
+        .lines()
+        .map(|l| {
+            if l.trim_start().starts_with("//") {
+                ""
+            } else {
+                l.split(" // ").next().unwrap_or("")
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let line_of = |at: usize| code[..at].matches('\n').count() + 1;
+    let starts_a_path = |at: usize| {
+        !code[..at].ends_with("::")
+            && !code[..at].ends_with(|c: char| c.is_alphanumeric() || c == '_')
+    };
+    let mut used = Vec::new();
+    let climb = "super::".repeat(up);
+    for (at, _) in code.match_indices("crate::scenario::") {
+        if starts_a_path(at) {
+            for name in roots_after_crate(&code[at + "crate::scenario::".len()..]) {
+                used.push((line_of(at), name));
+            }
+        }
+    }
+    for (at, _) in code.match_indices(&climb) {
+        let rest = &code[at + climb.len()..];
+        if starts_a_path(at) && !rest.starts_with("super::") {
+            for name in roots_after_crate(rest) {
+                used.push((line_of(at), name));
+            }
+        }
+    }
+    used
+}
+
+/// The shortest chain of imports `from` → .. → `to` (both included), if there is one.
+fn shortest_way<'a>(
+    graph: &'a BTreeMap<String, BTreeMap<String, String>>,
+    from: &'a str,
+    to: &str,
+) -> Option<Vec<&'a str>> {
+    let mut before: BTreeMap<&str, &str> = BTreeMap::new();
+    let mut queue = std::collections::VecDeque::from([from]);
+    while let Some(x) = queue.pop_front() {
+        if x == to {
+            let mut way = vec![x];
+            while let Some(&p) = before.get(way[way.len() - 1]) {
+                way.push(p);
+            }
+            way.reverse();
+            return Some(way);
+        }
+        for y in graph[x].keys() {
+            if y != from && !before.contains_key(y.as_str()) {
+                before.insert(y, x);
+                queue.push_back(y);
+            }
+        }
+    }
+    None
+}
+
+/// Issue 27: `scenario/build.rs` held the check helpers that `spheres.rs`, `blocks.rs`,
+/// `fluid/` and `coupling.rs` import, while it imported them: a circle of imports inside
+/// `scenario/`. Every import between the scenario's files must now go one way (no cycle of
+/// any length), so that each file can be read knowing only the ones it names.
+#[test]
+fn no_two_scenario_files_import_each_other() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let graph = scenario_siblings(&src);
+    // For each import a → b, the shortest way back b → .. → a closes a cycle.
+    let mut cycles = BTreeSet::new();
+    for (a, uses) in &graph {
+        for b in uses.keys() {
+            if let Some(back) = shortest_way(&graph, b, a) {
+                let mut cycle: Vec<&str> = vec![a.as_str()];
+                cycle.extend(&back[..back.len() - 1]);
+                // One cycle, whichever of its modules it is read from.
+                let least = (0..cycle.len()).min_by_key(|&i| cycle[i]).unwrap();
+                cycle.rotate_left(least);
+                cycles.insert(cycle);
+            }
+        }
+    }
+    let lines: Vec<String> = cycles
+        .iter()
+        .map(|c| {
+            let steps: Vec<String> = (0..c.len())
+                .map(|i| {
+                    let (a, b) = (c[i], c[(i + 1) % c.len()]);
+                    format!("{a} uses {b} ({})", graph[a][b])
+                })
+                .collect();
+            steps.join(", ")
+        })
+        .collect();
+    assert!(
+        lines.is_empty(),
+        "{} import cycle(s) between the files of src/scenario/:\n{}",
+        lines.len(),
+        lines.join("\n")
     );
 }

@@ -170,8 +170,8 @@ impl Dem {
 impl Dem {
     /// A granular phase with no spheres nor walls, for research code and tests: the laws
     /// between all pairs of `materials` follow `model`. Gravity is (0, 0, -9.81) m s⁻²; the
-    /// neighbour skin is set to 0.2 of the largest diameter when the simulation starts, unless
-    /// set before.
+    /// neighbour skin is set to `neighbor::DEFAULT_SKIN_FRACTION` of the largest diameter when
+    /// the simulation starts, unless set before.
     pub fn new(
         materials: Vec<Material>,
         model: material::ContactModel,

@@ -60,6 +60,11 @@ struct ChunkOut {
     count: Vec<u32>,
 }
 
+/// The Verlet skin, as a fraction of the largest sphere diameter, when none is set (a
+/// scenario's `run.skin_fraction`, a `Dem` built by hand): thick enough that lists last many
+/// steps, thin enough that few pairs are listed in vain.
+pub const DEFAULT_SKIN_FRACTION: f64 = 0.2;
+
 /// A Verlet neighbour list that also keeps the spheres sorted by cell.
 #[derive(Clone, Debug, Default)]
 pub struct NeighborList {

@@ -158,6 +158,14 @@ impl BlockTemplate {
         self.volume.cbrt()
     }
 
+    /// Radius of the smallest sphere about the centre that holds the whole block [m].
+    pub fn bounding_radius(&self) -> f64 {
+        self.members
+            .iter()
+            .map(|m| m.offset.length() + m.radius)
+            .fold(0.0, f64::max)
+    }
+
     /// Mass M = ρ_s V [kg] at density ρ_s [kg m⁻³].
     pub fn mass(&self, density: f64) -> f64 {
         density * self.volume

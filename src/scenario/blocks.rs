@@ -1,7 +1,7 @@
 //! Rigid blocks of a scenario: templates, block sets (list, lattice, random drop), wires and
 //! bonds, with the checks on where blocks start.
 
-use super::build::{finite, material_of, non_negative, positive};
+use super::checks::{finite, material_of, non_negative, positive};
 use super::schema::{
     v3, BlockSet, BlockTemplateSection, BondBetween, LatticeBlocks, ListBlocks, RandomBlocks,
     ShapeName,
@@ -22,14 +22,6 @@ use crate::rigid::templates::BlockTemplate;
 
 /// The most candidate places a random block set may make (24 B each).
 const MAX_PLACES: f64 = 1e7;
-
-/// Radius of the smallest sphere about the centre that holds the whole block [m].
-pub fn bounding_radius(t: &BlockTemplate) -> f64 {
-    t.members
-        .iter()
-        .map(|m| m.offset.length() + m.radius)
-        .fold(0.0, f64::max)
-}
 
 /// A uniformly distributed random orientation (Shoemake 1992).
 fn random_orientation(rng: &mut Rng) -> Quat {
@@ -209,7 +201,7 @@ pub(super) fn build_blocks(
         let material = template_material[t];
         let density = materials[material as usize].density;
         let tpl = &rigid.templates[t];
-        let r_b = bounding_radius(tpl);
+        let r_b = tpl.bounding_radius();
         let axes = tpl.principal_axes;
         let mut placed: Vec<RigidState> = Vec::new();
         match set {

@@ -12,7 +12,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::build::positive;
+use super::checks::positive;
 use super::text::sig4;
 use super::{ScenarioError, Source};
 use crate::coupling::{CouplingMode, CouplingParameters, DragLaw};

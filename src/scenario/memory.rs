@@ -200,9 +200,7 @@ pub(super) fn estimate(
             ),
             BlockSet::Lattice(l) => {
                 let t = template_of(&l.template);
-                let s = l
-                    .spacing
-                    .or_else(|| t.map(|t| 2.0 * super::blocks::bounding_radius(t)));
+                let s = l.spacing.or_else(|| t.map(|t| 2.0 * t.bounding_radius()));
                 let n = s.map_or(0.0, |s| lattice_sites(l.min, l.max, s));
                 (format!("{key}.spacing"), n, t)
             }

@@ -4,15 +4,21 @@
 
 mod blocks;
 mod build;
+mod checks;
+mod contact;
 pub mod coupling;
 pub mod default;
+mod derived;
 pub mod fluid;
 pub mod memory;
 pub mod output_size;
+mod pairings;
 pub mod schema;
+mod settings;
 mod spheres;
 pub mod text;
 mod wall_overlaps;
+mod walls;
 
 use std::ops::Range;
 use std::path::{Path, PathBuf};
@@ -20,7 +26,8 @@ use std::path::{Path, PathBuf};
 use toml::de::{DeTable, DeValue, ValueDeserializer};
 use toml::Spanned;
 
-pub use build::{build, check, Built, Derived};
+pub use build::{build, check, Built};
+pub use derived::Derived;
 pub use fluid::FluidDerived;
 pub use schema::Scenario;
 

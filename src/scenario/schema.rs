@@ -64,7 +64,8 @@ pub struct RunSection {
     /// Impact velocity that sets the Hertz contact time and the apparent linear spring [m s⁻¹];
     /// default √(2 g H) with H the domain height (at least 0.5 m/s).
     pub reference_velocity: Option<f64>,
-    /// Verlet skin as a fraction of the largest diameter [-] (default 0.2).
+    /// Verlet skin as a fraction of the largest diameter [-] (default
+    /// `dem::neighbor::DEFAULT_SKIN_FRACTION`, 0.2).
     pub skin_fraction: Option<f64>,
     /// Largest plausible sphere speed [m s⁻¹] (default 20 × `reference_velocity`).
     pub max_speed: Option<f64>,

@@ -1,7 +1,7 @@
 //! Sphere sets of a scenario: lists, lattices, random fills and feeders, with the checks on
 //! initial positions (inside the domain, on the right side of walls, not overlapping).
 
-use super::build::{finite, material_of, material_or_default, non_negative, positive};
+use super::checks::{finite, material_of, material_or_default, non_negative, positive};
 use super::schema::{
     v3, FeedSet, FileSet, LatticeSet, ListSet, RandomSet, SizeSection, SphereSet, WallSection,
 };

@@ -12,7 +12,7 @@ use crate::fluid::{
     Smagorinsky, StaggeredGrid, TimeStepLimits,
 };
 use crate::math::Vec3;
-use crate::scenario::build::{finite, positive};
+use crate::scenario::checks::{finite, positive};
 use crate::scenario::{ScenarioError, Source};
 
 /// Water at 20 °C [kg m⁻³], [m² s⁻¹].
