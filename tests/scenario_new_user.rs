@@ -175,3 +175,43 @@ restitution_coefficient = 0.2
     assert!(line("wall rock").contains("μ 0.500, e 0.200"), "{report}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The contact-law choices of issue 27 from a scenario: `tangential_stiffness = "mindlin"`
+/// gives Mindlin's ratio and `check` says which ratio is in use and why it matters;
+/// `hertz_mindlin` is the law with the Coulomb limit kept and `hertz_mindlin_liggghts`
+/// LIGGGHTS's own; a tangential stiffness for Hertz-Mindlin is refused naming the key.
+#[test]
+fn contact_law_choices_reach_the_law_and_check_names_them() {
+    use riprap::dem::material::LawKind;
+    let dir = temp_dir("law_choices");
+    let build_with = |contact: &str| {
+        let text = format!("{BASE}{ONE_SPHERE}\n[contact]\n{contact}\n");
+        let src = Source::from_str(&text, "case.toml", dir.clone()).unwrap();
+        let report = riprap::scenario::check(&src).unwrap().report();
+        (build(&src).unwrap().simulation.dem.laws[0], report)
+    };
+    let (source, report) = build_with("model = \"hertz\"");
+    assert!(
+        (source.tangential_ratio - 1.0 / 2.5).abs() < 1e-15,
+        "ν = 0.25"
+    );
+    assert!(
+        report.contains("tangential_stiffness = \"mindlin\" gives Mindlin's"),
+        "{report}"
+    );
+    let (mindlin, report) = build_with("model = \"hertz\"\ntangential_stiffness = \"mindlin\"");
+    assert!((mindlin.tangential_ratio - 1.5 / 1.75).abs() < 1e-15);
+    assert!(report.contains("k_t/k_n = 0.857, Mindlin's"), "{report}");
+    let (hm, report) = build_with("model = \"hertz_mindlin\"");
+    assert_eq!(hm.kind, LawKind::HertzMindlinCoulomb);
+    assert!(report.contains("Coulomb limit kept"), "{report}");
+    let (liggghts, _) = build_with("model = \"hertz_mindlin_liggghts\"");
+    assert_eq!(liggghts.kind, LawKind::HertzMindlin);
+    refused(
+        &format!("{ONE_SPHERE}\n[contact]\nmodel = \"hertz_mindlin\"\ntangential_stiffness = \"mindlin\"\n"),
+        "tangential_stiffness = ",
+        "contact.tangential_stiffness",
+        &["only the Voigt laws"],
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -2,9 +2,11 @@
 //! of every pairing of two of them.
 
 use super::checks::{material_of, non_negative, positive, restitution};
-use super::schema::{ContactSection, DampingName, MaterialSection, ModelName};
+use super::schema::{ContactSection, DampingName, MaterialSection, ModelName, TangentialName};
 use super::{ScenarioError, Source};
-use crate::dem::material::{ContactModel, Damping, Material, NormalSpring, PairLaw, PairOverride};
+use crate::dem::material::{
+    ContactModel, Damping, Material, NormalSpring, PairLaw, PairOverride, TangentialStiffness,
+};
 
 /// The scenario's materials, by index, and their names (for look-ups and messages).
 pub(super) struct Materials {
@@ -126,8 +128,20 @@ fn contact_model(
         DampingName::Critical => Damping::Critical,
         DampingName::Restitution => Damping::Restitution,
     };
+    let voigt = !matches!(
+        c.model,
+        ModelName::HertzMindlin | ModelName::HertzMindlinLiggghts
+    );
+    if c.tangential_stiffness.is_some() && !voigt {
+        return Err(src.invalid(
+            "contact.tangential_stiffness",
+            "only the Voigt laws (hertz, linear, apparent_linear_hertz) take it; Hertz-Mindlin's \
+             tangential stiffness is Mindlin's already (8 G* a)",
+        ));
+    }
     let spring = match c.model {
-        ModelName::HertzMindlin => return Ok(ContactModel::HertzMindlin),
+        ModelName::HertzMindlin => return Ok(ContactModel::HertzMindlinCoulomb),
+        ModelName::HertzMindlinLiggghts => return Ok(ContactModel::HertzMindlin),
         ModelName::Hertz => NormalSpring::Hertz,
         ModelName::ApparentLinearHertz => NormalSpring::ApparentLinearHertz {
             reference_velocity: v_ref,
@@ -155,6 +169,9 @@ fn contact_model(
     Ok(ContactModel::Voigt {
         spring,
         damping,
-        tangential: Default::default(),
+        tangential: match c.tangential_stiffness.unwrap_or_default() {
+            TangentialName::Source => TangentialStiffness::Source,
+            TangentialName::Mindlin => TangentialStiffness::Mindlin,
+        },
     })
 }

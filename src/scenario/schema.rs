@@ -99,8 +99,24 @@ pub enum ModelName {
     Hertz,
     /// Apparent linear Hertz spring [18][19].
     ApparentLinearHertz,
-    /// LIGGGHTS/LAMMPS Hertz-Mindlin with tangential history.
+    /// Hertz-Mindlin with tangential history and the Coulomb limit on the whole tangential
+    /// force, no tension (`contact::hertz_mindlin::coulomb_force`).
     HertzMindlin,
+    /// Hertz-Mindlin exactly as LIGGGHTS computes it (`model hertz tangential history`), the
+    /// benchmarks' law: its friction can exceed μ F_n while a contact forms and ends.
+    HertzMindlinLiggghts,
+}
+
+/// The tangential spring of the Voigt laws against the normal one (`[contact]
+/// tangential_stiffness`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TangentialName {
+    /// k_t/k_n = 1/(2(1 + ν)), the source's [20].
+    #[default]
+    Source,
+    /// k_t/k_n = 2(1 − ν)/(2 − ν), Mindlin's.
+    Mindlin,
 }
 
 /// Which dashpots (Voigt laws only).
@@ -126,6 +142,8 @@ pub struct ContactSection {
     pub damping: DampingName,
     /// Normal stiffness for `linear` [N m⁻¹].
     pub stiffness: Option<f64>,
+    /// Tangential spring of the Voigt laws (`source`, the default, or `mindlin`).
+    pub tangential_stiffness: Option<TangentialName>,
     /// Per-pair values.
     #[serde(default, rename = "pair")]
     pub pairs: Vec<PairSection>,
