@@ -27,11 +27,12 @@ use rayon::prelude::*;
 use super::integrate::{self, Opener, Opening};
 use super::par::{for_chunks, MIN_SPHERES_PER_TASK};
 use super::spheres::Spheres;
-use super::wall_contacts::CHUNK;
+use super::wall_contacts::{MoreSlots, WallEntry, CHUNK};
+use super::walls::WallContact;
 use super::Dem;
 use crate::math::Vec3;
 use pair_kernel::PairContext;
-use wall_kernel::{Entries, WallContext};
+use wall_kernel::{Chunk, WallContext};
 
 /// What the sphere pass does after the forces, during a step.
 #[derive(Clone, Copy, Debug)]
@@ -335,6 +336,14 @@ type Hist<'a> = (&'a mut [Vec3], &'a mut [u8]);
 /// Two mutable vector columns.
 type Pair2<'a> = (&'a mut [Vec3], &'a mut [Vec3]);
 
+/// A chunk's wall entries and their history slots (the first, and the others), as the
+/// chunks are split (`par::for_chunks` splits tuples of slices).
+type Entries<'a> = (
+    &'a mut [WallEntry],
+    &'a mut [WallContact],
+    &'a mut [MoreSlots],
+);
+
 /// Pass 2: walls, then the closing half kick and the checks, sphere by sphere.
 fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
     let n = dem.spheres.len();
@@ -372,8 +381,19 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
     let leaf = |c: usize, ((f, tq), (v, w), x): (Pair2, Pair2, &mut [Vec3]), ents: Entries| {
         let i0 = c * CHUNK;
         let mut tally = Tally::ZERO;
-        let state = (&x[..], &v[..], &w[..]);
-        walls.run(i0, ents, state, (&mut *f, &mut *tq), &mut tally);
+        let (entries, first, more) = ents;
+        let chunk = Chunk {
+            i0,
+            entries,
+            first,
+            more,
+            x,
+            v,
+            w,
+            f,
+            tq,
+        };
+        walls.run(chunk, &mut tally);
         // The closing half kick and the checks, then the next step's opening if asked.
         if let Some(kick) = kick {
             let n = f.len();

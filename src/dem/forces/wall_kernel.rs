@@ -29,38 +29,37 @@ pub(super) struct WallContext<'a> {
     pub(super) dt: f64,
 }
 
-/// Positions, velocities and angular velocities of a chunk's spheres.
-pub(super) type State<'c> = (&'c [Vec3], &'c [Vec3], &'c [Vec3]);
-
-/// A chunk's wall entries and their history slots: the first, and the others.
-pub(super) type Entries<'c> = (
-    &'c mut [WallEntry],
-    &'c mut [WallContact],
-    &'c mut [MoreSlots],
-);
-
-/// A chunk's history slots, as the flush writes them.
-type Slots<'s> = (&'s mut [WallContact], &'s mut [MoreSlots]);
-
-/// Forces and torques of a chunk's spheres.
-pub(super) type Loads<'c> = (&'c mut [Vec3], &'c mut [Vec3]);
+/// A chunk's wall entries, their history slots (the first, and the others), and its spheres'
+/// state and loads (slots `i0..`), as the sphere pass hands them to [`WallContext::run`].
+pub(super) struct Chunk<'c> {
+    /// Slot of the chunk's first sphere.
+    pub(super) i0: usize,
+    /// The chunk's wall entries.
+    pub(super) entries: &'c mut [WallEntry],
+    /// The first history slot of each entry.
+    pub(super) first: &'c mut [WallContact],
+    /// The other history slots of each entry.
+    pub(super) more: &'c mut [MoreSlots],
+    /// Positions [m], velocities [m s⁻¹] and angular velocities [rad s⁻¹].
+    pub(super) x: &'c [Vec3],
+    /// See [`Chunk::x`].
+    pub(super) v: &'c [Vec3],
+    /// See [`Chunk::x`].
+    pub(super) w: &'c [Vec3],
+    /// Forces [N] and torques [N m], added to.
+    pub(super) f: &'c mut [Vec3],
+    /// See [`Chunk::f`].
+    pub(super) tq: &'c mut [Vec3],
+}
 
 impl WallContext<'_> {
-    /// Adds the wall contacts of the entries `ents` (with their history `slots`), whose
-    /// spheres are slots `i0..` of the chunk's `state` and `loads`, and counts them in `tally`.
-    pub(super) fn run(
-        &self,
-        i0: usize,
-        ents: Entries,
-        state: State,
-        loads: Loads,
-        tally: &mut Tally,
-    ) {
-        let args = (i0, ents, state, loads, tally);
+    /// Adds the wall contacts of the chunk's entries to its spheres' forces and torques, and
+    /// counts them in `tally`.
+    pub(super) fn run(&self, chunk: Chunk, tally: &mut Tally) {
         match uniform_kind(self.laws) {
-            Some(LawKind::HertzMindlin) => self.run_with::<HertzMindlin>(args),
-            Some(LawKind::HookeHistory) => self.run_with::<Hooke>(args),
-            _ => self.run_with::<AnyLaw>(args),
+            Some(LawKind::HertzMindlin) => self.run_with::<HertzMindlin>(chunk, tally),
+            Some(LawKind::HookeHistory) => self.run_with::<Hooke>(chunk, tally),
+            _ => self.run_with::<AnyLaw>(chunk, tally),
         }
     }
 
@@ -75,50 +74,42 @@ impl WallContext<'_> {
     ///
     /// Each sphere has its wall contacts in one entry, and receives their terms in the order
     /// of its hits, as if each contact were done from start to end before the next.
-    fn run_with<K: Kernel>(
-        &self,
-        (i0, (ents, first, more), (x, v, w), (f, tq), tally): (
-            usize,
-            Entries,
-            State,
-            Loads,
-            &mut Tally,
-        ),
-    ) {
+    fn run_with<K: Kernel>(&self, mut c: Chunk, tally: &mut Tally) {
         // Most chunks have no sphere near a wall.
-        if ents.is_empty() {
+        if c.entries.is_empty() {
             return;
         }
+        let i0 = c.i0;
         let mut b = WallBatch::new::<K>();
         let mut buf = ContactBuf::new();
         let mut hits = Hits::default();
-        for e in 0..ents.len() {
+        for e in 0..c.entries.len() {
             // The spheres of the entries are scattered over the slots: ask for the state of
             // the one four entries ahead while this one is computed (B1 on 1 thread: the wall
             // part of this pass 9.0 s -> 6.0 s over 6,000 steps).
-            if let Some(ahead) = ents.get(e + 4) {
+            if let Some(ahead) = c.entries.get(e + 4) {
                 let a = ahead.sphere as usize - i0;
-                prefetch(&x[a]);
-                prefetch(&v[a]);
-                prefetch(&w[a]);
-                prefetch(&first[e + 4]);
+                prefetch(&c.x[a]);
+                prefetch(&c.v[a]);
+                prefetch(&c.w[a]);
+                prefetch(&c.first[e + 4]);
             }
             // A sphere has at most `WALL_SLOTS` hits: make room for them all.
             if b.len > LANES - WALL_SLOTS {
-                self.flush::<K>(&mut b, (i0, (first, more), (f, tq), tally));
+                self.flush::<K>(&mut b, &mut c, tally);
             }
-            let entry = &mut ents[e];
+            let entry = &mut c.entries[e];
             let i = entry.sphere as usize;
             let k = i - i0;
             // Stage 2 adds to them when the batch is full.
-            prefetch(&f[k]);
-            prefetch(&tq[k]);
+            prefetch(&c.f[k]);
+            prefetch(&c.tq[k]);
             hits.clear();
             let r = self.radius[i];
             for nw in &self.near[entry.near.0 as usize..entry.near.1 as usize] {
                 self.walls[nw.wall as usize].contacts(
                     nw.wall,
-                    x[k],
+                    c.x[k],
                     r,
                     self.t,
                     &self.triangles[nw.tri.0 as usize..nw.tri.1 as usize],
@@ -132,11 +123,11 @@ impl WallContext<'_> {
             }
             let mut hist = [Vec3::ZERO; WALL_SLOTS];
             if hits.len <= 1 && entry.used <= 1 {
-                hist[0] = match_one(&mut first[e], hits.iter().next());
+                hist[0] = match_one(&mut c.first[e], hits.iter().next());
             } else {
-                let mut slots = join(first[e], &more[e]);
+                let mut slots = join(c.first[e], &c.more[e]);
                 match_history(&mut slots, &hits, &mut hist);
-                (first[e], more[e]) = split(&slots);
+                (c.first[e], c.more[e]) = split(&slots);
             }
             entry.used = hits.len as u32;
             // Fixed spheres have no entries (`wall_contacts::Reach`).
@@ -147,8 +138,8 @@ impl WallContext<'_> {
                 let q = b.len;
                 let l = &mut b.lanes;
                 put(&mut l.n, q, h.contact.normal);
-                put(&mut l.dv, q, v[k] - h.velocity);
-                put(&mut l.w_i, q, w[k]);
+                put(&mut l.dv, q, c.v[k] - h.velocity);
+                put(&mut l.w_i, q, c.w[k]);
                 put(&mut l.hist, q, hist[s]);
                 let delta = h.contact.overlap;
                 (l.delta[q], l.r_i[q], l.r_star[q], l.m_star[q]) = (delta, r, r, m);
@@ -163,17 +154,14 @@ impl WallContext<'_> {
             tally.dropped += hits.dropped;
         }
         if b.len > 0 {
-            self.flush::<K>(&mut b, (i0, (first, more), (f, tq), tally));
+            self.flush::<K>(&mut b, &mut c, tally);
         }
     }
 
     /// Stage 2 of `run_with`: the law on the batch, and the scatter; empties the batch.
     #[inline(never)]
-    fn flush<K: Kernel>(
-        &self,
-        b: &mut WallBatch,
-        (i0, (first, more), (f, tq), tally): (usize, Slots, Loads, &mut Tally),
-    ) {
+    fn flush<K: Kernel>(&self, b: &mut WallBatch, c: &mut Chunk, tally: &mut Tally) {
+        let (i0, first, more, f, tq) = (c.i0, &mut *c.first, &mut *c.more, &mut *c.f, &mut *c.tq);
         let len = b.len.min(LANES);
         b.len = 0;
         roots::<K>(&mut b.lanes, len);
@@ -355,9 +343,18 @@ mod tests {
         let (mut ents, mut first, mut more) =
             (wc.entries.clone(), wc.first.clone(), wc.more.clone());
         let mut tally = Tally::ZERO;
-        let state = (&s.position[..], &s.velocity[..], &s.angular_velocity[..]);
-        let entries = (&mut ents[..], &mut first[..], &mut more[..]);
-        ctx.run_with::<K>((0, entries, state, (&mut f, &mut tq), &mut tally));
+        let chunk = Chunk {
+            i0: 0,
+            entries: &mut ents,
+            first: &mut first,
+            more: &mut more,
+            x: &s.position,
+            v: &s.velocity,
+            w: &s.angular_velocity,
+            f: &mut f,
+            tq: &mut tq,
+        };
+        ctx.run_with::<K>(chunk, &mut tally);
         let slots: Vec<WallSlots> = first.iter().zip(&more).map(|(&a, b)| join(a, b)).collect();
         for (e, s) in ents.iter().zip(&slots) {
             assert_eq!(
