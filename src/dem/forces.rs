@@ -398,26 +398,25 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
         if let Some(kick) = kick {
             let n = f.len();
             let max2 = kick.max_speed * kick.max_speed;
-            let (mass, inertia, fixed) =
-                (&mass[i0..i0 + n], &inertia[i0..i0 + n], &fixed[i0..i0 + n]);
-            let motion = (
-                &mut x[..n],
-                &mut v[..n],
-                &mut w[..n],
-                &mut f[..n],
-                &mut tq[..n],
-            );
+            let props = integrate::Inertia {
+                mass: &mass[i0..i0 + n],
+                inertia: &inertia[i0..i0 + n],
+                fixed: &fixed[i0..i0 + n],
+            };
+            let motion = integrate::Motion {
+                x: &mut x[..n],
+                v: &mut v[..n],
+                w: &mut w[..n],
+                f: &mut f[..n],
+                t: &mut tq[..n],
+            };
             match &kick.open_next {
                 Some(op) => {
                     assert_eq!(0.5 * op.dt, kick.half_dt, "one Δt for both");
-                    let (bad, o) =
-                        integrate::close_and_open(op, max2, i0, motion, (mass, inertia, fixed));
+                    let (bad, o) = integrate::close_and_open(op, max2, i0, motion, props);
                     (tally.bad, tally.opening) = (bad, o);
                 }
-                None => {
-                    tally.bad =
-                        integrate::close(kick.half_dt, max2, i0, motion, (mass, inertia, fixed))
-                }
+                None => tally.bad = integrate::close(kick.half_dt, max2, i0, motion, props),
             }
         }
         tally

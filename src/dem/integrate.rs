@@ -155,17 +155,29 @@ impl Opener {
     }
 }
 
-/// The columns of a run of spheres that the closing and opening of a step write: x, v, ω, F, T.
-pub type Motion<'a> = (
-    &'a mut [Vec3],
-    &'a mut [Vec3],
-    &'a mut [Vec3],
-    &'a mut [Vec3],
-    &'a mut [Vec3],
-);
+/// The columns of a run of spheres that the closing and opening of a step write.
+pub struct Motion<'a> {
+    /// Positions x [m].
+    pub x: &'a mut [Vec3],
+    /// Velocities v [m s⁻¹].
+    pub v: &'a mut [Vec3],
+    /// Angular velocities ω [rad s⁻¹].
+    pub w: &'a mut [Vec3],
+    /// Forces F [N].
+    pub f: &'a mut [Vec3],
+    /// Torques T [N m].
+    pub t: &'a mut [Vec3],
+}
 
-/// What the closing and opening of a step read of a run of spheres: m, I, whether fixed.
-pub type Inertia<'a> = (&'a [f64], &'a [f64], &'a [bool]);
+/// What the closing and opening of a step read of a run of spheres.
+pub struct Inertia<'a> {
+    /// Masses m [kg].
+    pub mass: &'a [f64],
+    /// Moments of inertia I [kg m²].
+    pub inertia: &'a [f64],
+    /// Whether each sphere is fixed.
+    pub fixed: &'a [bool],
+}
 
 /// The closing half kick of a step, v += (Δt/2) F/m, ω += (Δt/2) T/I [1][2], its check, and at
 /// once the next step's opening (`op.open`), for a run of spheres whose first slot is `first`
@@ -195,8 +207,12 @@ pub fn close_and_open_one(
     op: &Opener,
     max_speed2: f64,
     first: usize,
-    (x, v, w, f, t): Motion,
-    (mass, inertia, fixed): Inertia,
+    Motion { x, v, w, f, t }: Motion,
+    Inertia {
+        mass,
+        inertia,
+        fixed,
+    }: Inertia,
 ) -> (Option<usize>, Opening) {
     let n = x.len();
     let (v, w, f, t) = (&mut v[..n], &mut w[..n], &mut f[..n], &mut t[..n]);
@@ -224,8 +240,12 @@ pub fn close(
     h: f64,
     max_speed2: f64,
     first: usize,
-    (x, v, w, f, t): Motion,
-    (mass, inertia, fixed): Inertia,
+    Motion { x, v, w, f, t }: Motion,
+    Inertia {
+        mass,
+        inertia,
+        fixed,
+    }: Inertia,
 ) -> Option<usize> {
     let mut bad = None;
     for k in 0..x.len() {
@@ -385,8 +405,18 @@ mod tests {
             let mass: Vec<f64> = s.iter().map(|s| s.5).collect();
             let inertia: Vec<f64> = s.iter().map(|s| s.6).collect();
             let fixed: Vec<bool> = s.iter().map(|s| s.7).collect();
-            let motion = (&mut x[..], &mut v[..], &mut w[..], &mut f[..], &mut t[..]);
-            let props = (&mass[..], &inertia[..], &fixed[..]);
+            let motion = Motion {
+                x: &mut x,
+                v: &mut v,
+                w: &mut w,
+                f: &mut f,
+                t: &mut t,
+            };
+            let props = Inertia {
+                mass: &mass,
+                inertia: &inertia,
+                fixed: &fixed,
+            };
             let (bad, o) = if one {
                 close_and_open_one(&op, 1e4, 10, motion, props)
             } else {

@@ -84,8 +84,12 @@ pub(super) unsafe fn close_and_open(
     op: &Opener,
     max_speed2: f64,
     first: usize,
-    (x, v, w, f, t): Motion,
-    (mass, inertia, fixed): Inertia,
+    Motion { x, v, w, f, t }: Motion,
+    Inertia {
+        mass,
+        inertia,
+        fixed,
+    }: Inertia,
 ) -> (Option<usize>, Opening) {
     let n = x.len();
     let (v, w, f, t) = (&mut v[..n], &mut w[..n], &mut f[..n], &mut t[..n]);
@@ -188,14 +192,18 @@ pub(super) unsafe fn close_and_open(
         op,
         max_speed2,
         first + k,
-        (
-            &mut x[k..],
-            &mut v[k..],
-            &mut w[k..],
-            &mut f[k..],
-            &mut t[k..],
-        ),
-        (&mass[k..], &inertia[k..], &fixed[k..]),
+        Motion {
+            x: &mut x[k..],
+            v: &mut v[k..],
+            w: &mut w[k..],
+            f: &mut f[k..],
+            t: &mut t[k..],
+        },
+        Inertia {
+            mass: &mass[k..],
+            inertia: &inertia[k..],
+            fixed: &fixed[k..],
+        },
     );
     o = Opening::merge(o, rest);
     (bad.or(bad_rest), o)
