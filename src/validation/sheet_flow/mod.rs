@@ -90,8 +90,8 @@ pub struct Level {
 }
 
 impl Level {
-    /// The base case: one period on Δ = d1/4, E = 1.6e8 Pa, Δt = 1e-5 s (28 minutes on 2
-    /// cores; README.md says why this E).
+    /// The base case: one period on Δ = d1/4, E = 1.6e8 Pa, Δt = 1e-5 s (about 10 minutes of
+    /// 2 cores a bed; README.md says why this E).
     pub const FULL: Level = Level {
         name: "full",
         end_time: PERIOD,
@@ -116,7 +116,7 @@ impl Level {
         ..Level::FULL
     };
     /// Sensitivity: the coarser grid Δ = d1/3 (60 × 27 × 54 cells), first half period
-    /// (8 minutes on one core).
+    /// (a single run took 8 minutes on one core).
     pub const COARSE_GRID: Level = Level {
         name: "coarse_grid",
         cell_size: D[0] / 3.0,
