@@ -161,9 +161,16 @@ impl Level {
         cell_size: D[0] / 5.0,
         ..Level::HALF
     };
+    /// Sensitivity: the finer grid still, Δ = d1/6 (120 × 54 × 108 cells), first half period:
+    /// with `fine` and the base, three grids to tell whether the sinking's timing converges.
+    pub const FINER: Level = Level {
+        name: "finer",
+        cell_size: D[0] / 6.0,
+        ..Level::HALF
+    };
 
     /// Every level, the base first.
-    pub const ALL: [Level; 9] = [
+    pub const ALL: [Level; 10] = [
         Level::FULL,
         Level::HALF,
         Level::QUICK,
@@ -173,20 +180,22 @@ impl Level {
         Level::TALL,
         Level::WIDE,
         Level::FINE,
+        Level::FINER,
     ];
 
     /// The variants of the sensitivity study (`riprap validate --only sheet_flow_sensitivity`).
-    pub const VARIANTS: [Level; 6] = [
+    pub const VARIANTS: [Level; 7] = [
         Level::TALL,
         Level::WIDE,
         Level::FINE,
+        Level::FINER,
         Level::COARSE_GRID,
         Level::SOFT,
         Level::SOFTER,
     ];
 
     /// The level of a name (`full`, `half`, `quick`, `coarse_grid`, `soft`, `softer`, `tall`,
-    /// `wide`, `fine`).
+    /// `wide`, `fine`, `finer`).
     pub fn named(name: &str) -> Option<Level> {
         Level::ALL.into_iter().find(|l| l.name == name)
     }
