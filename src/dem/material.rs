@@ -78,7 +78,7 @@ pub enum ContactModel {
     /// LIGGGHTS `model hertz tangential history` (= LAMMPS `hertz/material` + `mindlin`), exactly
     /// as `bench/peers/README.md` specifies it, for users coming from those codes.
     HertzMindlin,
-    /// Hertz-Mindlin with the Coulomb limit kept (`contact::hertz_mindlin::coulomb_force`): the
+    /// Hertz-Mindlin with the Coulomb limit kept (`contact::hertz_mindlin_coulomb`): the
     /// same springs and dashpots, but the whole tangential force within μ F_n and no tension,
     /// so that a sliding contact's tangential impulse is exactly μ times its normal one.
     HertzMindlinCoulomb,
@@ -293,21 +293,16 @@ impl PairLaw {
         4.0 / 3.0 * self.e_star * r_star.sqrt()
     }
 
-    /// The linear stiffness of `Linear` and `ApparentLinear` springs for a pair [N m⁻¹].
-    ///
-    /// [19]: k = {(4/9) R* (E/(1-ν²))² s_ref}^{1/3} = K^{2/3} s_ref^{1/3}, with s_ref = K δ_max^{3/2}
-    /// the peak Hertz force of an impact at v_ref, δ_max = (5 m* v_ref² / (4 K))^{2/5}.
-    ///
-    /// Implements [19].
+    /// The linear stiffness of `Linear` and `ApparentLinear` springs for a pair [N m⁻¹] (the
+    /// apparent one from [19], `contact::voigt::apparent_stiffness`).
     pub fn linear_stiffness(&self, r_star: f64, m_star: f64) -> f64 {
         match self.kind {
-            LawKind::ApparentLinear => {
-                let k_h = self.hertz_coefficient(r_star);
-                let v = self.reference_velocity;
-                let delta_max = (1.25 * m_star * v * v / k_h).powf(0.4);
-                let s_ref = k_h * delta_max.powf(1.5);
-                (k_h * k_h * s_ref).cbrt()
-            }
+            LawKind::ApparentLinear => super::contact::voigt::apparent_stiffness(
+                4.0 / 3.0 * self.e_star,
+                self.reference_velocity,
+                r_star,
+                m_star,
+            ),
             _ => self.stiffness,
         }
     }

@@ -100,7 +100,7 @@ pub enum ModelName {
     /// Apparent linear Hertz spring [18][19].
     ApparentLinearHertz,
     /// Hertz-Mindlin with tangential history and the Coulomb limit on the whole tangential
-    /// force, no tension (`contact::hertz_mindlin::coulomb_force`).
+    /// force, no tension (`contact::hertz_mindlin_coulomb`).
     HertzMindlin,
     /// Hertz-Mindlin exactly as LIGGGHTS computes it (`model hertz tangential history`), the
     /// benchmarks' law: its friction can exceed μ F_n while a contact forms and ends.

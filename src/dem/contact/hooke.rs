@@ -5,61 +5,80 @@
 //! [kg] (a fixed partner counts as infinitely heavy, as LAMMPS's frozen atoms do); μ friction
 //! coefficient (LAMMPS xmu); ξ the shear displacement [m], the contact's history.
 
-use super::{Pair, Reaction};
+use super::real::{Real, V3};
+use super::{Constants, Contact, Law, Response};
 use crate::dem::material::PairLaw;
-use crate::math::Vec3;
 
-/// One step of the Hooke contact; returns the force on i and the torques.
-///
-/// δ̇ = (v_i - v_j)·n;  F_n = k_n δ + m* γ_n δ̇ (the force on i is -F_n n; not clamped);
-/// v_t = (v_i - v_j) - δ̇ n + (r_i ω_i + r_j ω_j) × n, with the full radii;
-/// ξ ← ξ + v_t Δt, then ξ ← ξ - (ξ·n) n (projection, no rescaling);
-/// F_t = -(k_t ξ + m* γ_t v_t); if |F_t| > μ |F_n|, with s = μ|F_n|/|F_t| and
-/// d = m* γ_t v_t / k_t: ξ ← s (ξ + d) - d and F_t ← s F_t (F_t = 0 if ξ was zero before the
-/// projection). Torques T_i = r_i n × F_t, T_j = r_j n × F_t.
-#[inline(always)]
-pub fn force(law: &PairLaw, p: &Pair, xi: &mut Vec3, dt: f64) -> Reaction {
-    let n = p.n;
-    let m = p.m_star();
-    let (k_n, k_t) = (law.stiffness, law.tangential_stiffness);
-    let (gamma_n, gamma_t) = law.gamma;
-    let delta_dot = p.dv.dot(n);
-    let f_n = k_n * p.delta + m * gamma_n * delta_dot;
-    let mut spin = p.r_i * p.w_i;
-    if p.r_j.is_finite() {
-        spin += p.r_j * p.w_j;
+/// LAMMPS's `gran/hooke/history`.
+pub struct Hooke;
+
+impl Law for Hooke {
+    /// A wall's r_j = +0 and ω_j = −0: the spin sum r_i ω_i + r_j ω_j gets (+0)(−0) = −0, and
+    /// x + (−0) = x for every x, the sum without j's term.
+    const WALL: (f64, f64) = (0.0, -0.0);
+
+    /// [k_n, k_t [N m⁻¹], γ_n, γ_t [s⁻¹], μ [-]].
+    fn constants(law: &PairLaw) -> Constants {
+        let (g_n, g_t) = law.gamma;
+        [
+            law.stiffness,
+            law.tangential_stiffness,
+            g_n,
+            g_t,
+            law.friction,
+        ]
     }
-    let v_t = (p.dv - delta_dot * n) + spin.cross(n);
 
-    *xi += v_t * dt;
-    let had_shear = *xi != Vec3::ZERO;
-    *xi -= xi.dot(n) * n;
-    let damp = m * gamma_t * v_t;
-    let mut f_t = -(k_t * *xi + damp);
-    let limit = law.friction * f_n.abs();
-    let ft2 = f_t.length_squared();
-    if ft2 > limit * limit {
-        if had_shear {
-            let ratio = limit / ft2.sqrt();
-            let d = damp / k_t;
-            *xi = ratio * (*xi + d) - d;
-            f_t *= ratio;
-        } else {
-            f_t = Vec3::ZERO;
+    /// One step of the Hooke contact:
+    ///
+    /// δ̇ = (v_i − v_j)·n;  F_n = k_n δ + m* γ_n δ̇ (the force on i is −F_n n; not clamped);
+    /// v_t = (v_i − v_j) − δ̇ n + (r_i ω_i + r_j ω_j) × n, with the full radii;
+    /// ξ ← ξ + v_t Δt, then ξ ← ξ − (ξ·n) n (projection, no rescaling);
+    /// F_t = −(k_t ξ + m* γ_t v_t); if |F_t| > μ |F_n|, with s = μ|F_n|/|F_t| and
+    /// d = m* γ_t v_t / k_t: ξ ← s (ξ + d) − d and F_t ← s F_t (F_t = 0 if ξ was zero before
+    /// the projection). Torques T_i = r_i n × F_t, T_j = r_j n × F_t.
+    #[inline(always)]
+    fn force<T: Real>(k: [T; 5], c: &Contact<T>, xi: V3<T>, dt: T) -> Response<T> {
+        let [k_n, k_t, gamma_n, gamma_t, mu] = k;
+        let (n, m, zero) = (c.n, c.m_star, T::splat(0.0));
+        let delta_dot = c.dv.dot(n);
+        let f_n = k_n * c.delta + m * gamma_n * delta_dot;
+        let spin = c.w_i.scale(c.r_i) + c.w_j.scale(c.r_j);
+        let v_t = (c.dv - n.scale(delta_dot)) + spin.cross(n);
+
+        let xi = xi + v_t.scale(dt);
+        let had_shear = xi.any_ne(zero);
+        let xi = xi - n.scale(xi.dot(n));
+        let damp = v_t.scale(m * gamma_t);
+        let f_stick = -(xi.scale(k_t) + damp);
+        let limit = mu * f_n.abs();
+        let ft2 = f_stick.dot(f_stick);
+        // The slider [11][12]: scaled onto the Coulomb limit, ξ moved to match.
+        let ratio = limit / ft2.sqrt();
+        let d = V3(damp.0.map(|x| x / k_t));
+        let slides = ft2.gt(limit * limit);
+        let f_t = V3::select(
+            slides,
+            V3::select(had_shear, f_stick.scale(ratio), V3::zero()),
+            f_stick,
+        );
+        let xi = V3::select(slides & had_shear, (xi + d).scale(ratio) - d, xi);
+        let t = n.cross(f_t);
+        Response {
+            hist: xi,
+            force: n.scale(-f_n) + f_t,
+            torque_i: t.scale(c.r_i),
+            torque_j: t.scale(c.r_j),
         }
-    }
-    let r_j = if p.r_j.is_finite() { p.r_j } else { 0.0 };
-    Reaction {
-        force: -f_n * n + f_t,
-        torque_i: p.r_i * n.cross(f_t),
-        torque_j: r_j * n.cross(f_t),
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dem::contact::{force_of, Pair};
     use crate::dem::material::{ContactModel, Material, PairLaw, PairOverride};
+    use crate::math::Vec3;
 
     fn law() -> PairLaw {
         let m = Material {
@@ -93,7 +112,7 @@ mod tests {
             (0.5, 0.5),
         );
         let mut xi = Vec3::ZERO;
-        let r = force(&law, &base, &mut xi, 1e-4);
+        let r = force_of::<Hooke>(&law, &base, &mut xi, 1e-4);
         assert_eq!(r.force, Vec3::new(-2.0e3, 0.0, 0.0));
         // Fast sliding along y: the friction force is capped at 0.5 × 2000 (+ damping of the
         // approach, zero here) and opposes the motion.
@@ -102,7 +121,7 @@ mod tests {
             ..base
         };
         let mut xi = Vec3::new(0.0, 1.0, 0.0);
-        let r = force(&law, &slide, &mut xi, 1e-4);
+        let r = force_of::<Hooke>(&law, &slide, &mut xi, 1e-4);
         assert!((r.force.y + 1.0e3).abs() < 1e-9, "{:?}", r.force);
         let swapped = Pair {
             n: -slide.n,
@@ -110,7 +129,7 @@ mod tests {
             ..slide
         };
         let mut xi2 = -Vec3::new(0.0, 1.0, 0.0);
-        let r2 = force(&law, &swapped, &mut xi2, 1e-4);
+        let r2 = force_of::<Hooke>(&law, &swapped, &mut xi2, 1e-4);
         assert_eq!(r2.force, -r.force);
         assert_eq!(xi2, -xi);
     }

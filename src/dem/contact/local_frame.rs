@@ -1,6 +1,6 @@
 //! Test oracle: the source's contact computation in the local frame O-ξηζ (section 2.3, equations
 //! (23)-(33), with the Voigt model (9)-(14)), as plain matrix algebra on `[f64; 3]`, and tests that
-//! check the production vector kernel [`super::voigt::force`] against it on random contacts.
+//! check the production vector kernel (`super::contact_force`, the Voigt law) against it on random contacts.
 //! Section 2.3 assumes one diameter d for both spheres, and so does this file.
 //!
 //! # The formulation
@@ -210,7 +210,7 @@ pub fn contact(law: &Law, d: f64, bi: &Body, bj: &Body, s0: S2, dt: f64) -> (V3,
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::dem::contact::{voigt, Pair};
+    use crate::dem::contact::{contact_force, Pair};
     use crate::dem::material::{LawKind, PairLaw};
     use crate::math::Vec3;
 
@@ -390,7 +390,7 @@ mod tests {
                 (m_i, m_j),
             );
             let mut hist = -(s_pre[0] * e_eta + s_pre[1] * e_zeta);
-            let got = voigt::force(&law, &pair, &mut hist, dt);
+            let got = contact_force(&law, &pair, &mut hist, dt);
             let (force, torque, spring) = contact(&oracle, d, &bi, &bj, s_pre, dt);
 
             // Branch margins and the round-off scale, from the oracle's local quantities.

@@ -9,8 +9,10 @@
 
 pub mod damping;
 pub mod hertz_mindlin;
+pub mod hertz_mindlin_coulomb;
 pub mod hooke;
 pub mod lanes;
+pub mod real;
 pub mod voigt;
 
 #[cfg(test)]
@@ -18,6 +20,7 @@ mod local_frame;
 
 use crate::dem::material::{LawKind, PairLaw};
 use crate::math::Vec3;
+use real::{Real, V3};
 
 /// The state of the two bodies at a contact.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -80,19 +83,6 @@ impl Pair {
     pub fn m_star(&self) -> f64 {
         self.m_star
     }
-
-    /// Relative velocity of i's contact point with respect to j's, with lever arms l_i, l_j:
-    /// v_r = v_i - v_j + (l_i ω_i + l_j ω_j) × n  ([7], with r = l n on i and -l n on j).
-    ///
-    /// Implements [7].
-    #[inline]
-    pub fn contact_velocity(&self, l_i: f64, l_j: f64) -> Vec3 {
-        let mut spin = l_i * self.w_i;
-        if l_j.is_finite() {
-            spin += l_j * self.w_j;
-        }
-        self.dv + spin.cross(self.n)
-    }
 }
 
 /// a b / (a + b), with an infinite partner giving the finite one.
@@ -118,13 +108,133 @@ pub struct Reaction {
     pub torque_j: Vec3,
 }
 
-/// The force of one contact, dispatching on the pair's law. `hist` is updated in place.
-#[inline(always)]
-pub fn contact_force(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
-    match law.kind {
-        LawKind::HertzMindlin => hertz_mindlin::force(law, p, hist, dt),
-        LawKind::HertzMindlinCoulomb => hertz_mindlin::coulomb_force(law, p, hist, dt),
-        LawKind::HookeHistory => hooke::force(law, p, hist, dt),
-        _ => voigt::force(law, p, hist, dt),
+/// One contact as a law sees it, in numbers `T` (one contact, or eight: `real::Real`). For a
+/// wall, r_j and ω_j hold the law's [`Law::WALL`].
+#[derive(Clone, Copy)]
+pub struct Contact<T> {
+    /// Unit normal from i to j [-].
+    pub n: V3<T>,
+    /// Overlap δ [m].
+    pub delta: T,
+    /// v_i − v_j [m s⁻¹].
+    pub dv: V3<T>,
+    /// ω_i, ω_j [rad s⁻¹].
+    pub w_i: V3<T>,
+    /// See [`Contact::w_i`].
+    pub w_j: V3<T>,
+    /// r_i, r_j [m].
+    pub r_i: T,
+    /// See [`Contact::r_i`].
+    pub r_j: T,
+    /// Effective mass m* [kg].
+    pub m_star: T,
+    /// The law's values of this contact from [`Law::prepare`].
+    pub pre: [T; 2],
+}
+
+/// What a law returns for one contact: the new history, the force on i and the torques.
+#[derive(Clone, Copy)]
+pub struct Response<T> {
+    /// The contact's history after the step.
+    pub hist: V3<T>,
+    /// Force on i [N]; j receives its opposite.
+    pub force: V3<T>,
+    /// Torque on i [N m].
+    pub torque_i: V3<T>,
+    /// Torque on j [N m].
+    pub torque_j: V3<T>,
+}
+
+/// The constants of a law for one pair of materials, as the lanes carry them [various units,
+/// named by each law].
+pub type Constants = [f64; 5];
+
+/// A contact law: one formulation ([`Law::force`]), run one contact at a time
+/// ([`contact_force`]) and on columns of contacts (`lanes::run`), with the same bits.
+pub trait Law {
+    /// The radius r_j [m] and the spin ω_j (each component) [rad s⁻¹] a wall takes in
+    /// [`Contact`]: values whose terms change no sum, so that a wall gives what a sphere of
+    /// infinite radius and mass would (signed zeros; each law says why its pair works).
+    const WALL: (f64, f64);
+    /// The law's constants for a pair of materials.
+    fn constants(law: &PairLaw) -> Constants;
+    /// Values of one contact that need more than IEEE-exact arithmetic, or that the kernels
+    /// take early so that the processor overlaps their square roots (R* [m], m* [kg], δ ≥ 0
+    /// [m]); zeros when the law has none.
+    #[inline(always)]
+    fn prepare(_k: &Constants, _r_star: f64, _m_star: f64, _delta: f64) -> [f64; 2] {
+        [0.0; 2]
     }
+    /// One step of the contact: `hist` is its history before the step.
+    fn force<T: Real>(k: [T; 5], c: &Contact<T>, hist: V3<T>, dt: T) -> Response<T>;
+}
+
+/// Something to do with the law of a kind (`dispatch`).
+pub trait WithLaw {
+    /// The result.
+    type Out;
+    /// Does it with the law `L`.
+    fn run<L: Law>(self) -> Self::Out;
+}
+
+/// The one place that maps a pair's kind to its law.
+#[inline(always)]
+pub fn dispatch<W: WithLaw>(kind: LawKind, w: W) -> W::Out {
+    match kind {
+        LawKind::Hertz => w.run::<voigt::Hertz>(),
+        LawKind::Linear => w.run::<voigt::Linear>(),
+        LawKind::ApparentLinear => w.run::<voigt::ApparentLinear>(),
+        LawKind::HertzMindlin => w.run::<hertz_mindlin::HertzMindlin>(),
+        LawKind::HertzMindlinCoulomb => w.run::<hertz_mindlin_coulomb::HertzMindlinCoulomb>(),
+        LawKind::HookeHistory => w.run::<hooke::Hooke>(),
+    }
+}
+
+/// The force of one contact under the law `L`; `hist` is updated in place. A wall (r_j
+/// infinite) receives nothing: `torque_j` is zero.
+#[inline(always)]
+pub fn force_of<L: Law>(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
+    force_with::<L>(L::constants(law), p, hist, dt)
+}
+
+/// [`force_of`] given the law's constants.
+#[inline(always)]
+pub fn force_with<L: Law>(k: Constants, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
+    let wall = !p.r_j.is_finite();
+    let (r_j, w_j) = if wall {
+        (L::WALL.0, Vec3::splat(L::WALL.1))
+    } else {
+        (p.r_j, p.w_j)
+    };
+    let c = Contact {
+        n: p.n.into(),
+        delta: p.delta,
+        dv: p.dv.into(),
+        w_i: p.w_i.into(),
+        w_j: w_j.into(),
+        r_i: p.r_i,
+        r_j,
+        m_star: p.m_star,
+        pre: L::prepare(&k, p.r_star, p.m_star, p.delta),
+    };
+    let r = L::force(k, &c, (*hist).into(), dt);
+    *hist = r.hist.into();
+    Reaction {
+        force: r.force.into(),
+        torque_i: r.torque_i.into(),
+        torque_j: if wall { Vec3::ZERO } else { r.torque_j.into() },
+    }
+}
+
+/// The force of one contact under the pair's law; `hist` is updated in place.
+#[inline]
+pub fn contact_force(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
+    struct One<'a>(&'a PairLaw, &'a Pair, &'a mut Vec3, f64);
+    impl WithLaw for One<'_> {
+        type Out = Reaction;
+        fn run<L: Law>(self) -> Reaction {
+            force_of::<L>(self.0, self.1, self.2, self.3)
+        }
+    }
+    dispatch(law.kind, One(law, p, hist, dt))
 }

@@ -6,92 +6,171 @@
 //! and [21]); c_n, c_t dashpot constants [N s m⁻¹]; μ friction coefficient; s_t the tangential
 //! spring force [N], the contact's history.
 
-use super::{Pair, Reaction};
-use crate::dem::material::{LawKind, PairLaw};
-use crate::math::{project_onto_plane, Vec3};
+use super::real::{Real, V3};
+use super::{Constants, Contact, Law, Response};
+use crate::dem::material::PairLaw;
 
-/// Normal spring force s_n [N] and the stiffness k_n used for k_t [20] and the dashpots [21].
+/// The Voigt law with the Hertz spring s_n = K δ^{3/2}, K = (4/3) E* √R* [15]-[17].
+pub struct Hertz;
+/// The Voigt law with a linear spring s_n = k_n δ, k_n given [18].
+pub struct Linear;
+/// The Voigt law with the apparent linear Hertz spring [18][19]: k_n from each pair of radii
+/// and masses ([`apparent_stiffness`]).
+pub struct ApparentLinear;
+
+/// Constants: [K/√R* = (4/3) E* (Hertz, apparent) or k_n (linear) [Pa or N m⁻¹], v_ref
+/// [m s⁻¹] (apparent), ζ the dashpots' damping ratio [-], k_t/k_n [20] [-], μ [-]].
+fn constants(law: &PairLaw, k0: f64) -> Constants {
+    [
+        k0,
+        law.reference_velocity,
+        law.damping_ratio,
+        law.tangential_ratio,
+        law.friction,
+    ]
+}
+
+/// The linear stiffness of the apparent linear Hertz spring [N m⁻¹] for the Hertz factor
+/// `k43` = (4/3) E* [Pa], the reference velocity `v` [m s⁻¹], R* [m] and m* [kg]:
 ///
-/// Implements [15], [18].
-#[inline]
-pub fn normal_spring(law: &PairLaw, p: &Pair) -> (f64, f64) {
-    match law.kind {
-        LawKind::Hertz => {
-            // [16][17]: s_n = K δ^{3/2}; tangent stiffness (3/2) K δ^{1/2}.
-            let k_h = law.hertz_coefficient(p.r_star());
-            let sq = p.delta.sqrt();
-            (k_h * p.delta * sq, 1.5 * k_h * sq)
-        }
-        _ => {
-            // [18]: s_n = k_n δ ([19] gives k_n for the apparent linear spring).
-            let k_n = law.linear_stiffness(p.r_star(), p.m_star());
-            (k_n * p.delta, k_n)
-        }
+/// [19]: k = {(4/9) R* (E/(1-ν²))² s_ref}^{1/3} = K^{2/3} s_ref^{1/3}, with s_ref = K δ_max^{3/2}
+/// the peak Hertz force of an impact at v_ref, δ_max = (5 m* v_ref² / (4 K))^{2/5}.
+///
+/// Implements [19].
+pub fn apparent_stiffness(k43: f64, v: f64, r_star: f64, m_star: f64) -> f64 {
+    let k_h = k43 * r_star.sqrt();
+    let delta_max = (1.25 * m_star * v * v / k_h).powf(0.4);
+    let s_ref = k_h * delta_max.powf(1.5);
+    (k_h * k_h * s_ref).cbrt()
+}
+
+/// The Hertz spring force s_n = K δ^{3/2} [N], K = (4/3) E* √R* [N m^{-3/2}] (`k43` = (4/3) E*
+/// [Pa]), and its tangent stiffness dF/dδ = (3/2) K δ^{1/2} [N m⁻¹], which stands in for k_n in
+/// [20] and [21].
+///
+/// Implements [15].
+#[inline(always)]
+pub fn hertz_spring(k43: f64, r_star: f64, delta: f64) -> [f64; 2] {
+    let k_h = k43 * r_star.sqrt();
+    let sq = delta.sqrt();
+    [k_h * delta * sq, 1.5 * k_h * sq]
+}
+
+/// The linear spring force s_n = k_n δ [N] and its stiffness k_n [N m⁻¹].
+///
+/// Implements [18].
+#[inline(always)]
+pub fn linear_spring(k_n: f64, delta: f64) -> [f64; 2] {
+    [k_n * delta, k_n]
+}
+
+/// A wall's r_j = +0 and ω_j = −0: the lever sum r_i ω_i + r_j ω_j gets (+0)(−0) = −0, and
+/// x + (−0) = x for every x, the sum without j's term.
+const WALL: (f64, f64) = (0.0, -0.0);
+
+impl Law for Hertz {
+    const WALL: (f64, f64) = WALL;
+    fn constants(law: &PairLaw) -> Constants {
+        constants(law, 4.0 / 3.0 * law.e_star)
+    }
+    #[inline(always)]
+    fn prepare(k: &Constants, r_star: f64, _: f64, delta: f64) -> [f64; 2] {
+        hertz_spring(k[0], r_star, delta)
+    }
+    #[inline(always)]
+    fn force<T: Real>(k: [T; 5], c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
+        force(k, c, s_t, dt)
     }
 }
 
-/// One step of the Voigt contact; returns the force on i and the torques.
+impl Law for Linear {
+    const WALL: (f64, f64) = WALL;
+    fn constants(law: &PairLaw) -> Constants {
+        constants(law, law.stiffness)
+    }
+    #[inline(always)]
+    fn prepare(k: &Constants, _: f64, _: f64, delta: f64) -> [f64; 2] {
+        linear_spring(k[0], delta)
+    }
+    #[inline(always)]
+    fn force<T: Real>(k: [T; 5], c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
+        force(k, c, s_t, dt)
+    }
+}
+
+impl Law for ApparentLinear {
+    const WALL: (f64, f64) = WALL;
+    fn constants(law: &PairLaw) -> Constants {
+        constants(law, 4.0 / 3.0 * law.e_star)
+    }
+    #[inline(always)]
+    fn prepare(k: &Constants, r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
+        linear_spring(apparent_stiffness(k[0], k[1], r_star, m_star), delta)
+    }
+    #[inline(always)]
+    fn force<T: Real>(k: [T; 5], c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
+        force(k, c, s_t, dt)
+    }
+}
+
+/// One step of the Voigt contact, given the normal spring force s_n and stiffness k_n
+/// (`c.pre`, from the spring's `prepare`); returns the force on i, the torques and s_t.
 ///
 /// [9]   f_n = s_n + c_n δ̇ ;  s_t ← s_t - k_t v_t Δt ;  f_t = s_t - c_t v_t
 /// [10]  f_n ≤ 0: the joint opens, nothing is transmitted and s_t is reset
 /// [11][12] |s_t| > μ f_n: the slider slips, s_t ← μ f_n ŝ_t and f_t = s_t (no dashpot);
 ///          when |s_t| ≤ μ f_n but |s_t - c_t v_t| > μ f_n, f_t is that sum scaled to μ f_n
 /// [13][14] F_i = -f_n n + f_t ;  T_i = r_i n × f_t ;  T_j = r_j n × f_t
+/// [20][21] k_t = (k_t/k_n) k_n ;  c = 2 ζ √(m* k) (ζ = 1: critical)
 ///
 /// The Coulomb limit uses the total normal force f_n (spring and dashpot) rather than s_n alone,
 /// so that the tangential impulse of a sliding impact is exactly μ times the normal impulse.
 /// s_t is first rotated into the current tangent plane, keeping its magnitude.
 ///
-/// Implements [9], [10], [11], [12], [13], [14], [21].
-#[inline]
-pub fn force(law: &PairLaw, p: &Pair, s_t: &mut Vec3, dt: f64) -> Reaction {
-    let n = p.n;
-    let (s_n, k_n) = normal_spring(law, p);
-    let m = p.m_star();
-    let c_n = 2.0 * law.damping_ratio * (m * k_n).sqrt();
-    let v_r = p.contact_velocity(p.r_i, p.r_j);
+/// Implements [7], [9], [10], [11], [12], [13], [14], [21].
+#[inline(always)]
+pub fn force<T: Real>(k: [T; 5], c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
+    let [_, _, zeta, ratio, mu] = k;
+    let [s_n, k_n] = c.pre;
+    let (n, m, zero, two) = (c.n, c.m_star, T::splat(0.0), T::splat(2.0));
+    let c_n = two * zeta * (m * k_n).sqrt();
+    // [7]: v_r = v_i − v_j + (r_i ω_i + r_j ω_j) × n, the contact point's relative velocity.
+    let spin = c.w_i.scale(c.r_i) + c.w_j.scale(c.r_j);
+    let v_r = c.dv + spin.cross(n);
     let delta_dot = v_r.dot(n);
     let f_n = s_n + c_n * delta_dot;
-    if f_n <= 0.0 {
-        *s_t = Vec3::ZERO;
-        return Reaction::default();
-    }
-    let v_t = v_r - delta_dot * n;
-    let k_t = law.tangential_ratio * k_n;
-    let c_t = 2.0 * law.damping_ratio * (m * k_t).sqrt();
+    let open = f_n.le(zero);
+    let v_t = v_r - n.scale(delta_dot);
+    let k_t = ratio * k_n;
+    let c_t = two * zeta * (m * k_t).sqrt();
 
     let old = s_t.length();
-    let mut s = project_onto_plane(*s_t, n);
+    let s = s_t - n.scale(s_t.dot(n));
     let len = s.length();
-    if len > 0.0 {
-        s *= old / len;
-    }
-    s -= k_t * dt * v_t;
-    let limit = law.friction * f_n;
-    let f_t = if s.length() > limit {
-        s *= limit / s.length();
-        s
-    } else {
-        // The slider carries the spring and the dashpot in series with it, so it also slips
-        // when their sum exceeds μ f_n (the source's (11) tests s_t alone, which let the dashpot
-        // push the friction force to several times μ f_n while an oblique contact forms and
-        // gave a sliding impact ~30 % more tangential impulse than μ times the normal one).
-        // Only the transmitted force is bounded: the spring keeps its elastic state (already
-        // within μ f_n), since setting it to the slider force would store energy that no
-        // deformation put there.
-        let f = s - c_t * v_t;
-        let len = f.length();
-        if len > limit {
-            f * (limit / len)
-        } else {
-            f
-        }
-    };
-    *s_t = s;
-    let r_j = if p.r_j.is_finite() { p.r_j } else { 0.0 };
-    Reaction {
-        force: -f_n * n + f_t,
-        torque_i: p.r_i * n.cross(f_t),
-        torque_j: r_j * n.cross(f_t),
+    let s = V3::select(len.gt(zero), s.scale(old / len), s);
+    let s = s - v_t.scale(k_t * dt);
+    let limit = mu * f_n;
+    let s_len = s.length();
+    let slides = s_len.gt(limit);
+    let s_slid = s.scale(limit / s_len);
+    // The slider carries the spring and the dashpot in series with it, so it also slips when
+    // their sum exceeds μ f_n (the source's (11) tests s_t alone, which let the dashpot push
+    // the friction force to several times μ f_n while an oblique contact forms and gave a
+    // sliding impact ~30 % more tangential impulse than μ times the normal one). Only the
+    // transmitted force is bounded: the spring keeps its elastic state (already within μ f_n),
+    // since setting it to the slider force would store energy that no deformation put there.
+    let f = s - v_t.scale(c_t);
+    let f_len = f.length();
+    let f_stick = V3::select(f_len.gt(limit), f.scale(limit / f_len), f);
+    let s = V3::select(slides, s_slid, s);
+    let f_t = V3::select(slides, s_slid, f_stick);
+
+    let t = n.cross(f_t);
+    let none = V3::zero();
+    Response {
+        hist: V3::select(open, none, s),
+        force: V3::select(open, none, n.scale(-f_n) + f_t),
+        torque_i: V3::select(open, none, t.scale(c.r_i)),
+        torque_j: V3::select(open, none, t.scale(c.r_j)),
     }
 }

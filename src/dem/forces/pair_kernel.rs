@@ -2,8 +2,9 @@
 //! candidates, then the contact law on batches of close pairs (`PairContext::run`).
 
 use super::super::contact::lanes::{self, get, put, Lanes};
-use super::super::material::{LawKind, PairLaw};
-use super::kernel::{uniform_kind, AnyLaw, HertzMindlin, Hooke, Kernel};
+use super::super::contact::{dispatch, Law, WithLaw};
+use super::super::material::PairLaw;
+use super::kernel::uniform_kind;
 use super::{larger, Out, Tally};
 use crate::math::Vec3;
 
@@ -36,16 +37,19 @@ impl PairContext<'_> {
         hist: &mut [Vec3],
         touch: &mut [u8],
     ) -> Tally {
-        let periodic = self.domain.periodic.iter().any(|&p| p);
-        let args = (owners, out, hist, touch);
-        match (periodic, uniform_kind(self.laws)) {
-            (true, Some(LawKind::HertzMindlin)) => self.run_with::<true, HertzMindlin>(args),
-            (false, Some(LawKind::HertzMindlin)) => self.run_with::<false, HertzMindlin>(args),
-            (true, Some(LawKind::HookeHistory)) => self.run_with::<true, Hooke>(args),
-            (false, Some(LawKind::HookeHistory)) => self.run_with::<false, Hooke>(args),
-            (true, _) => self.run_with::<true, AnyLaw>(args),
-            (false, _) => self.run_with::<false, AnyLaw>(args),
+        struct Run<'r, 'c, 'o>(&'r PairContext<'c>, Args<'r, 'o>);
+        impl WithLaw for Run<'_, '_, '_> {
+            type Out = Tally;
+            fn run<L: Law>(self) -> Tally {
+                let Run(ctx, args) = self;
+                match ctx.domain.periodic.iter().any(|&p| p) {
+                    true => ctx.run_with::<true, L>(args),
+                    false => ctx.run_with::<false, L>(args),
+                }
+            }
         }
+        let args = (owners, out, hist, touch);
+        dispatch(uniform_kind(self.laws), Run(self, args))
     }
 
     /// `run` for a domain with (`PERIODIC`) or without periodic axes and the contact law `K`.
@@ -59,18 +63,15 @@ impl PairContext<'_> {
     ///    everything in registers.
     /// 2. *Geometry*: for the batch, d = |x_j - x_i|, δ = r_i + r_j - d, n = (x_j - x_i)/d,
     ///    R* = r_i r_j/(r_i + r_j), m* = m_i m_j/(m_i + m_j) and the law's square roots
-    ///    (`Kernel::roots`). The contacts are independent here, so the processor overlaps their
+    ///    (`Law::prepare`). The contacts are independent here, so the processor overlaps their
     ///    square roots and divisions instead of waiting on each chain d → δ → a → √(m* a).
     /// 3. *Forces*: (a) the velocities and histories gathered into the lanes, (b) the law on
-    ///    all lanes at once (`Kernel::lanes`), (c) the scatter in pair order: i receives F and
+    ///    all lanes at once (`lanes::run`), (c) the scatter in pair order: i receives F and
     ///    T_i, j receives −F and T_j, at once.
     ///
     /// The order in which each sphere receives its terms is the pair order, as if each pair
     /// were done from start to end before the next.
-    fn run_with<const PERIODIC: bool, K: Kernel>(
-        &self,
-        (owners, out, hist, touch): (std::ops::Range<usize>, &mut Out, &mut [Vec3], &mut [u8]),
-    ) -> Tally {
+    fn run_with<const PERIODIC: bool, K: Law>(&self, (owners, out, hist, touch): Args) -> Tally {
         let Some(first) = owners.clone().next() else {
             return Tally::ZERO;
         };
@@ -83,8 +84,7 @@ impl PairContext<'_> {
         };
         if self.n_mat == 1 {
             let l = &mut batch.lanes;
-            l.law = [0; BATCH];
-            for (c, v) in K::params(&self.laws[0]).into_iter().enumerate() {
+            for (c, v) in K::constants(&self.laws[0]).into_iter().enumerate() {
                 l.params[c] = [v; BATCH];
             }
         }
@@ -137,7 +137,7 @@ impl PairContext<'_> {
     /// owners have 3.5 candidates on average, and a loop per owner would end at an
     /// unpredictable count every few candidates (B2, 1 thread: forces -8 %; B1: -9 %).
     #[inline(always)]
-    fn filter<const PERIODIC: bool, const IMAGES: bool, K: Kernel>(
+    fn filter<const PERIODIC: bool, const IMAGES: bool, K: Law>(
         &self,
         c: Candidates,
         owners: std::ops::Range<usize>,
@@ -185,7 +185,7 @@ impl PairContext<'_> {
     /// loop's registers and make it reload its constants from the stack at every candidate
     /// (B2, 1 thread: forces 1.00 -> 0.89 s).
     #[inline(never)]
-    fn batch<const PERIODIC: bool, K: Kernel>(
+    fn batch<const PERIODIC: bool, K: Law>(
         &self,
         s: &mut Sweep,
         hist: &mut [Vec3],
@@ -237,6 +237,13 @@ impl PairContext<'_> {
                 (true, _) => (mass[j], 1.0),
                 (false, true) => (mass[i], 1.0),
             };
+            // With one material the law's constants were set once for all lanes.
+            if self.n_mat > 1 {
+                let law = material[i] as usize * self.n_mat + material[j] as usize;
+                for (c, v) in K::constants(&self.laws[law]).into_iter().enumerate() {
+                    l.params[c][k] = v;
+                }
+            }
         }
         geometry::<K>(b, len);
         // Stage 3a: gather each contact's state and history into the lanes.
@@ -253,17 +260,9 @@ impl PairContext<'_> {
             put(&mut l.w_i, k, ang[i]);
             put(&mut l.w_j, k, ang[j]);
             put(&mut l.hist, k, h);
-            // With one material the law's constants were set once for all lanes.
-            if self.n_mat > 1 {
-                let law = material[i] as usize * self.n_mat + material[j] as usize;
-                l.law[k] = law as u32;
-                for (c, v) in K::params(&self.laws[law]).into_iter().enumerate() {
-                    l.params[c][k] = v;
-                }
-            }
         }
         // Stage 3b: the law, on all lanes at once.
-        K::lanes(l, self.laws, len, self.dt);
+        lanes::run::<K>(l, self.dt);
         // Stage 3c: the scatter, in pair order. i's terms go straight to its force and torque,
         // as j's do: summing them per owner first costs a branch on each change of owner, which
         // the processor cannot predict where owners have one contact or none (B2, 1 thread:
@@ -333,6 +332,15 @@ struct Candidates<'a> {
     base: usize,
 }
 
+/// What `PairContext::run_with` takes: the owners, where the forces go, and the task's
+/// histories and touch flags.
+type Args<'r, 'o> = (
+    std::ops::Range<usize>,
+    &'r mut Out<'o>,
+    &'r mut [Vec3],
+    &'r mut [u8],
+);
+
 /// Contacts per batch of the pair loop (`lanes::LANES`).
 const BATCH: usize = lanes::LANES;
 
@@ -394,13 +402,13 @@ impl Batch {
 /// Stage 2 of the pair loop for the first `len` contacts of `b`:
 ///
 /// |d| = √(d²), n = d / |d|, δ = r_i + r_j - |d|, R* = r_i r_j / (r_i + r_j),
-/// m* = m_num / m_den, and the law's square roots (`Kernel::roots`, from δ clamped at 0).
+/// m* = m_num / m_den, and the law's square roots (`Law::prepare`, from δ clamped at 0).
 ///
 /// The contacts are independent: the loop runs on whole vectors of them (two per SSE2
 /// instruction, four with AVX, chosen at run time; the results are the same to the bit, as
 /// every operation is IEEE-exact).
 #[inline(always)]
-fn geometry<K: Kernel>(b: &mut Batch, len: usize) {
+fn geometry<K: Law>(b: &mut Batch, len: usize) {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx") {
         // SAFETY: the processor has AVX, checked just above.
@@ -413,7 +421,7 @@ fn geometry<K: Kernel>(b: &mut Batch, len: usize) {
 /// `geometry` compiled for AVX.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
-fn geometry_avx<K: Kernel>(b: &mut Batch, len: usize) {
+fn geometry_avx<K: Law>(b: &mut Batch, len: usize) {
     geometry_columns::<K>(b, len);
 }
 
@@ -421,7 +429,7 @@ fn geometry_avx<K: Kernel>(b: &mut Batch, len: usize) {
 ///
 /// Implements [6].
 #[inline(always)]
-fn geometry_columns<K: Kernel>(b: &mut Batch, len: usize) {
+fn geometry_columns<K: Law>(b: &mut Batch, len: usize) {
     let len = len.min(BATCH);
     let (d2, m_num, m_den) = (&b.d2[..len], &b.m_num[..len], &b.m_den[..len]);
     let l = &mut b.lanes;
@@ -429,14 +437,17 @@ fn geometry_columns<K: Kernel>(b: &mut Batch, len: usize) {
     let (nx, ny, nz) = (&mut nx[..len], &mut ny[..len], &mut nz[..len]);
     let (r_i, r_j, delta) = (&l.r_i[..len], &l.r_j[..len], &mut l.delta[..len]);
     let (r_star, m_star) = (&mut l.r_star[..len], &mut l.m_star[..len]);
-    let (root_a, root_b) = (&mut l.root_a[..len], &mut l.root_b[..len]);
+    let params = &l.params;
+    let [pre_a, pre_b] = &mut l.pre;
+    let (pre_a, pre_b) = (&mut pre_a[..len], &mut pre_b[..len]);
     for k in 0..len {
         let dist = d2[k].sqrt();
         let r_sum = r_i[k] + r_j[k];
         let dl = r_sum - dist;
         let rs = r_i[k] * r_j[k] / r_sum;
         let ms = m_num[k] / m_den[k];
-        let [ra, rb] = K::roots(rs, ms, dl.max(0.0));
+        let constants = params.each_ref().map(|c| c[k]);
+        let [pa, pb] = K::prepare(&constants, rs, ms, dl.max(0.0));
         let inv_dist = 1.0 / dist;
         nx[k] *= inv_dist;
         ny[k] *= inv_dist;
@@ -444,7 +455,7 @@ fn geometry_columns<K: Kernel>(b: &mut Batch, len: usize) {
         delta[k] = dl;
         r_star[k] = rs;
         m_star[k] = ms;
-        root_a[k] = ra;
-        root_b[k] = rb;
+        pre_a[k] = pa;
+        pre_b[k] = pb;
     }
 }

@@ -2,11 +2,12 @@
 //! wall contacts and history, then the contact law on batches of contacts, as the pair kernel
 //! runs pairs (`WallContext::run`).
 
-use super::super::contact::lanes::{get, put, Lanes, LANES};
-use super::super::material::{LawKind, PairLaw};
+use super::super::contact::lanes::{self, get, put, Lanes, LANES};
+use super::super::contact::{dispatch, Law, WithLaw};
+use super::super::material::PairLaw;
 use super::super::wall_contacts::{join, split, MoreSlots, NearWall, WallEntry};
 use super::super::walls::{match_history, match_one, Hits, Wall, WallContact, WALL_SLOTS};
-use super::kernel::{uniform_kind, AnyLaw, HertzMindlin, Hooke, Kernel};
+use super::kernel::uniform_kind;
 use super::pair_kernel::prefetch;
 use super::{larger, Tally};
 use crate::geometry::ContactBuf;
@@ -56,11 +57,14 @@ impl WallContext<'_> {
     /// Adds the wall contacts of the chunk's entries to its spheres' forces and torques, and
     /// counts them in `tally`.
     pub(super) fn run(&self, chunk: Chunk, tally: &mut Tally) {
-        match uniform_kind(self.laws) {
-            Some(LawKind::HertzMindlin) => self.run_with::<HertzMindlin>(chunk, tally),
-            Some(LawKind::HookeHistory) => self.run_with::<Hooke>(chunk, tally),
-            _ => self.run_with::<AnyLaw>(chunk, tally),
+        struct Run<'r, 'w, 'c>(&'r WallContext<'w>, Chunk<'c>, &'r mut Tally);
+        impl WithLaw for Run<'_, '_, '_> {
+            type Out = ();
+            fn run<L: Law>(self) {
+                self.0.run_with::<L>(self.1, self.2);
+            }
         }
+        dispatch(uniform_kind(self.laws), Run(self, chunk, tally));
     }
 
     /// `run` with the law `K`, in two stages on batches of contacts:
@@ -69,12 +73,19 @@ impl WallContext<'_> {
     ///    (`Wall::contacts`), matched to last step's (`walls::match_history`), and put in the
     ///    batch as the law sees a wall: a sphere of infinite radius and mass (R* = r_i,
     ///    m* = m_i; `contact::Pair::new`).
-    /// 2. *Forces*: the law on all lanes at once (`Kernel::lanes`), then the scatter in
+    /// 2. *Forces*: the law on all lanes at once (`lanes::run`), then the scatter in
     ///    contact order: the history back to its slot, F and T_i added to the sphere.
     ///
     /// Each sphere has its wall contacts in one entry, and receives their terms in the order
     /// of its hits, as if each contact were done from start to end before the next.
-    fn run_with<K: Kernel>(&self, mut c: Chunk, tally: &mut Tally) {
+    fn run_with<K: Law>(&self, c: Chunk, tally: &mut Tally) {
+        self.run_using::<K>(c, tally, lanes::run::<K>);
+    }
+
+    /// `run_with`, with the law on the lanes run by `law` (the tests run it one contact at a
+    /// time).
+    #[inline(always)]
+    fn run_using<K: Law>(&self, mut c: Chunk, tally: &mut Tally, law: fn(&mut Lanes, f64)) {
         // Most chunks have no sphere near a wall.
         if c.entries.is_empty() {
             return;
@@ -96,7 +107,7 @@ impl WallContext<'_> {
             }
             // A sphere has at most `WALL_SLOTS` hits: make room for them all.
             if b.len > LANES - WALL_SLOTS {
-                self.flush::<K>(&mut b, &mut c, tally);
+                self.flush::<K>(&mut b, &mut c, tally, law);
             }
             let entry = &mut c.entries[e];
             let i = entry.sphere as usize;
@@ -143,10 +154,9 @@ impl WallContext<'_> {
                 put(&mut l.hist, q, hist[s]);
                 let delta = h.contact.overlap;
                 (l.delta[q], l.r_i[q], l.r_star[q], l.m_star[q]) = (delta, r, r, m);
-                for (c, p) in K::params(&self.laws[law]).into_iter().enumerate() {
+                for (c, p) in K::constants(&self.laws[law]).into_iter().enumerate() {
                     l.params[c][q] = p;
                 }
-                l.law[q] = law as u32;
                 (b.entry[q], b.slot[q], b.sphere[q]) = (e as u32, s as u8, k as u32);
                 b.len += 1;
             }
@@ -154,18 +164,24 @@ impl WallContext<'_> {
             tally.dropped += hits.dropped;
         }
         if b.len > 0 {
-            self.flush::<K>(&mut b, &mut c, tally);
+            self.flush::<K>(&mut b, &mut c, tally, law);
         }
     }
 
     /// Stage 2 of `run_with`: the law on the batch, and the scatter; empties the batch.
     #[inline(never)]
-    fn flush<K: Kernel>(&self, b: &mut WallBatch, c: &mut Chunk, tally: &mut Tally) {
+    fn flush<K: Law>(
+        &self,
+        b: &mut WallBatch,
+        c: &mut Chunk,
+        tally: &mut Tally,
+        law: fn(&mut Lanes, f64),
+    ) {
         let (i0, first, more, f, tq) = (c.i0, &mut *c.first, &mut *c.more, &mut *c.f, &mut *c.tq);
         let len = b.len.min(LANES);
         b.len = 0;
-        roots::<K>(&mut b.lanes, len);
-        K::lanes(&mut b.lanes, self.laws, len, self.dt);
+        prepare::<K>(&mut b.lanes, len);
+        law(&mut b.lanes, self.dt);
         let l = &b.lanes;
         for q in 0..len {
             let (e, s, k) = (
@@ -190,22 +206,24 @@ impl WallContext<'_> {
     }
 }
 
-/// The law's square roots (`Kernel::roots`) of the first `len` lanes: independent, so that
-/// the processor overlaps them instead of waiting on each chain √(R* δ) → √(m* a).
+/// The law's values of the first `len` lanes (`Law::prepare`): independent, so that the
+/// processor overlaps their square roots instead of waiting on each chain √(R* δ) → √(m* a).
 #[inline(always)]
-fn roots<K: Kernel>(l: &mut Lanes, len: usize) {
+fn prepare<K: Law>(l: &mut Lanes, len: usize) {
     let len = len.min(LANES);
     let (r, m, delta) = (&l.r_star[..len], &l.m_star[..len], &l.delta[..len]);
-    let (a, b) = (&mut l.root_a[..len], &mut l.root_b[..len]);
+    let [a, b] = &mut l.pre;
+    let (a, b) = (&mut a[..len], &mut b[..len]);
     for q in 0..len {
-        [a[q], b[q]] = K::roots(r[q], m[q], delta[q]);
+        let constants = l.params.each_ref().map(|c| c[q]);
+        [a[q], b[q]] = K::prepare(&constants, r[q], m[q], delta[q]);
     }
 }
 
 /// Wall contacts waiting for the law, as columns, with where each came from.
 struct WallBatch {
     len: usize,
-    /// The contacts as the law sees them; r_j and ω_j hold the wall's (`Kernel::WALL`).
+    /// The contacts as the law sees them; r_j and ω_j hold the wall's (`Law::WALL`).
     lanes: Lanes,
     /// The contact's entry, its slot there, and its sphere (from the chunk's first).
     entry: [u32; LANES],
@@ -214,7 +232,7 @@ struct WallBatch {
 }
 
 impl WallBatch {
-    fn new<K: Kernel>() -> WallBatch {
+    fn new<K: Law>() -> WallBatch {
         let mut lanes = Lanes::default();
         let (r_j, w_j) = K::WALL;
         lanes.r_j = [r_j; LANES];
@@ -232,8 +250,14 @@ impl WallBatch {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dem::contact::hertz_mindlin::HertzMindlin;
+    use crate::dem::contact::hertz_mindlin_coulomb::HertzMindlinCoulomb;
+    use crate::dem::contact::hooke::Hooke;
+    use crate::dem::contact::{force_with, voigt, Pair};
     use crate::dem::domain::Domain;
-    use crate::dem::material::{ContactModel, Material};
+    use crate::dem::material::{
+        ContactModel, Damping, Material, NormalSpring, TangentialStiffness,
+    };
     use crate::dem::neighbor::tests::uniform;
     use crate::dem::walls::{Motion, Shape, WallSlots};
     use crate::dem::Dem;
@@ -271,7 +295,7 @@ mod tests {
             } else {
                 Vec3::new(0.4 * u(), 0.4 * u(), 0.0)
             } + Vec3::new(0.0, 0.0, r * (0.9 + 0.1 * u()));
-            // At rest with a spin of −0, the signs of zero reach the forces (`Kernel::WALL`).
+            // At rest with a spin of −0, the signs of zero reach the forces (`Law::WALL`).
             let v = match k % 8 {
                 0 => Vec3::splat(-0.0),
                 _ => Vec3::new(u(), u(), u()) * if k % 3 == 0 { 0.01 } else { 1.0 },
@@ -319,8 +343,33 @@ mod tests {
         dem
     }
 
-    /// The kernel `K` on the whole scene: forces, torques, slots and the tally.
-    fn run<K: Kernel>(dem: &Dem) -> (Vec<Vec3>, Vec<Vec3>, Vec<WallSlots>, Tally) {
+    /// The law `K` on every lane, one contact at a time, with the wall as `contact::Pair`
+    /// has it (infinite radius and mass, no spin; `force_with`).
+    fn one_by_one<K: Law>(l: &mut Lanes, dt: f64) {
+        for k in 0..LANES {
+            let p = Pair {
+                n: get(&l.n, k),
+                delta: l.delta[k],
+                dv: get(&l.dv, k),
+                w_i: get(&l.w_i, k),
+                w_j: Vec3::ZERO,
+                r_i: l.r_i[k],
+                r_j: f64::INFINITY,
+                r_star: l.r_star[k],
+                m_star: l.m_star[k],
+            };
+            let constants = l.params.each_ref().map(|c| c[k]);
+            let mut h = get(&l.hist, k);
+            let r = force_with::<K>(constants, &p, &mut h, dt);
+            put(&mut l.hist, k, h);
+            put(&mut l.force, k, r.force);
+            put(&mut l.torque_i, k, r.torque_i);
+        }
+    }
+
+    /// The kernel with the law `K` on the whole scene, on lanes or `one_by_one`: forces,
+    /// torques, slots and the tally.
+    fn run<K: Law>(dem: &Dem, lanes: bool) -> (Vec<Vec3>, Vec<Vec3>, Vec<WallSlots>, Tally) {
         let s = &dem.spheres;
         let wc = &dem.wall_contacts;
         let ctx = WallContext {
@@ -354,7 +403,10 @@ mod tests {
             f: &mut f,
             tq: &mut tq,
         };
-        ctx.run_with::<K>(chunk, &mut tally);
+        match lanes {
+            true => ctx.run_with::<K>(chunk, &mut tally),
+            false => ctx.run_using::<K>(chunk, &mut tally, one_by_one::<K>),
+        }
         let slots: Vec<WallSlots> = first.iter().zip(&more).map(|(&a, b)| join(a, b)).collect();
         for (e, s) in ents.iter().zip(&slots) {
             assert_eq!(
@@ -365,10 +417,10 @@ mod tests {
         (f, tq, slots, tally)
     }
 
-    fn same_bits<K: Kernel>(model: ContactModel) {
+    fn same_bits<K: Law>(model: ContactModel) {
         let dem = scene(model);
-        let (f, tq, ents, tally) = run::<K>(&dem);
-        let (f0, tq0, ents0, tally0) = run::<AnyLaw>(&dem);
+        let (f, tq, ents, tally) = run::<K>(&dem, true);
+        let (f0, tq0, ents0, tally0) = run::<K>(&dem, false);
         // Enough contacts for several batches, and corners with three walls at once.
         assert!(tally.contacts > 4 * LANES, "{} contacts", tally.contacts);
         let corners = ents.iter().filter(|s| s[2].wall != u32::MAX).count();
@@ -391,12 +443,27 @@ mod tests {
     }
 
     #[test]
-    fn hertz_mindlin_walls_on_lanes_give_the_bits_of_the_scalar_law() {
+    fn hertz_mindlin_walls_on_lanes_give_the_bits_of_one_contact() {
         same_bits::<HertzMindlin>(ContactModel::HertzMindlin);
+        same_bits::<HertzMindlinCoulomb>(ContactModel::HertzMindlinCoulomb);
     }
 
     #[test]
-    fn hooke_walls_on_lanes_give_the_bits_of_the_scalar_law() {
+    fn voigt_walls_on_lanes_give_the_bits_of_one_contact() {
+        let voigt = |spring| ContactModel::Voigt {
+            spring,
+            damping: Damping::Restitution,
+            tangential: TangentialStiffness::Source,
+        };
+        same_bits::<voigt::Hertz>(voigt(NormalSpring::Hertz));
+        same_bits::<voigt::Linear>(voigt(NormalSpring::Linear { stiffness: 2.0e3 }));
+        same_bits::<voigt::ApparentLinear>(voigt(NormalSpring::ApparentLinearHertz {
+            reference_velocity: 1.0,
+        }));
+    }
+
+    #[test]
+    fn hooke_walls_on_lanes_give_the_bits_of_one_contact() {
         same_bits::<Hooke>(ContactModel::HookeHistory {
             normal_stiffness: 2.0e3,
             tangential_stiffness: 2.0e3 * 2.0 / 7.0,
