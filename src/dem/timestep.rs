@@ -6,15 +6,15 @@
 //! linear spring with that period has the same contact duration. A step above T/10 is refused
 //! (fewer than five steps per contact) unless forced.
 
-use super::contact::damping;
-use super::material::{LawKind, PairLaw};
+use super::contact;
+use super::material::PairLaw;
+
+pub use super::contact::scales::HERTZ_DURATION_FACTOR;
 
 /// Steps per spring period below which a run is refused: the lower end of α in [22].
 pub const MIN_STEPS_PER_PERIOD: f64 = 10.0;
 /// Steps per spring period used when the scenario gives no time step: the upper end of [22].
 pub const DEFAULT_STEPS_PER_PERIOD: f64 = 20.0;
-/// Hertz elastic contact time in units of (m*²/(K² v))^{1/5}: 2.9432 (5/4)^{2/5}.
-pub const HERTZ_DURATION_FACTOR: f64 = 3.218_0;
 
 /// Derived quantities of one contact pairing.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,60 +36,19 @@ pub struct ContactScales {
 }
 
 /// Contact scales of a pairing with effective radius `r_star`, mass `m_star`, impact velocity `v`
-/// and a static load `load` [N] (the sphere's weight, say).
+/// and a static load `load` [N] (the sphere's weight, say), from its law (`contact::Law::scales`).
 ///
 /// Implements [22].
 pub fn contact_scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> ContactScales {
-    match law.kind {
-        LawKind::HookeHistory => {
-            // m* δ'' + m* γ_n δ' + k_n δ = 0: ω0² = k_n/m*, damped ω = √(ω0² - γ_n²/4).
-            let k = law.stiffness;
-            let w0 = (k / m_star).sqrt();
-            let w = (w0 * w0 - 0.25 * law.gamma.0 * law.gamma.0).max(0.0).sqrt();
-            ContactScales {
-                r_star,
-                m_star,
-                period: 2.0 * std::f64::consts::PI / w0,
-                duration: std::f64::consts::PI / w,
-                max_overlap: v / w0,
-                rest_overlap: load / k,
-                law: *law,
-            }
-        }
-        LawKind::Linear | LawKind::ApparentLinear => {
-            let k = law.linear_stiffness(r_star, m_star);
-            let w0 = (k / m_star).sqrt();
-            let (tc, _) = damping::linear_contact(law.damping_ratio);
-            ContactScales {
-                r_star,
-                m_star,
-                period: 2.0 * std::f64::consts::PI / w0,
-                duration: tc / w0,
-                max_overlap: v / w0,
-                rest_overlap: load / k,
-                law: *law,
-            }
-        }
-        LawKind::Hertz | LawKind::HertzMindlin | LawKind::HertzMindlinCoulomb => {
-            let k_h = law.hertz_coefficient(r_star);
-            let scale = (m_star * m_star / (k_h * k_h * v)).powf(0.2);
-            let elastic = HERTZ_DURATION_FACTOR * scale;
-            let duration = if matches!(law.kind, LawKind::Hertz | LawKind::HertzMindlinCoulomb) {
-                let d0 = (m_star * v * v / k_h).powf(0.4);
-                damping::hertz_contact(law.damping_ratio).0 * d0 / v
-            } else {
-                elastic
-            };
-            ContactScales {
-                r_star,
-                m_star,
-                period: 2.0 * elastic,
-                duration,
-                max_overlap: (1.25 * m_star * v * v / k_h).powf(0.4),
-                rest_overlap: (load / k_h).powf(2.0 / 3.0),
-                law: *law,
-            }
-        }
+    let s = contact::scales(law, r_star, m_star, v, load);
+    ContactScales {
+        r_star,
+        m_star,
+        period: s.period,
+        duration: s.duration,
+        max_overlap: s.max_overlap,
+        rest_overlap: s.rest_overlap,
+        law: *law,
     }
 }
 

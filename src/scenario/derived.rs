@@ -5,7 +5,8 @@ use std::fmt::Write as _;
 
 use super::fluid::FluidDerived;
 use super::memory::MemoryEstimate;
-use crate::dem::material::{LawKind, PairLaw};
+use crate::dem::contact;
+use crate::dem::material::PairLaw;
 use crate::dem::timestep::ContactScales;
 
 /// Quantities an expert computes by hand before a run.
@@ -171,54 +172,10 @@ impl Derived {
 
 /// The restitution of a head-on impact in continuous time: what the dashpots were chosen for.
 fn ideal_restitution(law: &PairLaw) -> f64 {
-    use crate::dem::contact::damping;
-    use crate::dem::material::LawKind;
-    match law.kind {
-        LawKind::Linear | LawKind::ApparentLinear => damping::linear_contact(law.damping_ratio).1,
-        LawKind::Hertz => damping::hertz_contact(law.damping_ratio).1,
-        LawKind::HertzMindlin | LawKind::HertzMindlinCoulomb => law.restitution,
-        LawKind::HookeHistory => {
-            // e = exp(-γ_n π / (2 ω)) for a pair of unit effective mass scale: γ_n and k_n/m*
-            // both enter; report the value for m* = 1 (scenarios do not use this law).
-            let w0 = law.stiffness.sqrt();
-            let w = (w0 * w0 - 0.25 * law.gamma.0 * law.gamma.0)
-                .max(1e-300)
-                .sqrt();
-            (-0.5 * law.gamma.0 * std::f64::consts::PI / w).exp()
-        }
-    }
+    contact::restitution_and_description(law).0
 }
 
 /// What `check` says of the contact law: which law, and the choices that change results.
 fn law_line(law: &PairLaw) -> String {
-    let voigt = |spring: &str| {
-        // The source's ratio 1/(2(1 + ν)) is at most 0.5, Mindlin's 2(1 − ν)/(2 − ν) at least 2/3.
-        let mindlin = law.tangential_ratio > 0.6;
-        format!(
-            "contact law: the source's Voigt law [9]-[14] with a {spring} spring; tangential \
-             spring k_t/k_n = {:.3}, {}",
-            law.tangential_ratio,
-            if mindlin {
-                "Mindlin's 2(1 − ν)/(2 − ν) (the source's [20] gives about half)"
-            } else {
-                "the source's [20], 1/(2(1 + ν)): about half Mindlin's, so oblique impacts at \
-                 small incidence rebound with about half the tangential velocity experiments \
-                 show; [contact] tangential_stiffness = \"mindlin\" gives Mindlin's"
-            }
-        )
-    };
-    match law.kind {
-        LawKind::Hertz => voigt("Hertz [15]-[17]"),
-        LawKind::Linear => voigt("linear [18]"),
-        LawKind::ApparentLinear => voigt("apparent linear Hertz [19]"),
-        LawKind::HertzMindlinCoulomb => "contact law: Hertz-Mindlin with the Coulomb limit kept \
-            (the whole tangential force within μ F_n, no tension); `hertz_mindlin_liggghts` is \
-            LIGGGHTS's own"
-            .into(),
-        LawKind::HertzMindlin => "contact law: Hertz-Mindlin as LIGGGHTS computes it (its \
-            friction exceeds μ F_n while a contact forms and ends; `hertz_mindlin` keeps the \
-            Coulomb limit)"
-            .into(),
-        LawKind::HookeHistory => "contact law: LAMMPS gran/hooke/history".into(),
-    }
+    contact::restitution_and_description(law).1
 }

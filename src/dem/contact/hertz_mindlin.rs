@@ -8,6 +8,7 @@
 //! γ = -2 √(5/6) β √(S m*) [N s m⁻¹], β = ln e / √(ln² e + π²); ξ the tangential displacement [m].
 
 use super::real::{Real, V3};
+use super::scales::{self, Scales};
 use super::{Constants, Contact, Law, Response};
 use crate::dem::material::PairLaw;
 
@@ -96,5 +97,18 @@ impl Law for HertzMindlin {
             torque_i: t.scale(c_i),
             torque_j: t.scale(c_j),
         }
+    }
+
+    /// The elastic Hertz impact (LIGGGHTS's damping gives the pair's restitution).
+    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        scales::hertz(law.hertz_coefficient(r_star), m_star, v, load, None)
+    }
+    fn restitution(law: &PairLaw) -> f64 {
+        law.restitution
+    }
+    fn describe(_: &PairLaw) -> String {
+        "contact law: Hertz-Mindlin as LIGGGHTS computes it (its friction exceeds μ F_n while \
+         a contact forms and ends; `hertz_mindlin` keeps the Coulomb limit)"
+            .into()
     }
 }

@@ -7,6 +7,7 @@
 
 use super::hertz_mindlin::{contact_velocity, roots, springs, HertzMindlin};
 use super::real::{Real, V3};
+use super::scales::{self, Scales};
 use super::{Constants, Contact, Law, Response};
 use crate::dem::material::PairLaw;
 
@@ -66,5 +67,19 @@ impl Law for HertzMindlinCoulomb {
             torque_i: V3::select(open, none, t.scale(c_i)),
             torque_j: V3::select(open, none, t.scale(c_j)),
         }
+    }
+
+    /// The clamped damped Hertz impact (the dashpots' damping ratio is the clamped law's).
+    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        let k_h = law.hertz_coefficient(r_star);
+        scales::hertz(k_h, m_star, v, load, Some(law.damping_ratio))
+    }
+    fn restitution(law: &PairLaw) -> f64 {
+        law.restitution
+    }
+    fn describe(_: &PairLaw) -> String {
+        "contact law: Hertz-Mindlin with the Coulomb limit kept (the whole tangential force \
+         within μ F_n, no tension); `hertz_mindlin_liggghts` is LIGGGHTS's own"
+            .into()
     }
 }

@@ -6,6 +6,7 @@
 //! coefficient (LAMMPS xmu); ξ the shear displacement [m], the contact's history.
 
 use super::real::{Real, V3};
+use super::scales::{self, Scales};
 use super::{Constants, Contact, Law, Response};
 use crate::dem::material::PairLaw;
 
@@ -70,6 +71,30 @@ impl Law for Hooke {
             torque_i: t.scale(c.r_i),
             torque_j: t.scale(c.r_j),
         }
+    }
+
+    /// m* δ'' + m* γ_n δ' + k_n δ = 0: ω0² = k_n/m*, damped ω = √(ω0² − γ_n²/4), the contact
+    /// lasting π/ω.
+    fn scales(law: &PairLaw, _: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        let k = law.stiffness;
+        let w0 = (k / m_star).sqrt();
+        let w = (w0 * w0 - 0.25 * law.gamma.0 * law.gamma.0).max(0.0).sqrt();
+        Scales {
+            duration: std::f64::consts::PI / w,
+            ..scales::linear(k, m_star, v, load, 0.0)
+        }
+    }
+    /// e = exp(−γ_n π / (2 ω)), reported for m* = 1 (γ_n and k_n/m* both enter; scenarios
+    /// do not use this law).
+    fn restitution(law: &PairLaw) -> f64 {
+        let w0 = law.stiffness.sqrt();
+        let w = (w0 * w0 - 0.25 * law.gamma.0 * law.gamma.0)
+            .max(1e-300)
+            .sqrt();
+        (-0.5 * law.gamma.0 * std::f64::consts::PI / w).exp()
+    }
+    fn describe(_: &PairLaw) -> String {
+        "contact law: LAMMPS gran/hooke/history".into()
     }
 }
 

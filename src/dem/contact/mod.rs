@@ -13,6 +13,7 @@ pub mod hertz_mindlin_coulomb;
 pub mod hooke;
 pub mod lanes;
 pub mod real;
+pub mod scales;
 pub mod voigt;
 
 #[cfg(test)]
@@ -167,6 +168,14 @@ pub trait Law {
     }
     /// One step of the contact: `hist` is its history before the step.
     fn force<T: Real>(k: [T; 5], c: &Contact<T>, hist: V3<T>, dt: T) -> Response<T>;
+    /// A head-on impact of a pairing with R* [m] and m* [kg] at `v` [m s⁻¹], and its overlap
+    /// at rest under `load` [N].
+    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> scales::Scales;
+    /// The restitution of a head-on impact in continuous time [-]: what the dashpots were
+    /// chosen for.
+    fn restitution(law: &PairLaw) -> f64;
+    /// What `riprap check` says of the law: which law, and the choices that change results.
+    fn describe(law: &PairLaw) -> String;
 }
 
 /// Something to do with the law of a kind (`dispatch`).
@@ -224,6 +233,31 @@ pub fn force_with<L: Law>(k: Constants, p: &Pair, hist: &mut Vec3, dt: f64) -> R
         torque_i: r.torque_i.into(),
         torque_j: if wall { Vec3::ZERO } else { r.torque_j.into() },
     }
+}
+
+/// [`Law::scales`] of the pair's law.
+pub fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> scales::Scales {
+    struct S<'a>(&'a PairLaw, [f64; 4]);
+    impl WithLaw for S<'_> {
+        type Out = scales::Scales;
+        fn run<L: Law>(self) -> scales::Scales {
+            let [r, m, v, load] = self.1;
+            L::scales(self.0, r, m, v, load)
+        }
+    }
+    dispatch(law.kind, S(law, [r_star, m_star, v, load]))
+}
+
+/// [`Law::restitution`] and [`Law::describe`] of the pair's law.
+pub fn restitution_and_description(law: &PairLaw) -> (f64, String) {
+    struct S<'a>(&'a PairLaw);
+    impl WithLaw for S<'_> {
+        type Out = (f64, String);
+        fn run<L: Law>(self) -> (f64, String) {
+            (L::restitution(self.0), L::describe(self.0))
+        }
+    }
+    dispatch(law.kind, S(law))
 }
 
 /// The force of one contact under the pair's law; `hist` is updated in place.

@@ -7,7 +7,8 @@
 //! spring force [N], the contact's history.
 
 use super::real::{Real, V3};
-use super::{Constants, Contact, Law, Response};
+use super::scales::{self, Scales};
+use super::{damping, Constants, Contact, Law, Response};
 use crate::dem::material::PairLaw;
 
 /// The Voigt law with the Hertz spring s_n = K δ^{3/2}, K = (4/3) E* √R* [15]-[17].
@@ -64,6 +65,31 @@ pub fn linear_spring(k_n: f64, delta: f64) -> [f64; 2] {
     [k_n * delta, k_n]
 }
 
+/// What `check` says of a Voigt law with the spring `spring`.
+fn describe(law: &PairLaw, spring: &str) -> String {
+    // The source's ratio 1/(2(1 + ν)) is at most 0.5, Mindlin's 2(1 − ν)/(2 − ν) at least 2/3.
+    let mindlin = law.tangential_ratio > 0.6;
+    format!(
+        "contact law: the source's Voigt law [9]-[14] with {spring} spring; tangential \
+         spring k_t/k_n = {:.3}, {}",
+        law.tangential_ratio,
+        if mindlin {
+            "Mindlin's 2(1 − ν)/(2 − ν) (the source's [20] gives about half)"
+        } else {
+            "the source's [20], 1/(2(1 + ν)): about half Mindlin's, so oblique impacts at \
+             small incidence rebound with about half the tangential velocity experiments \
+             show; [contact] tangential_stiffness = \"mindlin\" gives Mindlin's"
+        }
+    )
+}
+
+/// Scales of the linear springs (`Linear`, `ApparentLinear`).
+fn linear_scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+    let k = law.linear_stiffness(r_star, m_star);
+    let (tc, _) = damping::linear_contact(law.damping_ratio);
+    scales::linear(k, m_star, v, load, tc)
+}
+
 /// A wall's r_j = +0 and ω_j = −0: the lever sum r_i ω_i + r_j ω_j gets (+0)(−0) = −0, and
 /// x + (−0) = x for every x, the sum without j's term.
 const WALL: (f64, f64) = (0.0, -0.0);
@@ -81,6 +107,16 @@ impl Law for Hertz {
     fn force<T: Real>(k: [T; 5], c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
         force(k, c, s_t, dt)
     }
+    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        let k_h = law.hertz_coefficient(r_star);
+        scales::hertz(k_h, m_star, v, load, Some(law.damping_ratio))
+    }
+    fn restitution(law: &PairLaw) -> f64 {
+        damping::hertz_contact(law.damping_ratio).1
+    }
+    fn describe(law: &PairLaw) -> String {
+        describe(law, "a Hertz [15]-[17]")
+    }
 }
 
 impl Law for Linear {
@@ -96,6 +132,15 @@ impl Law for Linear {
     fn force<T: Real>(k: [T; 5], c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
         force(k, c, s_t, dt)
     }
+    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        linear_scales(law, r_star, m_star, v, load)
+    }
+    fn restitution(law: &PairLaw) -> f64 {
+        damping::linear_contact(law.damping_ratio).1
+    }
+    fn describe(law: &PairLaw) -> String {
+        describe(law, "a linear [18]")
+    }
 }
 
 impl Law for ApparentLinear {
@@ -110,6 +155,15 @@ impl Law for ApparentLinear {
     #[inline(always)]
     fn force<T: Real>(k: [T; 5], c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
         force(k, c, s_t, dt)
+    }
+    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        linear_scales(law, r_star, m_star, v, load)
+    }
+    fn restitution(law: &PairLaw) -> f64 {
+        damping::linear_contact(law.damping_ratio).1
+    }
+    fn describe(law: &PairLaw) -> String {
+        describe(law, "an apparent linear Hertz [19]")
     }
 }
 
