@@ -24,7 +24,7 @@ use std::time::Instant;
 
 use anyhow::{bail, Context};
 
-use crate::dem::spheres::NO_BODY;
+use crate::dem::{self, spheres::NO_BODY};
 use crate::io::blocks::{
     block_rows, write_block_points, write_breakages, DisplacementReference, BLOCK_COLUMNS,
 };
@@ -110,9 +110,28 @@ pub const SERIES_COLUMNS: [&str; 11] = [
     "mean_height",
 ];
 
-const PROBE_COLUMNS: [&str; 17] = [
-    "time", "step", "x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "fx", "fy", "fz", "tx",
-    "ty", "tz",
+const PROBE_COLUMNS: [&str; 21] = [
+    "time_s",
+    "step",
+    "x_m",
+    "y_m",
+    "z_m",
+    "vx_m_s",
+    "vy_m_s",
+    "vz_m_s",
+    "wx_rad_s",
+    "wy_rad_s",
+    "wz_rad_s",
+    "fx_N",
+    "fy_N",
+    "fz_N",
+    "tx_N_m",
+    "ty_N_m",
+    "tz_N_m",
+    "contacts",
+    "overlap_m",
+    "normal_force_N",
+    "tangential_force_N",
 ];
 
 /// Runs a scenario to its end time (or from a checkpoint), writing the outputs.
@@ -535,28 +554,33 @@ fn record_probes(sim: &Simulation, probes: &mut [(u32, CsvSeries)]) -> std::io::
                 s.force[i],
                 s.torque[i],
             );
+            let (c, f_n, f_t) = contact_forces(sim, i);
+            #[rustfmt::skip]
             csv.row(&[
-                sim.time,
-                sim.step as f64,
-                x.x,
-                x.y,
-                x.z,
-                v.x,
-                v.y,
-                v.z,
-                w.x,
-                w.y,
-                w.z,
-                f.x,
-                f.y,
-                f.z,
-                t.x,
-                t.y,
-                t.z,
+                sim.time, sim.step as f64,
+                x.x, x.y, x.z, v.x, v.y, v.z, w.x, w.y, w.z,
+                f.x, f.y, f.z, t.x, t.y, t.z,
+                c.count as f64, c.overlap, f_n, f_t,
             ])?;
         }
     }
     Ok(())
+}
+
+/// The sphere in slot `i`'s contacts, and its contact force (the force of the last
+/// evaluation less its weight m g and the water's load) resolved along the deepest contact's
+/// normal: the normal force [N] (positive when it pushes the sphere away from its partner)
+/// and the magnitude of the rest, the tangential force [N]. With one contact these are that
+/// contact's F_n and |F_t|, to round-off.
+fn contact_forces(sim: &Simulation, i: usize) -> (dem::probe::ContactSummary, f64, f64) {
+    let s = &sim.dem.spheres;
+    let c = sim.dem.contact_summary(i, sim.time);
+    let mut f = s.force[i] - s.mass[i] * sim.dem.gravity;
+    if let Some(load) = s.fluid.get(i) {
+        f -= load.applied.0;
+    }
+    let f_n = -f.dot(c.normal);
+    (c, f_n, (f + f_n * c.normal).length())
 }
 
 /// The block files of a run (`io::blocks`); nothing when the scenario has no blocks.

@@ -508,3 +508,42 @@ fn check_refuses_a_truncated_stl_and_prints_the_triangles_of_each_mesh_wall() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The probe of single_impact.toml reports the Hertz contact itself: while the bead touches
+/// the plate, one contact, the overlap 0.005 − z, the normal force (4/3) E* √R* δ^{3/2} (the
+/// restitution is 1, so no dashpot) and no tangential force, to round-off; none after.
+#[test]
+fn probe_reports_the_hertz_contact_of_single_impact() {
+    let out_dir = temp_dir("probe_hertz");
+    let scenario = examples().join("single_impact.toml");
+    let out = riprap(&["run", path_str(&scenario), "--output", path_str(&out_dir)]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let path = out_dir.join("probe_0.csv");
+    let header = std::fs::read_to_string(&path).unwrap();
+    let names: Vec<&str> = header.lines().next().unwrap().split(',').collect();
+    let col = |n: &str| names.iter().position(|&c| c == n).expect(n);
+    let (z, count, delta, f_n, f_t) = (
+        col("z_m"),
+        col("contacts"),
+        col("overlap_m"),
+        col("normal_force_N"),
+        col("tangential_force_N"),
+    );
+    let e_star = 1.0 / ((1.0 - 0.22f64.powi(2)) / 6.3e10 + (1.0 - 0.3f64.powi(2)) / 2.1e11);
+    let k_h = 4.0 / 3.0 * e_star * 0.005f64.sqrt();
+    let rows = csv_rows(&path);
+    let touching: Vec<&Vec<f64>> = rows.iter().filter(|r| r[count] == 1.0).collect();
+    assert!(touching.len() > 40, "{} rows in contact", touching.len());
+    for r in &touching {
+        assert!((r[delta] - (0.005 - r[z])).abs() < 1e-15, "{r:?}");
+        let hertz = k_h * r[delta].powf(1.5);
+        assert!(
+            (r[f_n] - hertz).abs() < 1e-9 * hertz.max(1e-3),
+            "{r:?} vs {hertz}"
+        );
+        assert!(r[f_t].abs() < 1e-9 * hertz.max(1e-3), "{r:?}");
+    }
+    let last = rows.last().unwrap();
+    assert_eq!((last[count], last[delta], last[f_n]), (0.0, 0.0, 0.0));
+    let _ = std::fs::remove_dir_all(&out_dir);
+}

@@ -14,6 +14,7 @@ pub mod integrate;
 pub mod material;
 pub mod neighbor;
 pub mod par;
+pub mod probe;
 pub mod spheres;
 pub mod timestep;
 pub mod wall_contacts;
