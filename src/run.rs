@@ -243,8 +243,8 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     for s in [&mut vtk_every, &mut csv_every, &mut ck_every] {
         s.start(t0, sim.step);
     }
-    let mut spheres_pvd = open_pvd(&out.join("spheres.pvd"), resuming, t0)?;
-    let mut walls_pvd = open_pvd(&out.join("walls.pvd"), resuming, t0)?;
+    let spheres_pvd = open_pvd(&out.join("spheres.pvd"), resuming, t0)?;
+    let walls_pvd = open_pvd(&out.join("walls.pvd"), resuming, t0)?;
     let kinds = Kinds::of(&sc.output);
     let columns = flow::series_columns(&sim);
     let series_path = out.join("series.csv");
@@ -257,8 +257,15 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     }
     .transpose()
     .context("cannot open the time series")?;
-    let mut block_out = BlockOutput::open(&sim, &out, resuming, t0, format, kinds.blocks)
+    let block_out = BlockOutput::open(&sim, &out, resuming, t0, format, kinds.blocks)
         .context("cannot open the block files")?;
+    let mut frames = Frames {
+        spheres: spheres_pvd,
+        walls: walls_pvd,
+        blocks: block_out,
+        kinds,
+        format,
+    };
     let mut reference =
         DisplacementReference::new(sc.output.displacement_reference_time, t0, &sim.rigid);
     let samples = sc.fluid.as_ref().map_or(&[][..], |f| &f.samples[..]);
@@ -287,14 +294,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     let ck_path = out.join("checkpoint.ck");
     if !resuming {
         if particles {
-            snapshot(
-                &sim,
-                &out,
-                (&mut spheres_pvd, &mut walls_pvd),
-                kinds,
-                format,
-            )?;
-            block_out.write(&sim, &out).context(BLOCKS)?;
+            frames.write(&sim, &out)?;
         }
         if let Some(series) = &mut series {
             series.row(&series_row(&sim)).context(SERIES)?;
@@ -345,7 +345,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         };
         if let Err(e) = stepped {
             let _ = write_spheres(&sim, &out.join("spheres_failed.vtu"), format);
-            let _ = block_out.write(&sim, &out);
+            let _ = frames.blocks.write(&sim, &out);
             flow::write_failed(&sim, &out, format);
             if let Some(p) = &progress {
                 p.abandon();
@@ -368,14 +368,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         }
         let frame = vtk_every.due(t, n);
         if frame && particles {
-            snapshot(
-                &sim,
-                &out,
-                (&mut spheres_pvd, &mut walls_pvd),
-                kinds,
-                format,
-            )?;
-            block_out.write(&sim, &out).context(BLOCKS)?;
+            frames.write(&sim, &out)?;
         }
         if let Some(f) = &mut flow_out {
             f.after_step(&sim)?;
@@ -399,14 +392,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     // uninterrupted run would.
     if interrupted_by.is_none() {
         if !vtk_every.fired_at(sim.step) && particles {
-            snapshot(
-                &sim,
-                &out,
-                (&mut spheres_pvd, &mut walls_pvd),
-                kinds,
-                format,
-            )?;
-            block_out.write(&sim, &out).context(BLOCKS)?;
+            frames.write(&sim, &out)?;
         }
         // The flow keeps its own schedule (`flow_interval`).
         if let Some(f) = &mut flow_out {
@@ -670,6 +656,24 @@ impl Kinds {
             series: o.writes(OutputKind::Series),
             plots: o.writes(OutputKind::Plots),
         }
+    }
+}
+
+/// The particle frames of a run: spheres, walls and blocks, with their `.pvd` series.
+struct Frames {
+    spheres: PvdSeries,
+    walls: PvdSeries,
+    blocks: BlockOutput,
+    kinds: Kinds,
+    format: Format,
+}
+
+impl Frames {
+    /// Writes one frame of each kind the scenario keeps.
+    fn write(&mut self, sim: &Simulation, out: &Path) -> anyhow::Result<()> {
+        let pvd = (&mut self.spheres, &mut self.walls);
+        snapshot(sim, out, pvd, self.kinds, self.format)?;
+        self.blocks.write(sim, out).context(BLOCKS)
     }
 }
 
