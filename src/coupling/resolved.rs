@@ -67,6 +67,47 @@ fn axis_index(
     }
 }
 
+/// The storage coordinates along x of the cells (the low `face_axis`-faces) `low + i`,
+/// i = 0, 1, …, in turn, as [`axis_index`] gives them, without a division per cell: on a
+/// periodic axis the wrapped index steps by one and wraps at n.
+#[derive(Clone, Copy)]
+struct XIndex {
+    /// The next coordinate, wrapped (periodic) or unwrapped.
+    next: i64,
+    /// n along x.
+    n: i64,
+    /// The lowest coordinate the flow step moves (non-periodic: 1 for x-faces, else 0).
+    lo: i64,
+    periodic: bool,
+}
+
+impl XIndex {
+    fn new(grid: &StaggeredGrid, bcs: &Boundaries, face_axis: Option<usize>, low: i64) -> Self {
+        let (n, periodic) = (grid.n[0] as i64, bcs.is_periodic(0));
+        XIndex {
+            next: if periodic { low.rem_euclid(n) } else { low },
+            n,
+            lo: if face_axis == Some(0) { 1 } else { 0 },
+            periodic,
+        }
+    }
+
+    /// The coordinate of this cell, if the flow step moves it, and a step to the next.
+    #[inline(always)]
+    fn step(&mut self) -> Option<usize> {
+        let g = self.next;
+        self.next += 1;
+        if self.periodic {
+            if self.next == self.n {
+                self.next = 0;
+            }
+            Some(g as usize)
+        } else {
+            (self.lo..self.n).contains(&g).then_some(g as usize)
+        }
+    }
+}
+
 /// Calls `f(a, c, w, x_face)` for every a-face c with weight w > 0 that the sphere of box
 /// `cells` and fractions `phi` (B³, B = `b`) covers; `x_face` is the face centre [m],
 /// unwrapped. The order is fixed (a, then k, j, i), so sums over it are deterministic.
@@ -100,7 +141,9 @@ pub fn for_each_face(
                 };
                 let y = centre(1, gj);
                 let row = p[0] * (jj + 1 + p[1] * (kk + 1)) + 1;
+                let mut x_index = XIndex::new(grid, bcs, Some(a), cells.low[0]);
                 for i in 0..ext[0] {
+                    let ii = x_index.step();
                     let l = [i, j, k];
                     let at = i + b * (j + b * k);
                     let hi = if l[a] < e[a] { phi[at] } else { 0.0 };
@@ -109,10 +152,10 @@ pub fn for_each_face(
                     if w == 0.0 {
                         continue;
                     }
-                    let gi = cells.low[0] + i as i64;
-                    let Some(ii) = axis_index(grid, bcs, Some(a), 0, gi) else {
+                    let Some(ii) = ii else {
                         continue;
                     };
+                    let gi = cells.low[0] + i as i64;
                     f(a, row + ii, w, Vec3::new(centre(0, gi), y, z));
                 }
             }
@@ -142,12 +185,14 @@ pub fn for_each_cell(
                 continue;
             };
             let row = p[0] * (jj + 1 + p[1] * (kk + 1)) + 1;
+            let mut x_index = XIndex::new(grid, bcs, None, cells.low[0]);
             for i in 0..e[0] {
+                let ii = x_index.step();
                 let v = phi[i + b * (j + b * k)];
                 if v == 0.0 {
                     continue;
                 }
-                if let Some(ii) = axis_index(grid, bcs, None, 0, cells.low[0] + i as i64) {
+                if let Some(ii) = ii {
                     f(row + ii, v);
                 }
             }
