@@ -63,13 +63,14 @@ enum Command {
         /// sheet_flow_settle and sheet_flow_bed_weight, run only when named).
         #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(riprap::validation::CASES))]
         only: Option<String>,
-        /// Case 5: beds in the ensemble (each one period, or half for a variant).
+        /// Case 5: beds in the ensemble (each the first half period on Δ = d1/5; a variant as its
+        /// level says).
         #[arg(long, default_value_t = riprap::validation::sheet_flow::ensemble::MEMBERS,
               value_parser = clap::value_parser!(usize))]
         members: usize,
-        /// Case 5's sensitivity: run only this variant (tall, wide, fine, finer, coarse_grid, soft,
-        /// softer); without it, every variant not yet saved in --output.
-        #[arg(long, value_parser = ["tall", "wide", "fine", "finer", "coarse_grid", "soft", "softer"])]
+        /// Case 5's sensitivity: run only this variant (period, finer, tall, wide, coarse_grid,
+        /// soft, softer); without it, every variant not yet saved in --output.
+        #[arg(long, value_parser = ["period", "finer", "tall", "wide", "coarse_grid", "soft", "softer"])]
         variant: Option<String>,
         /// Case 5: keep the members already complete in --output and run only the others
         /// (to grow an ensemble, or finish one cut short, with the same code).

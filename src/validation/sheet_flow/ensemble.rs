@@ -108,7 +108,13 @@ pub fn run_ensemble(
 /// or not.
 pub fn load_saved(out: &Path, level: &Level) -> Vec<SheetFlowRun> {
     (1..)
-        .map_while(|seed| load_run(&member_file(out, level, seed)).ok())
+        .map_while(|seed| {
+            // Named by the file it came from (a run saved under another level's name, as the
+            // base's were while they ran as the `fine` variant, reports as what it is now).
+            let mut run = load_run(&member_file(out, level, seed)).ok()?;
+            run.level = member_name(level, seed);
+            Some(run)
+        })
         .collect()
 }
 

@@ -591,15 +591,16 @@ pub fn write_ensemble_report(
 
 /// Writes the sensitivity table of ensembles: the base (its first half period) and each
 /// variant, criterion (a)'s windows as mean ± SE, the largest difference of the mean change
-/// of the centroids since the start from the base's over the first half period, and a plot of
-/// the small class's mean change in each with its band.
+/// of the centroids since the start over the first half period from those of the ensemble the
+/// variant changes one thing of (`Level::compare_with`, when saved), and a plot of the small
+/// class's mean change in each with its band.
 pub fn write_ensemble_sensitivity(
     out: &Path,
     ensembles: &[(String, Vec<SheetFlowRun>)],
 ) -> anyhow::Result<String> {
     let mut md = String::from(
-        "| ensemble | members | Δ [mm] | (a) small 2π/8…5π/8 [d1] | 5π/8…π [d1] | (a) | largest difference of the mean change of z_c from the base's, small [d1] | medium [d1] | large [d1] | wall-clock per member [s] |\n\
-         |---|---:|---:|---:|---:|---|---:|---:|---:|---:|\n",
+        "| ensemble | members | Δ [mm] | (a) small 2π/8…5π/8 [d1] | 5π/8…π [d1] | (a) | against | largest difference of the mean change of z_c from that ensemble's, small [d1] | medium [d1] | large [d1] | wall-clock per member [s] |\n\
+         |---|---:|---:|---:|---:|---|---|---:|---:|---:|---:|\n",
     );
     let dt = PERIOD / 80.0;
     let half = |c: Vec<(f64, f64, f64)>| -> Vec<(f64, f64, f64)> {
@@ -607,26 +608,25 @@ pub fn write_ensemble_sensitivity(
             .filter(|p| p.0 <= 0.5 * PERIOD + 1e-9)
             .collect()
     };
-    // The base is the first ensemble when it is the `full` level's.
-    let base: Option<Vec<Vec<(f64, f64, f64)>>> = ensembles
-        .first()
-        .filter(|(n, _)| n == super::Level::FULL.name)
-        .map(|(_, r)| {
-            (0..3)
-                .map(|c| half(mean_centroid(r, c, dt, true)))
-                .collect()
-        });
+    let curves = |r: &[SheetFlowRun]| -> Vec<Vec<(f64, f64, f64)>> {
+        (0..3)
+            .map(|c| half(mean_centroid(r, c, dt, true)))
+            .collect()
+    };
     // (name, band, mean) of the small class per ensemble.
     type Points = Vec<(f64, f64)>;
     let mut plots: Vec<(&str, Points, Points)> = Vec::new();
     for (name, runs) in ensembles {
         let s = summarise_ensemble(runs);
-        let mine: Vec<Vec<(f64, f64, f64)>> = (0..3)
-            .map(|c| half(mean_centroid(runs, c, dt, true)))
-            .collect();
+        let mine = curves(runs);
+        let against = super::Level::named(name).map_or("", |l| l.compare_with);
+        let base = ensembles
+            .iter()
+            .find(|(n, _)| !against.is_empty() && n == against)
+            .map(|(_, r)| curves(r));
         let diff: Vec<String> = (0..3)
             .map(|c| match &base {
-                Some(base) if name != super::Level::FULL.name => {
+                Some(base) => {
                     let d = mine[c]
                         .iter()
                         .zip(&base[c])
@@ -640,12 +640,13 @@ pub fn write_ensemble_sensitivity(
         let secs = Estimate::of(&runs.iter().map(|r| r.seconds).collect::<Vec<_>>());
         let _ = writeln!(
             md,
-            "| {name} | {} | {:.4} | {} | {} | {} | {} | {} | {} | {:.0} |",
+            "| {name} | {} | {:.4} | {} | {} | {} | {} | {} | {} | {} | {:.0} |",
             runs.len(),
             runs.first().map_or(0.0, |r| r.cell_size) * 1e3,
             change(s.fall),
             change(s.after),
             s.sinking.text(),
+            if base.is_some() { against } else { "–" },
             diff[0],
             diff[1],
             diff[2],

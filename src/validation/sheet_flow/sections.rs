@@ -82,8 +82,8 @@ fn run_or_resume(
 }
 
 /// Case 5: quick, 0.02 s of the base case on the case's own bed (the flow starts, the bed
-/// holds); full, the ensemble of `case5.members` beds over one period each, samples saved to
-/// `sheet_flow_full_seed<k>.bin` beside the report.
+/// holds); full, the ensemble of `case5.members` beds of the base level (`Level::FULL`),
+/// samples saved to `sheet_flow_full_seed<k>.bin` beside the report.
 pub fn ensemble(
     out: &Path,
     quick: bool,
@@ -129,9 +129,10 @@ fn saved_ensembles(out: &Path) -> Vec<(String, Vec<SheetFlowRun>)> {
         .collect()
 }
 
-/// Sensitivity of case 5 (run only when named): ensembles of the first half period of each
-/// variant (a taller box, a wider one, the grids d1/5 and d1/3, softer springs), against the
-/// base ensemble saved in `out`; reported, no verdict. Runs `case5.variant`, or without one
+/// Sensitivity of case 5 (run only when named): ensembles of each variant (`Level::VARIANTS`:
+/// the whole period on d1/4, the grid d1/6, and on d1/4 a taller box, a wider one, the grid
+/// d1/3, softer springs), each against the ensemble it changes one thing of; reported, no
+/// verdict. Runs `case5.variant`, or without one
 /// every variant whose ensemble is not yet saved in `out` (so the study can be run one
 /// variant at a time), then tabulates all that are saved. Quick: two members of each
 /// variant for 0.02 s, which only shows that the set-ups build and run.
