@@ -24,11 +24,67 @@ pub fn roots(r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
     [a, (m_star * a).sqrt()]
 }
 
-/// The springs and dashpots of a contact: k_n, k_t [N m⁻¹] and γ_n, γ_t [N s m⁻¹] from the
-/// constants (k_n/a, k_t/a, c_n, c_t) and the roots (a, √(m* a)).
+/// The constants of the Hertz-Mindlin laws for a pair of materials (see
+/// `PairLaw::hertz_mindlin`): the springs and dashpots per contact radius a = √(R* δ).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Params<T> {
+    /// k_n/a = (4/3) E* [Pa].
+    pub normal_stiffness: T,
+    /// k_t/a = 8 G* [Pa].
+    pub tangential_stiffness: T,
+    /// c_n, with γ_n = c_n √(m* a) [kg^½ m^-½ s⁻¹].
+    pub normal_damping: T,
+    /// c_t, with γ_t = c_t √(m* a) [kg^½ m^-½ s⁻¹].
+    pub tangential_damping: T,
+    /// μ [-].
+    pub friction: T,
+}
+
+/// [`Params`] of a pair.
+pub fn params(law: &PairLaw) -> Params<f64> {
+    let (kn_a, kt_a, c_n, c_t) = law.hertz_mindlin;
+    Params {
+        normal_stiffness: kn_a,
+        tangential_stiffness: kt_a,
+        normal_damping: c_n,
+        tangential_damping: c_t,
+        friction: law.friction,
+    }
+}
+
+/// [`Params`] as the lanes' columns hold them.
+pub fn pack(p: Params<f64>) -> Constants {
+    [
+        p.normal_stiffness,
+        p.tangential_stiffness,
+        p.normal_damping,
+        p.tangential_damping,
+        p.friction,
+    ]
+}
+
+/// [`Params`] from the lanes' columns.
 #[inline(always)]
-pub fn springs<T: Real>(k: [T; 5], [a, root]: [T; 2]) -> [T; 4] {
-    [k[0] * a, k[1] * a, k[2] * root, k[3] * root]
+pub fn unpack<T: Real>([kn, kt, cn, ct, friction]: [T; 5]) -> Params<T> {
+    Params {
+        normal_stiffness: kn,
+        tangential_stiffness: kt,
+        normal_damping: cn,
+        tangential_damping: ct,
+        friction,
+    }
+}
+
+/// The springs and dashpots of a contact: k_n, k_t [N m⁻¹] and γ_n, γ_t [N s m⁻¹] from the
+/// constants and the roots (a, √(m* a)).
+#[inline(always)]
+pub fn springs<T: Real>(p: &Params<T>, [a, root]: [T; 2]) -> [T; 4] {
+    [
+        p.normal_stiffness * a,
+        p.tangential_stiffness * a,
+        p.normal_damping * root,
+        p.tangential_damping * root,
+    ]
 }
 
 /// The contact radii c_i,j = r_i,j − δ/2 [m] and the relative velocity of the contact points
@@ -46,15 +102,20 @@ impl Law for HertzMindlin {
     /// also when δ/2 rounds to zero.
     const WALL: (f64, f64) = (-0.0, -0.0);
 
-    /// [k_n/a = (4/3) E*, k_t/a = 8 G* [Pa], c_n, c_t [kg^½ m^-½ s⁻¹] (γ = c √(m* a), see
-    /// `PairLaw::hertz_mindlin`), μ [-]].
-    fn constants(law: &PairLaw) -> Constants {
-        let (kn_a, kt_a, c_n, c_t) = law.hertz_mindlin;
-        [kn_a, kt_a, c_n, c_t, law.friction]
+    type Params<T: Real> = Params<T>;
+    fn params(law: &PairLaw) -> Params<f64> {
+        params(law)
+    }
+    fn pack(p: Params<f64>) -> Constants {
+        pack(p)
+    }
+    #[inline(always)]
+    fn unpack<T: Real>(k: [T; 5]) -> Params<T> {
+        unpack(k)
     }
 
     #[inline(always)]
-    fn prepare(_: &Constants, r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
+    fn prepare(_: &Params<f64>, r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
         roots(r_star, m_star, delta)
     }
 
@@ -71,9 +132,9 @@ impl Law for HertzMindlin {
     /// (S = S_t), so a contact takes three square roots (distance, a, √(m* a)) and a fourth
     /// for the slider.
     #[inline(always)]
-    fn force<T: Real>(k: [T; 5], c: &Contact<T>, xi: V3<T>, dt: T) -> Response<T> {
-        let [k_n, k_t, gamma_n, gamma_t] = springs(k, c.pre);
-        let mu = k[4];
+    fn force<T: Real>(p: &Params<T>, c: &Contact<T>, xi: V3<T>, dt: T) -> Response<T> {
+        let [k_n, k_t, gamma_n, gamma_t] = springs(p, c.pre);
+        let mu = p.friction;
         let n = c.n;
         let (c_i, c_j, v_r) = contact_velocity(c);
         let delta_dot = v_r.dot(n);

@@ -5,7 +5,7 @@
 //! Symbols as in `hertz_mindlin`: k_n, k_t [N m⁻¹], γ_n, γ_t [N s m⁻¹], ξ the tangential
 //! displacement [m], μ the friction coefficient.
 
-use super::hertz_mindlin::{contact_velocity, roots, springs, HertzMindlin};
+use super::hertz_mindlin::{self, contact_velocity, roots, springs, HertzMindlin, Params};
 use super::real::{Real, V3};
 use super::scales::{self, Scales};
 use super::{Constants, Contact, Law, Response};
@@ -17,14 +17,22 @@ pub struct HertzMindlinCoulomb;
 impl Law for HertzMindlinCoulomb {
     const WALL: (f64, f64) = HertzMindlin::WALL;
 
+    type Params<T: Real> = Params<T>;
     /// As `HertzMindlin`'s; the dashpots take the damping ratio of the clamped Hertz law
     /// (`PairLaw::new`).
-    fn constants(law: &PairLaw) -> Constants {
-        HertzMindlin::constants(law)
+    fn params(law: &PairLaw) -> Params<f64> {
+        hertz_mindlin::params(law)
+    }
+    fn pack(p: Params<f64>) -> Constants {
+        hertz_mindlin::pack(p)
+    }
+    #[inline(always)]
+    fn unpack<T: Real>(k: [T; 5]) -> Params<T> {
+        hertz_mindlin::unpack(k)
     }
 
     #[inline(always)]
-    fn prepare(_: &Constants, r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
+    fn prepare(_: &Params<f64>, r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
         roots(r_star, m_star, delta)
     }
 
@@ -42,9 +50,9 @@ impl Law for HertzMindlinCoulomb {
     /// (`tests/oblique_impact.rs`). The spring keeps its own state within μ F_n (as the Voigt
     /// law's).
     #[inline(always)]
-    fn force<T: Real>(k: [T; 5], c: &Contact<T>, xi: V3<T>, dt: T) -> Response<T> {
-        let [k_n, k_t, gamma_n, gamma_t] = springs(k, c.pre);
-        let (mu, zero) = (k[4], T::splat(0.0));
+    fn force<T: Real>(p: &Params<T>, c: &Contact<T>, xi: V3<T>, dt: T) -> Response<T> {
+        let [k_n, k_t, gamma_n, gamma_t] = springs(p, c.pre);
+        let (mu, zero) = (p.friction, T::splat(0.0));
         let n = c.n;
         let (c_i, c_j, v_r) = contact_velocity(c);
         let delta_dot = v_r.dot(n);

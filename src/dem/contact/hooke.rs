@@ -13,21 +13,54 @@ use crate::dem::material::PairLaw;
 /// LAMMPS's `gran/hooke/history`.
 pub struct Hooke;
 
+/// The constants of the Hooke law for a pair of materials.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Params<T> {
+    /// k_n [N m⁻¹].
+    pub normal_stiffness: T,
+    /// k_t [N m⁻¹].
+    pub tangential_stiffness: T,
+    /// γ_n [s⁻¹]: the normal dashpot is m* γ_n.
+    pub normal_damping: T,
+    /// γ_t [s⁻¹].
+    pub tangential_damping: T,
+    /// μ [-] (LAMMPS xmu).
+    pub friction: T,
+}
+
 impl Law for Hooke {
     /// A wall's r_j = +0 and ω_j = −0: the spin sum r_i ω_i + r_j ω_j gets (+0)(−0) = −0, and
     /// x + (−0) = x for every x, the sum without j's term.
     const WALL: (f64, f64) = (0.0, -0.0);
 
-    /// [k_n, k_t [N m⁻¹], γ_n, γ_t [s⁻¹], μ [-]].
-    fn constants(law: &PairLaw) -> Constants {
-        let (g_n, g_t) = law.gamma;
+    type Params<T: Real> = Params<T>;
+    fn params(law: &PairLaw) -> Params<f64> {
+        Params {
+            normal_stiffness: law.stiffness,
+            tangential_stiffness: law.tangential_stiffness,
+            normal_damping: law.gamma.0,
+            tangential_damping: law.gamma.1,
+            friction: law.friction,
+        }
+    }
+    fn pack(p: Params<f64>) -> Constants {
         [
-            law.stiffness,
-            law.tangential_stiffness,
-            g_n,
-            g_t,
-            law.friction,
+            p.normal_stiffness,
+            p.tangential_stiffness,
+            p.normal_damping,
+            p.tangential_damping,
+            p.friction,
         ]
+    }
+    #[inline(always)]
+    fn unpack<T: Real>([kn, kt, gn, gt, friction]: [T; 5]) -> Params<T> {
+        Params {
+            normal_stiffness: kn,
+            tangential_stiffness: kt,
+            normal_damping: gn,
+            tangential_damping: gt,
+            friction,
+        }
     }
 
     /// One step of the Hooke contact:
@@ -39,8 +72,9 @@ impl Law for Hooke {
     /// d = m* γ_t v_t / k_t: ξ ← s (ξ + d) − d and F_t ← s F_t (F_t = 0 if ξ was zero before
     /// the projection). Torques T_i = r_i n × F_t, T_j = r_j n × F_t.
     #[inline(always)]
-    fn force<T: Real>(k: [T; 5], c: &Contact<T>, xi: V3<T>, dt: T) -> Response<T> {
-        let [k_n, k_t, gamma_n, gamma_t, mu] = k;
+    fn force<T: Real>(p: &Params<T>, c: &Contact<T>, xi: V3<T>, dt: T) -> Response<T> {
+        let (k_n, k_t, mu) = (p.normal_stiffness, p.tangential_stiffness, p.friction);
+        let (gamma_n, gamma_t) = (p.normal_damping, p.tangential_damping);
         let (n, m, zero) = (c.n, c.m_star, T::splat(0.0));
         let delta_dot = c.dv.dot(n);
         let f_n = k_n * c.delta + m * gamma_n * delta_dot;

@@ -143,8 +143,8 @@ pub fn run<L: Law>(l: &mut Lanes, dt: f64) {
             m_star: load(&l.m_star, c),
             pre: l.pre.each_ref().map(|p| load(p, c)),
         };
-        let k = l.params.each_ref().map(|p| load(p, c));
-        let r = L::force(k, &contact, load_v(&l.hist, c), dt);
+        let p = L::unpack(l.params.each_ref().map(|p| load(p, c)));
+        let r = L::force(&p, &contact, load_v(&l.hist, c), dt);
         store_v(&mut l.hist, c, r.hist);
         store_v(&mut l.force, c, r.force);
         store_v(&mut l.torque_i, c, r.torque_i);
@@ -237,7 +237,7 @@ mod tests {
         put(&mut l.hist, k, *xi);
         l.delta[k] = p.delta;
         (l.r_i[k], l.r_j[k], l.r_star[k], l.m_star[k]) = (p.r_i, r_j, p.r_star, p.m_star);
-        [l.pre[0][k], l.pre[1][k]] = L::prepare(&params, p.r_star, p.m_star, p.delta);
+        [l.pre[0][k], l.pre[1][k]] = L::prepare(&L::unpack(params), p.r_star, p.m_star, p.delta);
         for (c, v) in params.into_iter().enumerate() {
             l.params[c][k] = v;
         }

@@ -146,28 +146,40 @@ pub struct Response<T> {
     pub torque_j: V3<T>,
 }
 
-/// The constants of a law for one pair of materials, as the lanes carry them [various units,
-/// named by each law].
+/// The constants of a law for one pair of materials as the lanes carry them, one column each
+/// (`Law::pack`).
 pub type Constants = [f64; 5];
 
 /// A contact law: one formulation ([`Law::force`]), run one contact at a time
 /// ([`contact_force`]) and on columns of contacts (`lanes::run`), with the same bits.
 pub trait Law {
+    /// The law's constants for one pair of materials, named and with their units, in numbers
+    /// `T` (one pair, or eight contacts' pairs).
+    type Params<T: Real>: Copy;
     /// The radius r_j [m] and the spin ω_j (each component) [rad s⁻¹] a wall takes in
     /// [`Contact`]: values whose terms change no sum, so that a wall gives what a sphere of
     /// infinite radius and mass would (signed zeros; each law says why its pair works).
     const WALL: (f64, f64);
-    /// The law's constants for a pair of materials.
-    fn constants(law: &PairLaw) -> Constants;
+    /// The law's constants for a pair of materials, derived from them once.
+    fn params(law: &PairLaw) -> Self::Params<f64>;
+    /// The constants as the lanes' columns hold them.
+    fn pack(p: Self::Params<f64>) -> Constants;
+    /// The constants from the lanes' columns.
+    fn unpack<T: Real>(k: [T; 5]) -> Self::Params<T>;
+    /// [`Law::params`], packed.
+    #[inline(always)]
+    fn constants(law: &PairLaw) -> Constants {
+        Self::pack(Self::params(law))
+    }
     /// Values of one contact that need more than IEEE-exact arithmetic, or that the kernels
     /// take early so that the processor overlaps their square roots (R* [m], m* [kg], δ ≥ 0
     /// [m]); zeros when the law has none.
     #[inline(always)]
-    fn prepare(_k: &Constants, _r_star: f64, _m_star: f64, _delta: f64) -> [f64; 2] {
+    fn prepare(_p: &Self::Params<f64>, _r_star: f64, _m_star: f64, _delta: f64) -> [f64; 2] {
         [0.0; 2]
     }
     /// One step of the contact: `hist` is its history before the step.
-    fn force<T: Real>(k: [T; 5], c: &Contact<T>, hist: V3<T>, dt: T) -> Response<T>;
+    fn force<T: Real>(p: &Self::Params<T>, c: &Contact<T>, hist: V3<T>, dt: T) -> Response<T>;
     /// A head-on impact of a pairing with R* [m] and m* [kg] at `v` [m s⁻¹], and its overlap
     /// at rest under `load` [N].
     fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> scales::Scales;
@@ -224,9 +236,9 @@ pub fn force_with<L: Law>(k: Constants, p: &Pair, hist: &mut Vec3, dt: f64) -> R
         r_i: p.r_i,
         r_j,
         m_star: p.m_star,
-        pre: L::prepare(&k, p.r_star, p.m_star, p.delta),
+        pre: L::prepare(&L::unpack(k), p.r_star, p.m_star, p.delta),
     };
-    let r = L::force(k, &c, (*hist).into(), dt);
+    let r = L::force(&L::unpack(k), &c, (*hist).into(), dt);
     *hist = r.hist.into();
     Reaction {
         force: r.force.into(),

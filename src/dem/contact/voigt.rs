@@ -19,16 +19,54 @@ pub struct Linear;
 /// and masses ([`apparent_stiffness`]).
 pub struct ApparentLinear;
 
-/// Constants: [K/√R* = (4/3) E* (Hertz, apparent) or k_n (linear) [Pa or N m⁻¹], v_ref
-/// [m s⁻¹] (apparent), ζ the dashpots' damping ratio [-], k_t/k_n [20] [-], μ [-]].
-fn constants(law: &PairLaw, k0: f64) -> Constants {
+/// The constants of the Voigt laws for a pair of materials.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Params<T> {
+    /// The spring's factor: K/√R* = (4/3) E* [Pa] (Hertz, apparent linear) or k_n [N m⁻¹]
+    /// (linear).
+    pub spring: T,
+    /// The reference impact velocity v_ref of [19] [m s⁻¹] (apparent linear).
+    pub reference_velocity: T,
+    /// ζ, the dashpots' damping ratio: c = 2 ζ √(m* k) [-] [21].
+    pub damping_ratio: T,
+    /// k_t/k_n [-] [20].
+    pub tangential_ratio: T,
+    /// μ [-].
+    pub friction: T,
+}
+
+/// The constants of a pair with the spring factor `spring`.
+fn params(law: &PairLaw, spring: f64) -> Params<f64> {
+    Params {
+        spring,
+        reference_velocity: law.reference_velocity,
+        damping_ratio: law.damping_ratio,
+        tangential_ratio: law.tangential_ratio,
+        friction: law.friction,
+    }
+}
+
+fn pack(p: Params<f64>) -> Constants {
     [
-        k0,
-        law.reference_velocity,
-        law.damping_ratio,
-        law.tangential_ratio,
-        law.friction,
+        p.spring,
+        p.reference_velocity,
+        p.damping_ratio,
+        p.tangential_ratio,
+        p.friction,
     ]
+}
+
+#[inline(always)]
+fn unpack<T: Real>(
+    [spring, reference_velocity, damping_ratio, tangential_ratio, friction]: [T; 5],
+) -> Params<T> {
+    Params {
+        spring,
+        reference_velocity,
+        damping_ratio,
+        tangential_ratio,
+        friction,
+    }
 }
 
 /// The linear stiffness of the apparent linear Hertz spring [N m⁻¹] for the Hertz factor
@@ -95,17 +133,25 @@ fn linear_scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> 
 const WALL: (f64, f64) = (0.0, -0.0);
 
 impl Law for Hertz {
+    type Params<T: Real> = Params<T>;
     const WALL: (f64, f64) = WALL;
-    fn constants(law: &PairLaw) -> Constants {
-        constants(law, 4.0 / 3.0 * law.e_star)
+    fn params(law: &PairLaw) -> Params<f64> {
+        params(law, 4.0 / 3.0 * law.e_star)
+    }
+    fn pack(p: Params<f64>) -> Constants {
+        pack(p)
     }
     #[inline(always)]
-    fn prepare(k: &Constants, r_star: f64, _: f64, delta: f64) -> [f64; 2] {
-        hertz_spring(k[0], r_star, delta)
+    fn unpack<T: Real>(k: [T; 5]) -> Params<T> {
+        unpack(k)
     }
     #[inline(always)]
-    fn force<T: Real>(k: [T; 5], c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
-        force(k, c, s_t, dt)
+    fn prepare(p: &Params<f64>, r_star: f64, _: f64, delta: f64) -> [f64; 2] {
+        hertz_spring(p.spring, r_star, delta)
+    }
+    #[inline(always)]
+    fn force<T: Real>(p: &Params<T>, c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
+        force(p, c, s_t, dt)
     }
     fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
         let k_h = law.hertz_coefficient(r_star);
@@ -120,17 +166,25 @@ impl Law for Hertz {
 }
 
 impl Law for Linear {
+    type Params<T: Real> = Params<T>;
     const WALL: (f64, f64) = WALL;
-    fn constants(law: &PairLaw) -> Constants {
-        constants(law, law.stiffness)
+    fn params(law: &PairLaw) -> Params<f64> {
+        params(law, law.stiffness)
+    }
+    fn pack(p: Params<f64>) -> Constants {
+        pack(p)
     }
     #[inline(always)]
-    fn prepare(k: &Constants, _: f64, _: f64, delta: f64) -> [f64; 2] {
-        linear_spring(k[0], delta)
+    fn unpack<T: Real>(k: [T; 5]) -> Params<T> {
+        unpack(k)
     }
     #[inline(always)]
-    fn force<T: Real>(k: [T; 5], c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
-        force(k, c, s_t, dt)
+    fn prepare(p: &Params<f64>, _: f64, _: f64, delta: f64) -> [f64; 2] {
+        linear_spring(p.spring, delta)
+    }
+    #[inline(always)]
+    fn force<T: Real>(p: &Params<T>, c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
+        force(p, c, s_t, dt)
     }
     fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
         linear_scales(law, r_star, m_star, v, load)
@@ -144,17 +198,26 @@ impl Law for Linear {
 }
 
 impl Law for ApparentLinear {
+    type Params<T: Real> = Params<T>;
     const WALL: (f64, f64) = WALL;
-    fn constants(law: &PairLaw) -> Constants {
-        constants(law, 4.0 / 3.0 * law.e_star)
+    fn params(law: &PairLaw) -> Params<f64> {
+        params(law, 4.0 / 3.0 * law.e_star)
+    }
+    fn pack(p: Params<f64>) -> Constants {
+        pack(p)
     }
     #[inline(always)]
-    fn prepare(k: &Constants, r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
-        linear_spring(apparent_stiffness(k[0], k[1], r_star, m_star), delta)
+    fn unpack<T: Real>(k: [T; 5]) -> Params<T> {
+        unpack(k)
     }
     #[inline(always)]
-    fn force<T: Real>(k: [T; 5], c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
-        force(k, c, s_t, dt)
+    fn prepare(p: &Params<f64>, r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
+        let k_n = apparent_stiffness(p.spring, p.reference_velocity, r_star, m_star);
+        linear_spring(k_n, delta)
+    }
+    #[inline(always)]
+    fn force<T: Real>(p: &Params<T>, c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
+        force(p, c, s_t, dt)
     }
     fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
         linear_scales(law, r_star, m_star, v, load)
@@ -183,8 +246,8 @@ impl Law for ApparentLinear {
 ///
 /// Implements [7], [9], [10], [11], [12], [13], [14], [21].
 #[inline(always)]
-pub fn force<T: Real>(k: [T; 5], c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
-    let [_, _, zeta, ratio, mu] = k;
+pub fn force<T: Real>(p: &Params<T>, c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
+    let (zeta, ratio, mu) = (p.damping_ratio, p.tangential_ratio, p.friction);
     let [s_n, k_n] = c.pre;
     let (n, m, zero, two) = (c.n, c.m_star, T::splat(0.0), T::splat(2.0));
     let c_n = two * zeta * (m * k_n).sqrt();

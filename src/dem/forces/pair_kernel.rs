@@ -447,7 +447,7 @@ fn geometry_columns<K: Law>(b: &mut Batch, len: usize) {
         let rs = r_i[k] * r_j[k] / r_sum;
         let ms = m_num[k] / m_den[k];
         let constants = params.each_ref().map(|c| c[k]);
-        let [pa, pb] = K::prepare(&constants, rs, ms, dl.max(0.0));
+        let [pa, pb] = K::prepare(&K::unpack(constants), rs, ms, dl.max(0.0));
         let inv_dist = 1.0 / dist;
         nx[k] *= inv_dist;
         ny[k] *= inv_dist;

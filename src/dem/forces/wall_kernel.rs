@@ -216,7 +216,7 @@ fn prepare<K: Law>(l: &mut Lanes, len: usize) {
     let (a, b) = (&mut a[..len], &mut b[..len]);
     for q in 0..len {
         let constants = l.params.each_ref().map(|c| c[q]);
-        [a[q], b[q]] = K::prepare(&constants, r[q], m[q], delta[q]);
+        [a[q], b[q]] = K::prepare(&K::unpack(constants), r[q], m[q], delta[q]);
     }
 }
 
