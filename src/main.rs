@@ -68,9 +68,9 @@ enum Command {
         #[arg(long, default_value_t = riprap::validation::sheet_flow::ensemble::MEMBERS,
               value_parser = clap::value_parser!(usize))]
         members: usize,
-        /// Case 5's sensitivity: run only this variant (period, finer, tall, wide, coarse_grid,
-        /// soft, softer); without it, every variant not yet saved in --output.
-        #[arg(long, value_parser = ["period", "finer", "tall", "wide", "coarse_grid", "soft", "softer"])]
+        /// Case 5's sensitivity: run only this variant (period, finer, tall_base, tall, wide,
+        /// coarse_grid, soft, softer); without it, every variant not yet saved in --output.
+        #[arg(long, value_parser = ["period", "finer", "tall_base", "tall", "wide", "coarse_grid", "soft", "softer"])]
         variant: Option<String>,
         /// Case 5: keep the members already complete in --output and run only the others
         /// (to grow an ensemble, or finish one cut short, with the same code).

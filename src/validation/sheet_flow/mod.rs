@@ -171,6 +171,14 @@ impl Level {
         width: 2.0 * WIDTH,
         ..Level::HALF
     };
+    /// Sensitivity: the base's box 1.5 times taller (13.9 cm, 135 cells of d1/5), first half
+    /// period: the depth of water over the bed on the base's grid.
+    pub const TALL_BASE: Level = Level {
+        name: "tall_base",
+        height: 1.5 * HEIGHT,
+        compare_with: "full",
+        ..Level::FULL
+    };
     /// Sensitivity: the finer grid Δ = d1/6 (120 × 54 × 108 cells), first half period: with
     /// the base (d1/5) and `period` (d1/4), three grids to tell whether the result converges.
     pub const FINER: Level = Level {
@@ -181,7 +189,7 @@ impl Level {
     };
 
     /// Every level, the base first.
-    pub const ALL: [Level; 10] = [
+    pub const ALL: [Level; 11] = [
         Level::FULL,
         Level::PERIOD,
         Level::HALF,
@@ -192,12 +200,14 @@ impl Level {
         Level::TALL,
         Level::WIDE,
         Level::FINER,
+        Level::TALL_BASE,
     ];
 
     /// The variants of the sensitivity study (`riprap validate --only sheet_flow_sensitivity`).
-    pub const VARIANTS: [Level; 7] = [
+    pub const VARIANTS: [Level; 8] = [
         Level::PERIOD,
         Level::FINER,
+        Level::TALL_BASE,
         Level::TALL,
         Level::WIDE,
         Level::COARSE_GRID,
@@ -206,7 +216,7 @@ impl Level {
     ];
 
     /// The level of a name (`full`, `period`, `half`, `quick`, `coarse_grid`, `soft`,
-    /// `softer`, `tall`, `wide`, `finer`).
+    /// `softer`, `tall`, `wide`, `finer`, `tall_base`).
     pub fn named(name: &str) -> Option<Level> {
         Level::ALL.into_iter().find(|l| l.name == name)
     }
