@@ -40,7 +40,7 @@ pub struct ContactScales {
 ///
 /// Implements [22].
 pub fn contact_scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> ContactScales {
-    let s = contact::scales(law, r_star, m_star, v, load);
+    let s = (contact::law_fns(law.kind).scales)(law, r_star, m_star, v, load);
     ContactScales {
         r_star,
         m_star,

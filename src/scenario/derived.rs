@@ -172,10 +172,10 @@ impl Derived {
 
 /// The restitution of a head-on impact in continuous time: what the dashpots were chosen for.
 fn ideal_restitution(law: &PairLaw) -> f64 {
-    contact::restitution_and_description(law).0
+    (contact::law_fns(law.kind).restitution)(law)
 }
 
 /// What `check` says of the contact law: which law, and the choices that change results.
 fn law_line(law: &PairLaw) -> String {
-    contact::restitution_and_description(law).1
+    (contact::law_fns(law.kind).describe)(law)
 }

@@ -9,7 +9,7 @@
 
 use super::real::{Real, V3};
 use super::scales::{self, Scales};
-use super::{Constants, Contact, Law, Response};
+use super::{Columns, Contact, Law, Response};
 use crate::dem::material::PairLaw;
 
 /// LIGGGHTS's Hertz-Mindlin.
@@ -52,49 +52,74 @@ pub fn params(law: &PairLaw) -> Params<f64> {
     }
 }
 
-/// [`Params`] as the lanes' columns hold them.
-pub fn pack(p: Params<f64>) -> Constants {
-    [
-        p.normal_stiffness,
-        p.tangential_stiffness,
-        p.normal_damping,
-        p.tangential_damping,
-        p.friction,
-    ]
-}
-
-/// [`Params`] from the lanes' columns.
-#[inline(always)]
-pub fn unpack<T: Real>([kn, kt, cn, ct, friction]: [T; 5]) -> Params<T> {
-    Params {
-        normal_stiffness: kn,
-        tangential_stiffness: kt,
-        normal_damping: cn,
-        tangential_damping: ct,
-        friction,
+impl<T: Copy> Columns<T> for Params<T> {
+    #[inline(always)]
+    fn from_columns([kn, kt, cn, ct, friction]: [T; 5]) -> Self {
+        Params {
+            normal_stiffness: kn,
+            tangential_stiffness: kt,
+            normal_damping: cn,
+            tangential_damping: ct,
+            friction,
+        }
+    }
+    fn to_columns(self) -> [T; 5] {
+        [
+            self.normal_stiffness,
+            self.tangential_stiffness,
+            self.normal_damping,
+            self.tangential_damping,
+            self.friction,
+        ]
     }
 }
 
-/// The springs and dashpots of a contact: k_n, k_t [N m⁻¹] and γ_n, γ_t [N s m⁻¹] from the
-/// constants and the roots (a, √(m* a)).
-#[inline(always)]
-pub fn springs<T: Real>(p: &Params<T>, [a, root]: [T; 2]) -> [T; 4] {
-    [
-        p.normal_stiffness * a,
-        p.tangential_stiffness * a,
-        p.normal_damping * root,
-        p.tangential_damping * root,
-    ]
+/// What both Hertz-Mindlin laws compute alike for one contact before their sliders.
+#[derive(Clone, Copy)]
+pub struct Step<T> {
+    /// k_t = (k_t/a) a [N m⁻¹].
+    pub k_t: T,
+    /// γ_t = c_t √(m* a) [N s m⁻¹].
+    pub gamma_t: T,
+    /// The contact radii c_i,j = r_i,j − δ/2 [m] (the torques' lever arms).
+    pub c_i: T,
+    /// See [`Step::c_i`].
+    pub c_j: T,
+    /// F_n = k_n δ + γ_n δ̇ [N], k_n = (k_n/a) a, γ_n = c_n √(m* a).
+    pub f_n: T,
+    /// v_t = v_r − δ̇ n [m s⁻¹], with v_r = Δv + (c_i ω_i + c_j ω_j) × n.
+    pub v_t: V3<T>,
+    /// ξ + v_t Δt projected onto the tangent plane (no rescaling) [m].
+    pub xi: V3<T>,
 }
 
-/// The contact radii c_i,j = r_i,j − δ/2 [m] and the relative velocity of the contact points
-/// v_r = Δv + (c_i ω_i + c_j ω_j) × n [m s⁻¹].
-#[inline(always)]
-pub fn contact_velocity<T: Real>(c: &Contact<T>) -> (T, T, V3<T>) {
-    let h = T::splat(0.5) * c.delta;
-    let (c_i, c_j) = (c.r_i - h, c.r_j - h);
-    let lever = c.w_i.scale(c_i) + c.w_j.scale(c_j);
-    (c_i, c_j, c.dv + lever.cross(c.n))
+impl<T: Real> Step<T> {
+    /// The step of a contact with history ξ (`c.pre` holds a and √(m* a), `roots`).
+    #[inline(always)]
+    pub fn new(p: &Params<T>, c: &Contact<T>, xi: V3<T>, dt: T) -> Step<T> {
+        let [a, root] = c.pre;
+        let (k_n, k_t) = (p.normal_stiffness * a, p.tangential_stiffness * a);
+        let (gamma_n, gamma_t) = (p.normal_damping * root, p.tangential_damping * root);
+        let n = c.n;
+        let h = T::splat(0.5) * c.delta;
+        let (c_i, c_j) = (c.r_i - h, c.r_j - h);
+        let lever = c.w_i.scale(c_i) + c.w_j.scale(c_j);
+        let v_r = c.dv + lever.cross(n);
+        let delta_dot = v_r.dot(n);
+        let f_n = k_n * c.delta + gamma_n * delta_dot;
+        let v_t = v_r - n.scale(delta_dot);
+        let xi = xi + v_t.scale(dt);
+        let xi = xi - n.scale(xi.dot(n));
+        Step {
+            k_t,
+            gamma_t,
+            c_i,
+            c_j,
+            f_n,
+            v_t,
+            xi,
+        }
+    }
 }
 
 impl Law for HertzMindlin {
@@ -105,13 +130,6 @@ impl Law for HertzMindlin {
     type Params<T: Real> = Params<T>;
     fn params(law: &PairLaw) -> Params<f64> {
         params(law)
-    }
-    fn pack(p: Params<f64>) -> Constants {
-        pack(p)
-    }
-    #[inline(always)]
-    fn unpack<T: Real>(k: [T; 5]) -> Params<T> {
-        unpack(k)
     }
 
     #[inline(always)]
@@ -133,18 +151,18 @@ impl Law for HertzMindlin {
     /// for the slider.
     #[inline(always)]
     fn force<T: Real>(p: &Params<T>, c: &Contact<T>, xi: V3<T>, dt: T) -> Response<T> {
-        let [k_n, k_t, gamma_n, gamma_t] = springs(p, c.pre);
-        let mu = p.friction;
+        let Step {
+            k_t,
+            gamma_t,
+            c_i,
+            c_j,
+            f_n,
+            v_t,
+            xi,
+        } = Step::new(p, c, xi, dt);
         let n = c.n;
-        let (c_i, c_j, v_r) = contact_velocity(c);
-        let delta_dot = v_r.dot(n);
-        let f_n = k_n * c.delta + gamma_n * delta_dot;
-        let v_t = v_r - n.scale(delta_dot);
-
-        let xi = xi + v_t.scale(dt);
-        let xi = xi - n.scale(xi.dot(n));
         let f_spring = xi.scale(-k_t);
-        let limit = mu * f_n.abs();
+        let limit = p.friction * f_n.abs();
         let ft2 = f_spring.dot(f_spring);
         // The slider [11][12]: scaled onto the Coulomb limit, ξ = −F_t/k_t.
         let f_slide = f_spring.scale(limit / ft2.sqrt());

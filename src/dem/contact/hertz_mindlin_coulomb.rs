@@ -5,10 +5,10 @@
 //! Symbols as in `hertz_mindlin`: k_n, k_t [N m⁻¹], γ_n, γ_t [N s m⁻¹], ξ the tangential
 //! displacement [m], μ the friction coefficient.
 
-use super::hertz_mindlin::{self, contact_velocity, roots, springs, HertzMindlin, Params};
+use super::hertz_mindlin::{self, roots, HertzMindlin, Params, Step};
 use super::real::{Real, V3};
 use super::scales::{self, Scales};
-use super::{Constants, Contact, Law, Response};
+use super::{Contact, Law, Response};
 use crate::dem::material::PairLaw;
 
 /// Hertz-Mindlin with the Coulomb limit kept.
@@ -22,13 +22,6 @@ impl Law for HertzMindlinCoulomb {
     /// (`PairLaw::new`).
     fn params(law: &PairLaw) -> Params<f64> {
         hertz_mindlin::params(law)
-    }
-    fn pack(p: Params<f64>) -> Constants {
-        hertz_mindlin::pack(p)
-    }
-    #[inline(always)]
-    fn unpack<T: Real>(k: [T; 5]) -> Params<T> {
-        hertz_mindlin::unpack(k)
     }
 
     #[inline(always)]
@@ -51,17 +44,18 @@ impl Law for HertzMindlinCoulomb {
     /// law's).
     #[inline(always)]
     fn force<T: Real>(p: &Params<T>, c: &Contact<T>, xi: V3<T>, dt: T) -> Response<T> {
-        let [k_n, k_t, gamma_n, gamma_t] = springs(p, c.pre);
-        let (mu, zero) = (p.friction, T::splat(0.0));
+        let Step {
+            k_t,
+            gamma_t,
+            c_i,
+            c_j,
+            f_n,
+            v_t,
+            xi,
+        } = Step::new(p, c, xi, dt);
         let n = c.n;
-        let (c_i, c_j, v_r) = contact_velocity(c);
-        let delta_dot = v_r.dot(n);
-        let f_n = k_n * c.delta + gamma_n * delta_dot;
-        let open = f_n.le(zero);
-        let v_t = v_r - n.scale(delta_dot);
-        let xi = xi + v_t.scale(dt);
-        let xi = xi - n.scale(xi.dot(n));
-        let limit = mu * f_n;
+        let open = f_n.le(T::splat(0.0));
+        let limit = p.friction * f_n;
         let spring = k_t * xi.length();
         let xi = V3::select(spring.gt(limit), xi.scale(limit / spring), xi);
         let f = xi.scale(-k_t) - v_t.scale(gamma_t);

@@ -7,7 +7,7 @@
 
 use super::real::{Real, V3};
 use super::scales::{self, Scales};
-use super::{Constants, Contact, Law, Response};
+use super::{Columns, Contact, Law, Response};
 use crate::dem::material::PairLaw;
 
 /// LAMMPS's `gran/hooke/history`.
@@ -28,6 +28,28 @@ pub struct Params<T> {
     pub friction: T,
 }
 
+impl<T: Copy> Columns<T> for Params<T> {
+    #[inline(always)]
+    fn from_columns([kn, kt, gn, gt, friction]: [T; 5]) -> Self {
+        Params {
+            normal_stiffness: kn,
+            tangential_stiffness: kt,
+            normal_damping: gn,
+            tangential_damping: gt,
+            friction,
+        }
+    }
+    fn to_columns(self) -> [T; 5] {
+        [
+            self.normal_stiffness,
+            self.tangential_stiffness,
+            self.normal_damping,
+            self.tangential_damping,
+            self.friction,
+        ]
+    }
+}
+
 impl Law for Hooke {
     /// A wall's r_j = +0 and ω_j = −0: the spin sum r_i ω_i + r_j ω_j gets (+0)(−0) = −0, and
     /// x + (−0) = x for every x, the sum without j's term.
@@ -43,26 +65,6 @@ impl Law for Hooke {
             friction: law.friction,
         }
     }
-    fn pack(p: Params<f64>) -> Constants {
-        [
-            p.normal_stiffness,
-            p.tangential_stiffness,
-            p.normal_damping,
-            p.tangential_damping,
-            p.friction,
-        ]
-    }
-    #[inline(always)]
-    fn unpack<T: Real>([kn, kt, gn, gt, friction]: [T; 5]) -> Params<T> {
-        Params {
-            normal_stiffness: kn,
-            tangential_stiffness: kt,
-            normal_damping: gn,
-            tangential_damping: gt,
-            friction,
-        }
-    }
-
     /// One step of the Hooke contact:
     ///
     /// δ̇ = (v_i − v_j)·n;  F_n = k_n δ + m* γ_n δ̇ (the force on i is −F_n n; not clamped);

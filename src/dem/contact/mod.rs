@@ -72,18 +72,6 @@ impl Pair {
             m_star: harmonic(m.0, m.1),
         }
     }
-
-    /// Effective radius R* [m].
-    #[inline]
-    pub fn r_star(&self) -> f64 {
-        self.r_star
-    }
-
-    /// Effective mass m* [kg].
-    #[inline]
-    pub fn m_star(&self) -> f64 {
-        self.m_star
-    }
 }
 
 /// a b / (a + b), with an infinite partner giving the finite one.
@@ -147,29 +135,38 @@ pub struct Response<T> {
 }
 
 /// The constants of a law for one pair of materials as the lanes carry them, one column each
-/// (`Law::pack`).
+/// ([`Columns`]).
 pub type Constants = [f64; 5];
+
+/// A law's constants laid out as the lanes' columns, one constant each.
+pub trait Columns<T>: Copy {
+    /// The constants from the columns.
+    fn from_columns(k: [T; 5]) -> Self;
+    /// The constants as the columns hold them.
+    fn to_columns(self) -> [T; 5];
+}
 
 /// A contact law: one formulation ([`Law::force`]), run one contact at a time
 /// ([`contact_force`]) and on columns of contacts (`lanes::run`), with the same bits.
 pub trait Law {
     /// The law's constants for one pair of materials, named and with their units, in numbers
     /// `T` (one pair, or eight contacts' pairs).
-    type Params<T: Real>: Copy;
+    type Params<T: Real>: Columns<T>;
     /// The radius r_j [m] and the spin ω_j (each component) [rad s⁻¹] a wall takes in
     /// [`Contact`]: values whose terms change no sum, so that a wall gives what a sphere of
     /// infinite radius and mass would (signed zeros; each law says why its pair works).
     const WALL: (f64, f64);
     /// The law's constants for a pair of materials, derived from them once.
     fn params(law: &PairLaw) -> Self::Params<f64>;
-    /// The constants as the lanes' columns hold them.
-    fn pack(p: Self::Params<f64>) -> Constants;
     /// The constants from the lanes' columns.
-    fn unpack<T: Real>(k: [T; 5]) -> Self::Params<T>;
-    /// [`Law::params`], packed.
+    #[inline(always)]
+    fn unpack<T: Real>(k: [T; 5]) -> Self::Params<T> {
+        Columns::from_columns(k)
+    }
+    /// [`Law::params`] as the lanes' columns hold them.
     #[inline(always)]
     fn constants(law: &PairLaw) -> Constants {
-        Self::pack(Self::params(law))
+        Self::params(law).to_columns()
     }
     /// Values of one contact that need more than IEEE-exact arithmetic, or that the kernels
     /// take early so that the processor overlaps their square roots (R* [m], m* [kg], δ ≥ 0
@@ -221,6 +218,7 @@ pub fn force_of<L: Law>(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Re
 /// [`force_of`] given the law's constants.
 #[inline(always)]
 pub fn force_with<L: Law>(k: Constants, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
+    let params = L::unpack(k);
     let wall = !p.r_j.is_finite();
     let (r_j, w_j) = if wall {
         (L::WALL.0, Vec3::splat(L::WALL.1))
@@ -236,9 +234,9 @@ pub fn force_with<L: Law>(k: Constants, p: &Pair, hist: &mut Vec3, dt: f64) -> R
         r_i: p.r_i,
         r_j,
         m_star: p.m_star,
-        pre: L::prepare(&L::unpack(k), p.r_star, p.m_star, p.delta),
+        pre: L::prepare(&params, p.r_star, p.m_star, p.delta),
     };
-    let r = L::force(&L::unpack(k), &c, (*hist).into(), dt);
+    let r = L::force(&params, &c, (*hist).into(), dt);
     *hist = r.hist.into();
     Reaction {
         force: r.force.into(),
@@ -247,40 +245,38 @@ pub fn force_with<L: Law>(k: Constants, p: &Pair, hist: &mut Vec3, dt: f64) -> R
     }
 }
 
-/// [`Law::scales`] of the pair's law.
-pub fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> scales::Scales {
-    struct S<'a>(&'a PairLaw, [f64; 4]);
-    impl WithLaw for S<'_> {
-        type Out = scales::Scales;
-        fn run<L: Law>(self) -> scales::Scales {
-            let [r, m, v, load] = self.1;
-            L::scales(self.0, r, m, v, load)
-        }
-    }
-    dispatch(law.kind, S(law, [r_star, m_star, v, load]))
+/// The entry points of a law that take no generic numbers: for one-off uses (`check`, the
+/// time step rule, a single contact), not for the kernels.
+#[derive(Clone, Copy)]
+pub struct LawFns {
+    /// [`force_of`].
+    pub force: fn(&PairLaw, &Pair, &mut Vec3, f64) -> Reaction,
+    /// [`Law::scales`].
+    pub scales: fn(&PairLaw, f64, f64, f64, f64) -> scales::Scales,
+    /// [`Law::restitution`].
+    pub restitution: fn(&PairLaw) -> f64,
+    /// [`Law::describe`].
+    pub describe: fn(&PairLaw) -> String,
 }
 
-/// [`Law::restitution`] and [`Law::describe`] of the pair's law.
-pub fn restitution_and_description(law: &PairLaw) -> (f64, String) {
-    struct S<'a>(&'a PairLaw);
-    impl WithLaw for S<'_> {
-        type Out = (f64, String);
-        fn run<L: Law>(self) -> (f64, String) {
-            (L::restitution(self.0), L::describe(self.0))
+/// The [`LawFns`] of a kind of law.
+pub fn law_fns(kind: LawKind) -> LawFns {
+    struct Fns;
+    impl WithLaw for Fns {
+        type Out = LawFns;
+        fn run<L: Law>(self) -> LawFns {
+            LawFns {
+                force: force_of::<L>,
+                scales: L::scales,
+                restitution: L::restitution,
+                describe: L::describe,
+            }
         }
     }
-    dispatch(law.kind, S(law))
+    dispatch(kind, Fns)
 }
 
 /// The force of one contact under the pair's law; `hist` is updated in place.
-#[inline]
 pub fn contact_force(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
-    struct One<'a>(&'a PairLaw, &'a Pair, &'a mut Vec3, f64);
-    impl WithLaw for One<'_> {
-        type Out = Reaction;
-        fn run<L: Law>(self) -> Reaction {
-            force_of::<L>(self.0, self.1, self.2, self.3)
-        }
-    }
-    dispatch(law.kind, One(law, p, hist, dt))
+    (law_fns(law.kind).force)(law, p, hist, dt)
 }

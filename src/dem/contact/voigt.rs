@@ -6,18 +6,43 @@
 //! and [21]); c_n, c_t dashpot constants [N s m⁻¹]; μ friction coefficient; s_t the tangential
 //! spring force [N], the contact's history.
 
+use std::marker::PhantomData;
+
 use super::real::{Real, V3};
 use super::scales::{self, Scales};
-use super::{damping, Constants, Contact, Law, Response};
+use super::{damping, Columns, Contact, Law, Response};
 use crate::dem::material::PairLaw;
 
+/// The Voigt law with the normal spring `S` (one law, three springs).
+pub struct Voigt<S>(PhantomData<S>);
 /// The Voigt law with the Hertz spring s_n = K δ^{3/2}, K = (4/3) E* √R* [15]-[17].
-pub struct Hertz;
+pub type Hertz = Voigt<HertzSpring>;
 /// The Voigt law with a linear spring s_n = k_n δ, k_n given [18].
-pub struct Linear;
+pub type Linear = Voigt<LinearSpring>;
 /// The Voigt law with the apparent linear Hertz spring [18][19]: k_n from each pair of radii
 /// and masses ([`apparent_stiffness`]).
-pub struct ApparentLinear;
+pub type ApparentLinear = Voigt<ApparentLinearSpring>;
+
+/// What the three springs of the Voigt law differ in.
+pub trait Spring {
+    /// How `check` names it.
+    const NAME: &'static str;
+    /// The spring's factor `Params::spring` of a pair.
+    fn factor(law: &PairLaw) -> f64;
+    /// s_n [N] and the stiffness k_n [N m⁻¹] of one contact (`Law::prepare`).
+    fn prepare(p: &Params<f64>, r_star: f64, m_star: f64, delta: f64) -> [f64; 2];
+    /// `Law::scales`.
+    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales;
+    /// `Law::restitution`.
+    fn restitution(law: &PairLaw) -> f64;
+}
+
+/// The Hertz spring [15]-[17].
+pub struct HertzSpring;
+/// The linear spring [18].
+pub struct LinearSpring;
+/// The apparent linear Hertz spring [18][19].
+pub struct ApparentLinearSpring;
 
 /// The constants of the Voigt laws for a pair of materials.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,37 +60,27 @@ pub struct Params<T> {
     pub friction: T,
 }
 
-/// The constants of a pair with the spring factor `spring`.
-fn params(law: &PairLaw, spring: f64) -> Params<f64> {
-    Params {
-        spring,
-        reference_velocity: law.reference_velocity,
-        damping_ratio: law.damping_ratio,
-        tangential_ratio: law.tangential_ratio,
-        friction: law.friction,
+impl<T: Copy> Columns<T> for Params<T> {
+    #[inline(always)]
+    fn from_columns(
+        [spring, reference_velocity, damping_ratio, tangential_ratio, friction]: [T; 5],
+    ) -> Self {
+        Params {
+            spring,
+            reference_velocity,
+            damping_ratio,
+            tangential_ratio,
+            friction,
+        }
     }
-}
-
-fn pack(p: Params<f64>) -> Constants {
-    [
-        p.spring,
-        p.reference_velocity,
-        p.damping_ratio,
-        p.tangential_ratio,
-        p.friction,
-    ]
-}
-
-#[inline(always)]
-fn unpack<T: Real>(
-    [spring, reference_velocity, damping_ratio, tangential_ratio, friction]: [T; 5],
-) -> Params<T> {
-    Params {
-        spring,
-        reference_velocity,
-        damping_ratio,
-        tangential_ratio,
-        friction,
+    fn to_columns(self) -> [T; 5] {
+        [
+            self.spring,
+            self.reference_velocity,
+            self.damping_ratio,
+            self.tangential_ratio,
+            self.friction,
+        ]
     }
 }
 
@@ -103,22 +118,57 @@ pub fn linear_spring(k_n: f64, delta: f64) -> [f64; 2] {
     [k_n * delta, k_n]
 }
 
-/// What `check` says of a Voigt law with the spring `spring`.
-fn describe(law: &PairLaw, spring: &str) -> String {
-    // The source's ratio 1/(2(1 + ν)) is at most 0.5, Mindlin's 2(1 − ν)/(2 − ν) at least 2/3.
-    let mindlin = law.tangential_ratio > 0.6;
-    format!(
-        "contact law: the source's Voigt law [9]-[14] with {spring} spring; tangential \
-         spring k_t/k_n = {:.3}, {}",
-        law.tangential_ratio,
-        if mindlin {
-            "Mindlin's 2(1 − ν)/(2 − ν) (the source's [20] gives about half)"
-        } else {
-            "the source's [20], 1/(2(1 + ν)): about half Mindlin's, so oblique impacts at \
-             small incidence rebound with about half the tangential velocity experiments \
-             show; [contact] tangential_stiffness = \"mindlin\" gives Mindlin's"
-        }
-    )
+impl Spring for HertzSpring {
+    const NAME: &'static str = "a Hertz [15]-[17]";
+    fn factor(law: &PairLaw) -> f64 {
+        4.0 / 3.0 * law.e_star
+    }
+    #[inline(always)]
+    fn prepare(p: &Params<f64>, r_star: f64, _: f64, delta: f64) -> [f64; 2] {
+        hertz_spring(p.spring, r_star, delta)
+    }
+    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        let k_h = law.hertz_coefficient(r_star);
+        scales::hertz(k_h, m_star, v, load, Some(law.damping_ratio))
+    }
+    fn restitution(law: &PairLaw) -> f64 {
+        damping::hertz_contact(law.damping_ratio).1
+    }
+}
+
+impl Spring for LinearSpring {
+    const NAME: &'static str = "a linear [18]";
+    fn factor(law: &PairLaw) -> f64 {
+        law.stiffness
+    }
+    #[inline(always)]
+    fn prepare(p: &Params<f64>, _: f64, _: f64, delta: f64) -> [f64; 2] {
+        linear_spring(p.spring, delta)
+    }
+    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        linear_scales(law, r_star, m_star, v, load)
+    }
+    fn restitution(law: &PairLaw) -> f64 {
+        damping::linear_contact(law.damping_ratio).1
+    }
+}
+
+impl Spring for ApparentLinearSpring {
+    const NAME: &'static str = "an apparent linear Hertz [19]";
+    fn factor(law: &PairLaw) -> f64 {
+        4.0 / 3.0 * law.e_star
+    }
+    #[inline(always)]
+    fn prepare(p: &Params<f64>, r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
+        let k_n = apparent_stiffness(p.spring, p.reference_velocity, r_star, m_star);
+        linear_spring(k_n, delta)
+    }
+    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        linear_scales(law, r_star, m_star, v, load)
+    }
+    fn restitution(law: &PairLaw) -> f64 {
+        LinearSpring::restitution(law)
+    }
 }
 
 /// Scales of the linear springs (`Linear`, `ApparentLinear`).
@@ -128,105 +178,53 @@ fn linear_scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> 
     scales::linear(k, m_star, v, load, tc)
 }
 
-/// A wall's r_j = +0 and ω_j = −0: the lever sum r_i ω_i + r_j ω_j gets (+0)(−0) = −0, and
-/// x + (−0) = x for every x, the sum without j's term.
-const WALL: (f64, f64) = (0.0, -0.0);
-
-impl Law for Hertz {
+impl<S: Spring> Law for Voigt<S> {
     type Params<T: Real> = Params<T>;
-    const WALL: (f64, f64) = WALL;
+    /// A wall's r_j = +0 and ω_j = −0: the lever sum r_i ω_i + r_j ω_j gets (+0)(−0) = −0,
+    /// and x + (−0) = x for every x, the sum without j's term.
+    const WALL: (f64, f64) = (0.0, -0.0);
     fn params(law: &PairLaw) -> Params<f64> {
-        params(law, 4.0 / 3.0 * law.e_star)
-    }
-    fn pack(p: Params<f64>) -> Constants {
-        pack(p)
-    }
-    #[inline(always)]
-    fn unpack<T: Real>(k: [T; 5]) -> Params<T> {
-        unpack(k)
-    }
-    #[inline(always)]
-    fn prepare(p: &Params<f64>, r_star: f64, _: f64, delta: f64) -> [f64; 2] {
-        hertz_spring(p.spring, r_star, delta)
-    }
-    #[inline(always)]
-    fn force<T: Real>(p: &Params<T>, c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
-        force(p, c, s_t, dt)
-    }
-    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
-        let k_h = law.hertz_coefficient(r_star);
-        scales::hertz(k_h, m_star, v, load, Some(law.damping_ratio))
-    }
-    fn restitution(law: &PairLaw) -> f64 {
-        damping::hertz_contact(law.damping_ratio).1
-    }
-    fn describe(law: &PairLaw) -> String {
-        describe(law, "a Hertz [15]-[17]")
-    }
-}
-
-impl Law for Linear {
-    type Params<T: Real> = Params<T>;
-    const WALL: (f64, f64) = WALL;
-    fn params(law: &PairLaw) -> Params<f64> {
-        params(law, law.stiffness)
-    }
-    fn pack(p: Params<f64>) -> Constants {
-        pack(p)
-    }
-    #[inline(always)]
-    fn unpack<T: Real>(k: [T; 5]) -> Params<T> {
-        unpack(k)
-    }
-    #[inline(always)]
-    fn prepare(p: &Params<f64>, _: f64, _: f64, delta: f64) -> [f64; 2] {
-        linear_spring(p.spring, delta)
-    }
-    #[inline(always)]
-    fn force<T: Real>(p: &Params<T>, c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
-        force(p, c, s_t, dt)
-    }
-    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
-        linear_scales(law, r_star, m_star, v, load)
-    }
-    fn restitution(law: &PairLaw) -> f64 {
-        damping::linear_contact(law.damping_ratio).1
-    }
-    fn describe(law: &PairLaw) -> String {
-        describe(law, "a linear [18]")
-    }
-}
-
-impl Law for ApparentLinear {
-    type Params<T: Real> = Params<T>;
-    const WALL: (f64, f64) = WALL;
-    fn params(law: &PairLaw) -> Params<f64> {
-        params(law, 4.0 / 3.0 * law.e_star)
-    }
-    fn pack(p: Params<f64>) -> Constants {
-        pack(p)
-    }
-    #[inline(always)]
-    fn unpack<T: Real>(k: [T; 5]) -> Params<T> {
-        unpack(k)
+        Params {
+            spring: S::factor(law),
+            reference_velocity: law.reference_velocity,
+            damping_ratio: law.damping_ratio,
+            tangential_ratio: law.tangential_ratio,
+            friction: law.friction,
+        }
     }
     #[inline(always)]
     fn prepare(p: &Params<f64>, r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
-        let k_n = apparent_stiffness(p.spring, p.reference_velocity, r_star, m_star);
-        linear_spring(k_n, delta)
+        S::prepare(p, r_star, m_star, delta)
     }
     #[inline(always)]
     fn force<T: Real>(p: &Params<T>, c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
         force(p, c, s_t, dt)
     }
     fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
-        linear_scales(law, r_star, m_star, v, load)
+        S::scales(law, r_star, m_star, v, load)
     }
     fn restitution(law: &PairLaw) -> f64 {
-        damping::linear_contact(law.damping_ratio).1
+        S::restitution(law)
     }
+    /// The spring, and the tangential ratio in use with why it matters.
     fn describe(law: &PairLaw) -> String {
-        describe(law, "an apparent linear Hertz [19]")
+        // The source's ratio 1/(2(1 + ν)) is at most 0.5, Mindlin's 2(1 − ν)/(2 − ν) at
+        // least 2/3.
+        let mindlin = law.tangential_ratio > 0.6;
+        format!(
+            "contact law: the source's Voigt law [9]-[14] with {} spring; tangential \
+             spring k_t/k_n = {:.3}, {}",
+            S::NAME,
+            law.tangential_ratio,
+            if mindlin {
+                "Mindlin's 2(1 − ν)/(2 − ν) (the source's [20] gives about half)"
+            } else {
+                "the source's [20], 1/(2(1 + ν)): about half Mindlin's, so oblique impacts \
+                 at small incidence rebound with about half the tangential velocity \
+                 experiments show; [contact] tangential_stiffness = \"mindlin\" gives \
+                 Mindlin's"
+            }
+        )
     }
 }
 
