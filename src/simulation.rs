@@ -298,7 +298,9 @@ impl Simulation {
     /// added to the contact forces.
     fn add_body_forces(&mut self) {
         if let Some(c) = &self.coupling {
-            c.add_fluid_loads(&mut self.dem.spheres, self.dem.dt);
+            let d = &mut self.dem;
+            c.add_fluid_loads(&mut d.spheres, d.dt);
+            c.add_lubrication(&mut d.spheres, &d.walls, &d.domain, self.time);
         }
         if !self.rigid.is_empty() {
             let d = &mut self.dem;

@@ -558,35 +558,56 @@ impl NeighborList {
 /// All pairs of spheres (slots i < j) closer than r_i + r_j + `margin`, sorted, without
 /// reordering the spheres: for one-off checks such as overlaps in a scenario.
 pub fn close_pairs(spheres: &Spheres, domain: &Domain, margin: f64) -> Vec<(u32, u32)> {
-    let pos = &spheres.position;
-    let rad = &spheres.radius;
-    let r_max = rad.iter().cloned().fold(0.0, f64::max);
-    let mut grid = CellGrid::default();
-    grid.lay_out(domain, pos, (2.0 * r_max + margin).max(1e-12));
-    let mut sorted = Vec::new();
-    grid.bin(pos, &mut sorted);
-    let mut around = Vec::new();
-    let mut out = Vec::new();
-    for i in 0..pos.len() {
-        grid.around(grid.cell_of[i] as usize, &mut around);
-        let first = out.len();
-        for &q in &around {
-            for &j in &sorted[grid.start[q as usize] as usize..grid.start[q as usize + 1] as usize]
-            {
-                let cut = rad[i] + rad[j as usize] + margin;
-                if j as usize > i
-                    && domain
-                        .minimum_image(pos[j as usize] - pos[i])
-                        .length_squared()
-                        < cut * cut
-                {
-                    out.push((i as u32, j));
+    let mut near = NearPairs::default();
+    near.find(spheres, domain, margin);
+    near.pairs
+}
+
+/// The pairs of spheres closer than r_i + r_j + a margin, found on a cell grid of its own
+/// with buffers kept from one search to the next (nothing allocates once they have grown):
+/// for passes that need pairs beyond the contact list's reach, such as the lubrication film
+/// of the coupling.
+#[derive(Clone, Debug, Default)]
+pub struct NearPairs {
+    grid: CellGrid,
+    sorted: Vec<u32>,
+    around: Vec<u32>,
+    /// The pairs of the last search, slots i < j, sorted.
+    pub pairs: Vec<(u32, u32)>,
+}
+
+impl NearPairs {
+    /// Finds the pairs (slots i < j) with |x_j − x_i| < r_i + r_j + `margin` (minimum image
+    /// across periodic faces), sorted, into `self.pairs`.
+    pub fn find(&mut self, spheres: &Spheres, domain: &Domain, margin: f64) {
+        let pos = &spheres.position;
+        let rad = &spheres.radius;
+        let r_max = rad.iter().cloned().fold(0.0, f64::max);
+        let grid = &mut self.grid;
+        grid.lay_out(domain, pos, (2.0 * r_max + margin).max(1e-12));
+        grid.bin(pos, &mut self.sorted);
+        let out = &mut self.pairs;
+        out.clear();
+        for i in 0..pos.len() {
+            grid.around(grid.cell_of[i] as usize, &mut self.around);
+            let first = out.len();
+            for &q in &self.around {
+                let cell = grid.start[q as usize] as usize..grid.start[q as usize + 1] as usize;
+                for &j in &self.sorted[cell] {
+                    let cut = rad[i] + rad[j as usize] + margin;
+                    if j as usize > i
+                        && domain
+                            .minimum_image(pos[j as usize] - pos[i])
+                            .length_squared()
+                            < cut * cut
+                    {
+                        out.push((i as u32, j));
+                    }
                 }
             }
+            out[first..].sort_unstable();
         }
-        out[first..].sort_unstable();
     }
-    out
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@
 use super::blocks::{build_blocks, template};
 use super::checks::{material_of, non_negative, positive};
 use super::contact::{contact_laws, materials, Materials};
-use super::coupling::{coupling_parameters, report as coupling_report};
+use super::coupling::{coupling_parameters, lubrication, report as coupling_report};
 use super::derived::Derived;
 use super::fluid::{build_fluid, note_coupling, FluidDerived};
 use super::memory::{self, MemoryEstimate};
@@ -119,6 +119,8 @@ struct Report {
     n_fed: usize,
     fluid: Option<FluidDerived>,
     coupling: Option<CouplingParameters>,
+    /// The smallest impact Stokes number at the reference speed, with coupled spheres.
+    stokes: Option<f64>,
 }
 
 /// The granular phase: run and domain, materials and contact laws, the memory estimate
@@ -145,6 +147,7 @@ fn granular(src: &Source) -> Result<Granular, ScenarioError> {
         n_fed: bodies.feeders.iter().map(|f| f.total).sum(),
         fluid: None,
         coupling: None,
+        stokes: None,
     };
     Ok(Granular {
         domain,
@@ -176,7 +179,7 @@ fn parts(src: &Source, run: bool) -> Result<Parts, ScenarioError> {
     check_output(src, bodies.spheres.len() + report.n_fed)?;
     let limits = limits(src, report.v_ref)?;
     let radii: Vec<f64> = kinds.iter().map(|k| k.radius).collect();
-    let fluid = flow(src, &domain, gravity, &radii, run, &mut report)?;
+    let fluid = flow(src, &domain, gravity, &kinds, run, &mut report)?;
     if run {
         bodies.spheres.reserve(report.n_fed);
     }
@@ -323,16 +326,28 @@ fn flow(
     src: &Source,
     domain: &Domain,
     gravity: Vec3,
-    radii: &[f64],
+    kinds: &[Kind],
     run: bool,
     report: &mut Report,
 ) -> Result<Option<Fluid>, ScenarioError> {
+    let radii: Vec<f64> = kinds.iter().map(|k| k.radius).collect();
+    let radii = &radii[..];
     let (fluid, mut fluid_derived) =
         match build_fluid(src, domain, gravity, report.steps.dt, radii, run)? {
             Some((f, d)) => (f, Some(d)),
             None => (None, None),
         };
-    let coupling = coupling_parameters(src, fluid_derived.is_some())?;
+    let mut coupling = coupling_parameters(src, fluid_derived.is_some())?;
+    if let (Some(fd), Some(c)) = (&fluid_derived, coupling.as_mut()) {
+        let p = &fd.parameters;
+        let masses: Vec<(f64, f64)> = kinds.iter().map(|k| (k.radius, k.mass)).collect();
+        let mu = p.density * p.kinematic_viscosity;
+        c.lubrication = lubrication(src, fd.filter_width, mu, &masses, report.steps.dt)?;
+        // St = ρ_p d v/(9 μ) = m v/(6π μ r²), of the kind that rebounds least.
+        let st =
+            |&(r, m): &(f64, f64)| m * report.v_ref / (6.0 * std::f64::consts::PI * mu * r * r);
+        report.stokes = masses.iter().map(st).reduce(f64::min);
+    }
     if let (Some(fd), Some(c)) = (fluid_derived.as_mut(), coupling) {
         note_coupling(fd, &c, gravity, report.v_ref);
     }
@@ -354,7 +369,7 @@ fn derived(src: &Source, dem: &Dem, blocks: usize, r: Report) -> Derived {
     let output = OutputEstimate::of(sc, dem, r.n_fed, blocks, grid).line(sc.output.vtk_format());
     let coupling = r.coupling.map(|c| {
         let cells = r.fluid.as_ref().and_then(|f| f.cells_per_diameter());
-        coupling_report(&c, cells)
+        coupling_report(&c, cells, r.stokes)
     });
     Derived {
         reference_velocity: r.v_ref,

@@ -8,6 +8,9 @@
 //! resolved_cells_per_diameter = 3.0  # auto: resolved when d/Δ ≥ this (default 3)
 //! drag_law = "schiller_naumann"      # unresolved spheres: "schiller_naumann" | "stokes"
 //! subsamples = 4                     # φ: sub-samples per axis in cut cells (default 4)
+//! lubrication = false                # the film force of gaps below a cell (default false)
+//! lubrication_cutoff = 2.5e-3        # h_c [m]: gaps below it get the film (default: Δ)
+//! lubrication_roughness = 5e-6       # h_r [m]: the film stops thinning (default: r_min/1000)
 //! ```
 
 use serde::{Deserialize, Serialize};
@@ -15,6 +18,7 @@ use serde::{Deserialize, Serialize};
 use super::checks::positive;
 use super::text::sig4;
 use super::{ScenarioError, Source};
+use crate::coupling::lubrication::{damping_rate, LubricationParameters};
 use crate::coupling::{CouplingMode, CouplingParameters, DragLaw};
 
 /// `[coupling]`: every key optional.
@@ -29,6 +33,14 @@ pub struct CouplingSection {
     pub drag_law: Option<DragLaw>,
     /// Sub-samples per axis of cells cut by a sphere surface (default 4, 1 to 16).
     pub subsamples: Option<usize>,
+    /// The film force of gaps thinner than a cell, `crate::coupling::lubrication` (default
+    /// false: the source's model).
+    pub lubrication: Option<bool>,
+    /// h_c [m]: gaps below it get the film force (default: the cell Δ).
+    pub lubrication_cutoff: Option<f64>,
+    /// h_r [m]: below it the film stops thinning (default: a thousandth of the smallest
+    /// radius).
+    pub lubrication_roughness: Option<f64>,
 }
 
 /// Checks `[coupling]`; `has_fluid` tells whether the scenario has a `[fluid]`.
@@ -65,12 +77,97 @@ pub(super) fn coupling_parameters(
         resolved_cells_per_diameter: cells,
         drag_law: c.drag_law.unwrap_or(d.drag_law),
         subsamples,
+        lubrication: None,
     }))
 }
 
+/// The film of `[coupling]` (`lubrication = true`), checked against the flow (`cell` the
+/// grid's Δ [m], `mu` the viscosity [Pa s]), the kinds of spheres ((radius [m], mass [kg])
+/// of each) and the DEM step `dt` [s]: the explicit film force must not overshoot in one
+/// step, c Δt/m < 1 for every kind against a wall (stable below 2).
+pub(super) fn lubrication(
+    src: &Source,
+    cell: f64,
+    mu: f64,
+    kinds: &[(f64, f64)],
+    dt: f64,
+) -> Result<Option<LubricationParameters>, ScenarioError> {
+    let Some(c) = &src.scenario.coupling else {
+        return Ok(None);
+    };
+    if c.lubrication != Some(true) {
+        for (key, given) in [
+            ("lubrication_cutoff", c.lubrication_cutoff),
+            ("lubrication_roughness", c.lubrication_roughness),
+        ] {
+            if given.is_some() {
+                return Err(src.invalid(
+                    &format!("coupling.{key}"),
+                    "sets the lubrication film, which is off: add `lubrication = true`",
+                ));
+            }
+        }
+        return Ok(None);
+    }
+    let cutoff = positive(
+        src,
+        "coupling.lubrication_cutoff",
+        c.lubrication_cutoff.unwrap_or(cell),
+    )?;
+    let r_min = kinds.iter().map(|k| k.0).fold(f64::INFINITY, f64::min);
+    let default_roughness = if r_min.is_finite() {
+        1e-3 * r_min
+    } else {
+        1e-3 * cell
+    };
+    let key = "coupling.lubrication_roughness";
+    let roughness = positive(
+        src,
+        key,
+        c.lubrication_roughness.unwrap_or(default_roughness),
+    )?;
+    if roughness >= cutoff {
+        return Err(src.invalid(
+            key,
+            format!(
+                "must be below the cut-off h_c = {} m (the film acts between them), got {roughness} m",
+                sig4(cutoff)
+            ),
+        ));
+    }
+    let p = LubricationParameters { cutoff, roughness };
+    for &(r, m) in kinds {
+        let rate = damping_rate(&p, mu, r, m);
+        if rate * dt > 1.0 {
+            // c Δt/m = 1: 1/h_r = m/(6π μ r² Δt) + 1/h_c.
+            let h_min = 1.0 / (m / (6.0 * std::f64::consts::PI * mu * r * r * dt) + 1.0 / cutoff);
+            return Err(src.invalid(
+                key,
+                format!(
+                    "the film force at a gap of h_r = {} m is too stiff for the time step: a sphere \
+                     of radius {} m would lose {:.2} times its approach speed in one step of {} s \
+                     (the explicit step needs less than 1); raise the roughness to at least {} m, \
+                     or lower run.time_step",
+                    sig4(roughness),
+                    sig4(r),
+                    rate * dt,
+                    sig4(dt),
+                    sig4(h_min)
+                ),
+            ));
+        }
+    }
+    Ok(Some(p))
+}
+
 /// The line `riprap check` prints: the mode and how the smallest and largest spheres are
-/// treated, in words. `cells_per_diameter` is d/Δ of the smallest and largest sphere.
-pub fn report(p: &CouplingParameters, cells_per_diameter: Option<(f64, f64)>) -> String {
+/// treated, in words, and the lubrication film. `cells_per_diameter` is d/Δ of the smallest
+/// and largest sphere; `stokes` the smallest impact Stokes number at the reference speed.
+pub fn report(
+    p: &CouplingParameters,
+    cells_per_diameter: Option<(f64, f64)>,
+    stokes: Option<f64>,
+) -> String {
     let threshold = p.resolved_cells_per_diameter;
     let resolved = |r: f64| match p.mode {
         CouplingMode::Resolved => true,
@@ -113,6 +210,26 @@ pub fn report(p: &CouplingParameters, cells_per_diameter: Option<(f64, f64)>) ->
             treat(hi)
         ));
     }
+    match p.lubrication {
+        Some(l) => s.push_str(&format!(
+            "; lubrication film for gaps below h_c = {} m, roughness h_r = {} m (mesh walls get none)",
+            sig4(l.cutoff),
+            sig4(l.roughness)
+        )),
+        None => s.push_str("; no lubrication film (dry contacts in the water)"),
+    }
+    if let Some(st) = stokes {
+        s.push_str(&format!(
+            "; impact Stokes number at the reference speed St = ρ_p d v/(9 μ) ≥ {}",
+            sig4(st)
+        ));
+        if p.lubrication.is_none() && st < 100.0 {
+            s.push_str(
+                " (in a liquid a sphere rebounds weakly below St ≈ 100 and not at all below \
+                 St ≈ 10, Gondret et al. 2002; `lubrication = true` models it)",
+            );
+        }
+    }
     s.push('\n');
     s
 }
@@ -135,7 +252,7 @@ mod tests {
                     ..CouplingParameters::default()
                 };
                 for cells in [None, Some((1.0, 6.0))] {
-                    let s = report(&p, cells);
+                    let s = report(&p, cells, None);
                     for rust in [
                         "Resolved",
                         "Unresolved",
@@ -152,7 +269,7 @@ mod tests {
             mode: CouplingMode::Resolved,
             ..CouplingParameters::default()
         };
-        let s = report(&p, Some((4.0, 4.0)));
+        let s = report(&p, Some((4.0, 4.0)), None);
         assert!(
             s.starts_with("coupling: resolved (spheres several cells across)"),
             "{s}"

@@ -120,6 +120,8 @@ impl Simulation {
         if let (Some(c), Some(f)) = (&mut self.coupling, &self.fluid) {
             self.projected_divergence = f.max_divergence();
             c.fluid_forces(f, &mut self.dem.spheres, dt); // [59] [61], held
+            let d = &self.dem;
+            c.find_lubricated(&d.spheres, &d.walls, &d.domain, self.time, k * dt);
             clock = lap(clock, &mut self.times.fluid_loads);
         }
         for _ in 0..k as u64 {

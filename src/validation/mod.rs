@@ -7,7 +7,9 @@
 //! * the flow solver: [`cavity`] (lid-driven cavity, Ghia, Ghia & Shin 1982) and
 //!   [`channel180`] (turbulent channel flow, Moser, Kim & Mansour 1999);
 //! * the coupling's cases 1 to 5 of METHOD.md §5: [`sphere_drag`], [`cylinder_strouhal`],
-//!   [`block_settling`], [`hopper_cloud`] and [`sheet_flow`].
+//!   [`block_settling`], [`hopper_cloud`] and [`sheet_flow`];
+//! * beyond the source: [`wet_rebound`] (a sphere rebounding from a wall in a liquid, against
+//!   the measurements of Gondret et al. 2002), the lubrication film of wet contacts.
 
 pub mod block_settling;
 pub mod cavity;
@@ -17,5 +19,6 @@ pub mod hopper_cloud;
 pub mod report;
 pub mod sheet_flow;
 pub mod sphere_drag;
+pub mod wet_rebound;
 
 pub use report::{run_validation, run_validation_cases, CASES};

@@ -80,13 +80,14 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 11] = [
+pub const CASES: [&str; 12] = [
     "cavity",
     "channel",
     "sphere_drag",
     "cylinder_strouhal",
     "block_settling",
     "hopper_cloud",
+    "wet_rebound",
     "sheet_flow",
     "sheet_flow_sensitivity",
     "sheet_flow_report",
@@ -129,6 +130,9 @@ pub fn run_validation_cases(
     }
     if run("hopper_cloud") {
         all &= super::hopper_cloud::report::section(out, quick, &mut md)?;
+    }
+    if run("wet_rebound") {
+        all &= super::wet_rebound::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
         all &= sections::ensemble(out, quick, case5, &mut md)?;
