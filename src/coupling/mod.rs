@@ -85,7 +85,7 @@ use crate::fluid::{Boundaries, Fluid, StaggeredGrid};
 pub use drag::DragLaw;
 use fraction::{box_size, normalise, sphere_fractions, CellBox};
 use lubrication::{Lubrication, LubricationParameters};
-use slabs::{planes, Slabs};
+use slabs::{planes, union, Slabs};
 
 /// Which spheres the grid resolves.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -168,6 +168,19 @@ pub struct Coupling {
     interaction: [Vec<f64>; 3],
     /// The film force of thin gaps, when the parameters ask for it.
     lubrication: Option<Lubrication>,
+    /// The storage planes [first, end) outside which `weight` and `interaction` are zero and
+    /// ρ̄ = ρ_w (those of the last sums over spheres; every plane at first): the passes over
+    /// the grid visit only these, so that a bed at the bottom of a tall domain costs the
+    /// planes it reaches, not the whole grid.
+    spans: Spans,
+}
+
+/// See [`Coupling::spans`].
+#[derive(Clone, Copy, Debug)]
+struct Spans {
+    weight: (usize, usize),
+    interaction: (usize, usize),
+    density: (usize, usize),
 }
 
 /// The driving pressure gradient −∇P_drive [N m⁻³] of the fluid step just taken, at its
@@ -217,6 +230,11 @@ impl Coupling {
             lubrication: parameters
                 .lubrication
                 .map(|l| Lubrication::new(l, p.density * p.kinematic_viscosity)),
+            spans: Spans {
+                weight: (0, grid.padded()[2]),
+                interaction: (0, grid.padded()[2]),
+                density: (0, grid.padded()[2]),
+            },
         }
     }
 
@@ -282,7 +300,11 @@ impl Coupling {
         if self.compute_fractions(spheres) {
             self.accumulate_weights(spheres);
         } // else φ and the face weights are those of the last correction, for these spheres.
-        resolved::FlowView::new(fluid).face_loads(&self.weight, &mut self.face_loads);
+        resolved::FlowView::new(fluid).face_loads(
+            &self.weight,
+            self.spans.weight,
+            &mut self.face_loads,
+        );
         let this = &*self;
         let b3 = this.b * this.b * this.b;
         let drive = driving_force_density(fluid);
@@ -499,11 +521,14 @@ impl Coupling {
         let plane = grid.strides()[2];
         let n = spheres.len();
         let (boxes, phi) = (&self.boxes[..n], &self.phi);
+        let active = self.sum_span();
+        let stale = union(self.spans.density, active);
         self.slabs.for_each(
             &grid,
             [&mut self.cell_phi[..]],
             &|first, end, [cell_phi]| {
-                cell_phi.fill([0.0; 2]);
+                let (z0, z1) = (stale.0.clamp(first, end), stale.1.clamp(first, end));
+                cell_phi[(z0 - first) * plane..(z1 - first) * plane].fill([0.0; 2]);
                 let offset = first * plane;
                 for (i, cells) in boxes.iter().enumerate() {
                     if !planes(&grid, &bcs, cells).any(|p| (first..end).contains(&p)) {
@@ -524,11 +549,12 @@ impl Coupling {
         );
         let rho_w = self.rho_w;
         let rho = fluid.mixture_density_mut();
-        // By storage planes in parallel, interior cells only (the ghosts are filled after).
+        // By storage planes in parallel, interior cells only (the ghosts are filled after),
+        // where ρ̄ was or will be other than ρ_w.
         rho.par_chunks_mut(plane)
             .zip(self.cell_phi.par_chunks(plane))
             .enumerate()
-            .filter(|(kk, _)| (1..=grid.n[2]).contains(kk))
+            .filter(|(kk, _)| (1..=grid.n[2]).contains(kk) && (stale.0..stale.1).contains(kk))
             .for_each(|(kk, (rho, cell_phi))| {
                 for j in 0..grid.n[1] {
                     for i in 0..grid.n[0] {
@@ -542,7 +568,17 @@ impl Coupling {
                     }
                 }
             });
+        self.spans.density = active;
         fluid.fill_ghosts();
+    }
+
+    /// The storage planes the sums over spheres (and the obstacle) write to.
+    fn sum_span(&self) -> (usize, usize) {
+        if self.obstacle.is_empty() {
+            self.slabs.span()
+        } else {
+            (0, self.grid.padded()[2])
+        }
     }
 
     /// [62] on every face covered by a resolved sphere or the obstacle, and with `dt_f` the
@@ -553,14 +589,20 @@ impl Coupling {
         self.accumulate_weights(spheres);
         let grid = self.grid;
         let st = grid.strides();
+        // Faces elsewhere have no weight and F = 0 already.
+        let (lo, hi) = union(self.spans.weight, self.spans.interaction);
+        let faces = lo * st[2]..hi * st[2];
+        self.spans.interaction = self.spans.weight;
         let (u, density) = fluid.correction_fields();
         for a in 0..3 {
             let weight = &self.weight[a];
             let sa = st[a];
-            u[a].par_iter_mut()
-                .zip(self.interaction[a].par_iter_mut())
+            u[a][faces.clone()]
+                .par_iter_mut()
+                .zip(self.interaction[a][faces.clone()].par_iter_mut())
                 .enumerate()
-                .for_each(|(c, (u, f))| {
+                .for_each(|(q, (u, f))| {
+                    let c = faces.start + q;
                     let [w, wu] = weight[c];
                     if w <= 0.0 {
                         *f = 0.0;
@@ -592,13 +634,16 @@ impl Coupling {
         let plane = grid.strides()[2];
         let n = spheres.len();
         let (boxes, phi) = (&self.boxes[..n], &self.phi);
+        let active = self.sum_span();
+        let stale = union(self.spans.weight, active);
         let [w0, w1, w2] = &mut self.weight;
         self.slabs.for_each(
             &grid,
             [&mut w0[..], &mut w1[..], &mut w2[..]],
             &|first, end, mut w| {
+                let (z0, z1) = (stale.0.clamp(first, end), stale.1.clamp(first, end));
                 for f in w.iter_mut() {
-                    f.fill([0.0; 2]);
+                    f[(z0 - first) * plane..(z1 - first) * plane].fill([0.0; 2]);
                 }
                 let (offset, len) = (first * plane, w[0].len());
                 for (i, cells) in boxes.iter().enumerate() {
@@ -623,6 +668,7 @@ impl Coupling {
                 }
             },
         );
+        self.spans.weight = active;
         if !self.obstacle.is_empty() {
             resolved::obstacle_faces(&grid, &bcs, &self.obstacle, |a, c, w| {
                 self.weight[a][c][0] += w;

@@ -273,13 +273,20 @@ impl<'a> FlowView<'a> {
     /// were). Each face is evaluated once, however many spheres share it, in parallel by
     /// z-planes (each writing its own plane: the same bits on any number of threads). One
     /// number a face: the sums over a sphere's faces wait on memory, not on arithmetic.
-    pub fn face_loads(&self, total: &[Vec<[f64; 2]>; 3], out: &mut [Vec<f64>; 3]) {
+    /// Only the storage planes of `span` are visited: `total` is zero on the others.
+    pub fn face_loads(
+        &self,
+        total: &[Vec<[f64; 2]>; 3],
+        span: (usize, usize),
+        out: &mut [Vec<f64>; 3],
+    ) {
         let plane = self.grid.strides()[2];
         let volume = self.grid.cell_volume();
         for (a, (w, f)) in total.iter().zip(out.iter_mut()).enumerate() {
             f.par_chunks_mut(plane)
                 .zip(w.par_chunks(plane))
                 .enumerate()
+                .filter(|(k, _)| (span.0..span.1).contains(k))
                 .for_each(|(k, (f, w))| {
                     for (q, (f, &[w, _])) in f.iter_mut().zip(w).enumerate() {
                         if w > 0.0 {

@@ -16,6 +16,17 @@ pub struct Slabs {
     per_plane: Vec<usize>,
     /// The storage planes at which the slabs are cut (ascending).
     cuts: Vec<usize>,
+    /// The storage planes [first, end) that some box reaches (empty: (0, 0)).
+    span: (usize, usize),
+}
+
+/// The smallest range of planes that holds both `a` and `b` (an empty range holds nothing).
+pub fn union(a: (usize, usize), b: (usize, usize)) -> (usize, usize) {
+    match (a.0 < a.1, b.0 < b.1) {
+        (false, _) => b,
+        (_, false) => a,
+        _ => (a.0.min(b.0), a.1.max(b.1)),
+    }
 }
 
 /// The storage planes (K = k + 1 of the padded storage) that the box `cells` reaches, faces
@@ -47,12 +58,17 @@ impl Slabs {
         self.per_plane.clear();
         self.per_plane.resize(planes_n, 0);
         let mut total = 0;
+        let (mut lo, mut hi) = (usize::MAX, 0);
         for b in boxes.iter().filter(|b| b.extent[2] > 0) {
             if let Some(p) = planes(grid, bcs, b).next() {
                 self.per_plane[p] += 1;
                 total += 1;
             }
+            for p in planes(grid, bcs, b) {
+                (lo, hi) = (lo.min(p), hi.max(p + 1));
+            }
         }
+        self.span = if lo < hi { (lo, hi) } else { (0, 0) };
         self.cuts.clear();
         let mut seen = 0;
         for (p, &count) in self.per_plane.iter().enumerate().skip(1) {
@@ -62,6 +78,12 @@ impl Slabs {
                 self.cuts.push(p + 1);
             }
         }
+    }
+
+    /// The storage planes [first, end) that the boxes of the last cut reach: the sums over
+    /// spheres write nothing outside them.
+    pub fn span(&self) -> (usize, usize) {
+        self.span
     }
 
     /// Calls `work(first_plane, last_plane + 1, fields)` on each slab in parallel, `fields`
