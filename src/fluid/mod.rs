@@ -11,7 +11,9 @@
 //! Each face of the box is periodic, a no-slip wall (fixed or moving), free slip, an inflow
 //! (steady or oscillating) or an outflow ([`boundary`]). The time step adapts to CFL and
 //! viscous limits ([`timestep`]). [`diagnostics`] gives whole-flow numbers (kinetic energy,
-//! largest speed, a memory estimate). The longer verification cases (the lid-driven cavity
+//! largest speed, a memory estimate). [`interface`] carries a water fraction α with the flow,
+//! conservative and bounded (THINC with Weymouth & Yue's splitting): the first piece of the
+//! free surface, which the step does not use yet. The longer verification cases (the lid-driven cavity
 //! against Ghia et al. 1982, turbulent channel flow) are in `riprap::validation`.
 //!
 //! In use:
@@ -43,6 +45,7 @@ pub mod diagnostics;
 pub mod diffusion;
 pub mod forcing;
 pub mod grid;
+pub mod interface;
 pub mod model;
 pub mod operators;
 pub mod pressure;
