@@ -13,7 +13,9 @@
 //! viscous limits ([`timestep`]). [`diagnostics`] gives whole-flow numbers (kinetic energy,
 //! largest speed, a memory estimate). [`interface`] carries a water fraction α with the flow,
 //! conservative and bounded (THINC with Weymouth & Yue's splitting): the first piece of the
-//! free surface, which the step does not use yet. The longer verification cases (the lid-driven cavity
+//! free surface, which the step does not use yet; [`waves`] gives the elevation and velocity
+//! of the wave theories a wave flume imposes (linear, Stokes second order, solitary, JONSWAP
+//! seas), also not yet used. The longer verification cases (the lid-driven cavity
 //! against Ghia et al. 1982, turbulent channel flow) are in `riprap::validation`.
 //!
 //! In use:
@@ -53,6 +55,7 @@ pub mod sgs;
 pub mod step;
 pub mod tendency;
 pub mod timestep;
+pub mod waves;
 
 pub use boundary::{Boundaries, Boundary, InflowVelocity};
 pub use forcing::DrivingPressureGradient;
