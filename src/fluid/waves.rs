@@ -17,6 +17,8 @@
 //! * [`Wave::Irregular`]: a sum of linear components ([`Spectrum`]: JONSWAP, or
 //!   Pierson-Moskowitz as γ = 1) with phases from a seed.
 //!
+//! For `check` and the zones: [`ursell`], [`miche_limit`] and [`RelaxationZone`].
+//!
 //! Still open for the flume: Stokes fifth order (Fenton 1985), stream-function waves
 //! (Rienecker & Fenton 1981), cnoidal waves, a measured elevation series, a current.
 
@@ -193,6 +195,47 @@ impl Wave {
         let u = c * eta / (h + eta);
         let du_dx = c * h / ((h + eta) * (h + eta)) * deta_dx;
         (eta, u, du_dx)
+    }
+}
+
+/// The Ursell number U_r = H L²/h³ [-] of a wave of height `height`, length `wavelength`, in
+/// water `depth` deep [m]: above about 26, cnoidal theory describes it better than Stokes'.
+pub fn ursell(height: f64, wavelength: f64, depth: f64) -> f64 {
+    height * wavelength * wavelength / depth.powi(3)
+}
+
+/// The steepest wave of wavenumber `k` [m⁻¹] in water `h` [m] deep before it breaks, Miche's
+/// (1944) H_max = 0.142 L tanh kh [m] (0.142 L in deep water, about 0.89 h in shallow water).
+pub fn miche_limit(k: f64, h: f64) -> f64 {
+    0.142 * 2.0 * PI / k * (k * h).tanh()
+}
+
+/// A relaxation zone (Jacobsen, Fuhrman & Fredsøe 2012) between `inner` and `outer` [m]
+/// along x (either order: `outer` is the end at the boundary). In it the flow is blended
+/// towards a target, q ← w q_target + (1 − w) q, with the weight
+///
+/// ```text
+/// w(ξ) = (exp(ξ^3.5) − 1)/(e − 1),   ξ = (x − inner)/(outer − inner) ∈ [0, 1]
+/// ```
+///
+/// 0 where the zone meets the computed flow, and flat there, rising to 1 at the boundary. The
+/// target is the incoming wave in a generating zone and still water in an absorbing one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RelaxationZone {
+    /// The edge towards the computed flow [m].
+    pub inner: f64,
+    /// The edge at the boundary [m].
+    pub outer: f64,
+}
+
+impl RelaxationZone {
+    /// The target's weight w at `x` [m] (0 outside the zone).
+    pub fn weight(&self, x: f64) -> f64 {
+        let xi = (x - self.inner) / (self.outer - self.inner);
+        if !(0.0..=1.0).contains(&xi) {
+            return 0.0;
+        }
+        (xi.powf(3.5).exp() - 1.0) / (std::f64::consts::E - 1.0)
     }
 }
 
@@ -427,5 +470,47 @@ mod tests {
         println!("kinematic residual / (ω k H²): Stokes 2 {stokes:.2e}, linear {linear:.2e}");
         assert!(stokes < 0.02, "{stokes}");
         assert!(linear > 5.0 * stokes, "{linear}");
+    }
+
+    /// Miche's limit is 0.142 L in deep water and tends to 0.142 · 2π h ≈ 0.89 h in shallow
+    /// water; the Ursell number of a wave as long as 10 depths and a tenth of the depth high
+    /// is 10.
+    #[test]
+    fn miche_and_ursell_have_their_limits() {
+        let k = 2.0 * PI / 1.0;
+        assert!((miche_limit(k, 100.0) - 0.142).abs() < 1e-12);
+        let h = 0.01;
+        assert!((miche_limit(1e-3, h) / (0.142 * 2.0 * PI * h) - 1.0).abs() < 1e-6);
+        assert!((ursell(0.1, 10.0, 1.0) - 10.0).abs() < 1e-12);
+    }
+
+    /// The relaxation weight is 0 at the inner edge and flat there (a slope below 1e-3 per
+    /// zone length over its first 1 %), 1 at the boundary, rising monotonically, and zero
+    /// outside; the zone may run either way along x.
+    #[test]
+    fn the_relaxation_weight_blends_smoothly() {
+        for zone in [
+            RelaxationZone {
+                inner: 2.0,
+                outer: 5.0,
+            },
+            RelaxationZone {
+                inner: 18.0,
+                outer: 15.0,
+            },
+        ] {
+            let at = |xi: f64| zone.weight(zone.inner + xi * (zone.outer - zone.inner));
+            assert_eq!(at(0.0), 0.0);
+            assert!((at(1.0) - 1.0).abs() < 1e-15);
+            assert_eq!(at(-0.1), 0.0);
+            assert_eq!(at(1.1), 0.0);
+            assert!((at(0.01) - at(0.0)) / 0.01 < 1e-3);
+            let mut last = 0.0;
+            for i in 1..=100 {
+                let w = at(i as f64 / 100.0);
+                assert!(w > last);
+                last = w;
+            }
+        }
     }
 }
