@@ -19,8 +19,11 @@
 //!
 //! For `check` and the zones: [`ursell`], [`miche_limit`] and [`RelaxationZone`].
 //!
+//! A measured elevation record becomes an irregular sea by its Fourier components
+//! ([`components_from_record`]).
+//!
 //! Still open for the flume: Stokes fifth order (Fenton 1985), stream-function waves
-//! (Rienecker & Fenton 1981), cnoidal waves, a measured elevation series, a current.
+//! (Rienecker & Fenton 1981), cnoidal waves, a current.
 
 use std::f64::consts::PI;
 
@@ -196,6 +199,45 @@ impl Wave {
         let du_dx = c * h / ((h + eta) * (h + eta)) * deta_dx;
         (eta, u, du_dx)
     }
+}
+
+/// The linear components that reproduce a measured surface elevation record η(t_n) at x = 0,
+/// n = 0 … N−1 sampled every `dt` [s], in water `depth` deep [m] under gravity `g`: its
+/// discrete Fourier series, each bin k = 1 … N/2 a component of ω_k = 2π k/(N Δt) and
+///
+/// ```text
+/// a_k = 2 |X_k| / N  (|X_k| / N at the Nyquist bin),   φ_k = −arg X_k,
+/// X_k = Σ_n η_n exp(−2π i k n/N),
+/// ```
+///
+/// so that Σ_k a_k cos(−ω_k t_n + φ_k) = η_n − η̄ at the samples (the record's mean η̄, which a
+/// wave cannot carry, is left out) and each component travels on with its own wavenumber.
+/// The record is taken as one period of a periodic signal: start and end it at calm water,
+/// or taper it, to keep its ends from ringing.
+pub fn components_from_record(dt: f64, eta: &[f64], depth: f64, g: f64) -> Vec<Component> {
+    use rustfft::num_complex::Complex;
+    let n = eta.len();
+    if n < 2 {
+        return Vec::new();
+    }
+    let mut x: Vec<Complex<f64>> = eta.iter().map(|&e| Complex::new(e, 0.0)).collect();
+    rustfft::FftPlanner::<f64>::new()
+        .plan_fft_forward(n)
+        .process(&mut x);
+    (1..=n / 2)
+        .map(|k| {
+            let nyquist = 2 * k == n;
+            let scale = if nyquist { 1.0 } else { 2.0 } / n as f64;
+            let omega = 2.0 * PI * k as f64 / (n as f64 * dt);
+            Component {
+                amplitude: scale * x[k].norm(),
+                omega,
+                k: wavenumber(omega, depth, g),
+                phase: -x[k].arg(),
+                depth,
+            }
+        })
+        .collect()
 }
 
 /// The Ursell number U_r = H L²/h³ [-] of a wave of height `height`, length `wavelength`, in
@@ -511,6 +553,44 @@ mod tests {
                 assert!(w > last);
                 last = w;
             }
+        }
+    }
+
+    /// A record made of three waves on the record's own frequency bins, plus a mean level, is
+    /// reproduced at its sample times to 1e-12 of its height without the mean, for an even and
+    /// an odd number of samples; at x = 1 m each component has moved on by its own k.
+    #[test]
+    fn a_measured_record_is_reproduced_by_its_components() {
+        for n in [256usize, 255] {
+            let dt = 0.05;
+            let period = n as f64 * dt;
+            let waves = [(0.03, 3.0, 0.4), (0.01, 7.0, 2.0), (0.005, 20.0, -1.0)];
+            let record: Vec<f64> = (0..n)
+                .map(|i| {
+                    let t = i as f64 * dt;
+                    0.2 + waves
+                        .iter()
+                        .map(|&(a, bin, p)| a * (2.0 * PI * bin / period * t - p).cos())
+                        .sum::<f64>()
+                })
+                .collect();
+            let sea = Wave::Irregular(components_from_record(dt, &record, 0.6, G));
+            for (i, &e) in record.iter().enumerate() {
+                let t = i as f64 * dt;
+                assert!(
+                    (sea.elevation(0.0, t) - (e - 0.2)).abs() < 1e-12 * 0.05,
+                    "n {n}, t {t}"
+                );
+            }
+            let x = 1.0;
+            let expected: f64 = waves
+                .iter()
+                .map(|&(a, bin, p)| {
+                    let w = 2.0 * PI * bin / period;
+                    a * (wavenumber(w, 0.6, G) * x - w * 0.3 + p).cos()
+                })
+                .sum();
+            assert!((sea.elevation(x, 0.3) - expected).abs() < 1e-12, "n {n}");
         }
     }
 }
