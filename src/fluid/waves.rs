@@ -22,8 +22,10 @@
 //! A measured elevation record becomes an irregular sea by its Fourier components
 //! ([`components_from_record`]).
 //!
+//! * [`Wave::Cnoidal`] ([`Cnoidal`]), first order, for long waves in shallow water.
+//!
 //! Still open for the flume: Stokes fifth order (Fenton 1985), stream-function waves
-//! (Rienecker & Fenton 1981), cnoidal waves, a current.
+//! (Rienecker & Fenton 1981), higher-order cnoidal theory, a current.
 
 use std::f64::consts::PI;
 
@@ -69,6 +71,8 @@ pub enum Wave {
     },
     /// A sum of linear components.
     Irregular(Vec<Component>),
+    /// A cnoidal wave (first order), from [`Cnoidal::new`].
+    Cnoidal(Cnoidal),
 }
 
 /// A regular wave: height, period, depth.
@@ -142,6 +146,7 @@ impl Wave {
             }
             Wave::Solitary { .. } => self.solitary(x, t).0,
             Wave::Irregular(c) => c.iter().map(|c| c.elevation(x, t)).sum(),
+            Wave::Cnoidal(c) => c.shallow(x, t).0,
         }
     }
 
@@ -175,6 +180,10 @@ impl Wave {
                 let (du, dw) = c.velocity(x, z, t);
                 (u + du, w + dw)
             }),
+            Wave::Cnoidal(c) => {
+                let (_, u, du_dx) = c.shallow(x, t);
+                (u, -(z + c.depth) * du_dx)
+            }
         }
     }
 
@@ -238,6 +247,153 @@ pub fn components_from_record(dt: f64, eta: &[f64], depth: f64, g: f64) -> Vec<C
             }
         })
         .collect()
+}
+
+/// The complete elliptic integrals K(m) and E(m) of parameter m ∈ [0, 1) by the
+/// arithmetic-geometric mean (Abramowitz & Stegun 17.6), to round-off.
+pub fn elliptic_ke(m: f64) -> (f64, f64) {
+    let (mut a, mut b) = (1.0f64, (1.0 - m).sqrt());
+    let mut sum = 0.5 * m; // Σ 2^(n−1) c_n², c_0² = m
+    let mut pow = 0.5;
+    for _ in 0..60 {
+        let c = 0.5 * (a - b);
+        pow *= 2.0;
+        sum += pow * c * c;
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+        if c.abs() < 1e-17 {
+            break;
+        }
+    }
+    let k = PI / (2.0 * a);
+    (k, k * (1.0 - sum))
+}
+
+/// Jacobi's cn(u | m) for m ∈ [0, 1] by the descending Landen transformation (Abramowitz &
+/// Stegun 16.4.3), to round-off.
+pub fn jacobi_cn(u: f64, m: f64) -> f64 {
+    if m >= 1.0 {
+        return 1.0 / u.cosh();
+    }
+    let mut a = [0.0f64; 64];
+    let mut c = [0.0f64; 64];
+    a[0] = 1.0;
+    let mut b = (1.0 - m).sqrt();
+    c[0] = m.sqrt();
+    let mut n = 0;
+    while c[n].abs() > 1e-16 && n < 63 {
+        let an = a[n];
+        a[n + 1] = 0.5 * (an + b);
+        c[n + 1] = 0.5 * (an - b);
+        b = (an * b).sqrt();
+        n += 1;
+    }
+    let mut phi = 2f64.powi(n as i32) * a[n] * u;
+    for j in (1..=n).rev() {
+        phi = 0.5 * (phi + (c[j] * phi.sin() / a[j]).asin());
+    }
+    phi.cos()
+}
+
+/// A first-order cnoidal wave (Korteweg & de Vries 1895; Fenton 1999), the long wave of
+/// shallow water where the Ursell number is large:
+///
+/// ```text
+/// η = H [ (1 − m − E/K)/m + cn²(2K (x/L − t/T) | m) ]        (mean level zero)
+/// L = 4 K √(m h³/(3H)),   c = L/T = √(g h) [1 + H/(m h) (1 − m/2 − 3E/(2K))]
+/// ```
+///
+/// with K(m), E(m) the complete elliptic integrals; m is found from H, T and h. The velocity
+/// is taken uniform over the depth, u = c η/(h + η), with w from continuity, as for the
+/// solitary wave (the long-wave kinematics at this order).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cnoidal {
+    /// H [m].
+    pub height: f64,
+    /// T [s].
+    pub period: f64,
+    /// h [m].
+    pub depth: f64,
+    /// The elliptic parameter m [-].
+    pub m: f64,
+    /// L [m].
+    pub wavelength: f64,
+}
+
+impl Cnoidal {
+    /// The cnoidal wave of height `height`, period `period` in water `depth` deep under
+    /// gravity `g`, or `None` where the theory has no solution (a wave too short or too low
+    /// for it: use Stokes' theory there).
+    pub fn new(height: f64, period: f64, depth: f64, g: f64) -> Option<Cnoidal> {
+        let (h, big_h) = (depth, height);
+        let period_of = |m: f64| {
+            let (k, e) = elliptic_ke(m);
+            let l = 4.0 * k * (m * h * h * h / (3.0 * big_h)).sqrt();
+            let c = (g * h).sqrt() * (1.0 + big_h / (m * h) * (1.0 - 0.5 * m - 1.5 * e / k));
+            (l / c, l)
+        };
+        // T(m) grows without bound as m → 1. Walking down from there on q = −ln(1 − m) (for
+        // resolution near m = 1), the first q where T falls below the period brackets the
+        // root, unless c has dropped far below √(gh) first: the theory's range ends there
+        // (at small m, c even turns negative).
+        let at = |q: f64| period_of(1.0 - (-q).exp());
+        let speed_ok = |q: f64| {
+            let (t, l) = at(q);
+            t > 0.0 && l / t > 0.5 * (g * h).sqrt()
+        };
+        let (mut lo, mut hi) = (f64::NAN, 40.0f64);
+        if at(hi).0 < period {
+            return None;
+        }
+        let mut q = hi;
+        while q > 0.05 {
+            let next = q - 0.05;
+            if !speed_ok(next) {
+                return None;
+            }
+            if at(next).0 < period {
+                (lo, hi) = (next, q);
+                break;
+            }
+            q = next;
+        }
+        if lo.is_nan() {
+            return None;
+        }
+        for _ in 0..100 {
+            let mid = 0.5 * (lo + hi);
+            if at(mid).0 < period {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let m = 1.0 - (-0.5 * (lo + hi)).exp();
+        Some(Cnoidal {
+            height,
+            period,
+            depth,
+            m,
+            wavelength: period_of(m).1,
+        })
+    }
+
+    /// η, u and ∂u/∂x at (x, t) (long-wave kinematics).
+    fn shallow(&self, x: f64, t: f64) -> (f64, f64, f64) {
+        let (k, e) = elliptic_ke(self.m);
+        let trough = self.height * (1.0 - self.m - e / k) / self.m;
+        let eta_at = |x: f64| {
+            let cn = jacobi_cn(2.0 * k * (x / self.wavelength - t / self.period), self.m);
+            trough + self.height * cn * cn
+        };
+        let c = self.wavelength / self.period;
+        let h = self.depth;
+        let eta = eta_at(x);
+        // ∂η/∂x by a central difference of a thousandth of a wavelength: smooth at that scale.
+        let dx = 1e-6 * self.wavelength;
+        let deta_dx = (eta_at(x + dx) - eta_at(x - dx)) / (2.0 * dx);
+        let u = c * eta / (h + eta);
+        (eta, u, c * h / ((h + eta) * (h + eta)) * deta_dx)
+    }
 }
 
 /// The Ursell number U_r = H L²/h³ [-] of a wave of height `height`, length `wavelength`, in
@@ -592,5 +748,69 @@ mod tests {
                 .sum();
             assert!((sea.elevation(x, 0.3) - expected).abs() < 1e-12, "n {n}");
         }
+    }
+
+    /// K and E meet their tabulated values (A & S table 17.1: K(½) = 1.8540746773013719,
+    /// E(½) = 1.3506438810476755) and K(0) = E(0) = π/2; cn(u | 0) = cos u, cn(K | m) = 0,
+    /// cn² + sn² = 1 holds through the identity cn(2K − u) = −cn(u).
+    #[test]
+    fn elliptic_functions_meet_their_tables() {
+        let (k, e) = elliptic_ke(0.5);
+        assert!((k - 1.854_074_677_301_371_9).abs() < 1e-14, "{k}");
+        assert!((e - 1.350_643_881_047_675_5).abs() < 1e-14, "{e}");
+        let (k0, e0) = elliptic_ke(0.0);
+        assert!((k0 - PI / 2.0).abs() < 1e-15 && (e0 - PI / 2.0).abs() < 1e-15);
+        for u in [0.0, 0.3, 1.7, 4.0] {
+            assert!((jacobi_cn(u, 0.0) - u.cos()).abs() < 1e-14);
+        }
+        for m in [0.1, 0.5, 0.9, 0.999] {
+            let (k, _) = elliptic_ke(m);
+            assert!(jacobi_cn(k, m).abs() < 1e-12, "m {m}");
+            assert!((jacobi_cn(2.0 * k - 0.4, m) + jacobi_cn(0.4, m)).abs() < 1e-12);
+        }
+    }
+
+    /// A cnoidal wave of H = 0.1 m, T = 6 s in h = 0.5 m (Ursell number 154): it has
+    /// the period asked for, a crest-to-trough height H, a mean level of zero, and a long
+    /// period drives it towards the solitary wave of the same height (its crest region
+    /// within 2 % of H of the solitary profile when m is within 1e-8 of 1).
+    #[test]
+    fn a_cnoidal_wave_has_its_period_height_and_solitary_limit() {
+        let (h, big_h) = (0.5, 0.1);
+        let c = Cnoidal::new(big_h, 6.0, h, G).expect("in the cnoidal range");
+        let wave = Wave::Cnoidal(c);
+        println!(
+            "m = {}, L = {} m, Ursell {}",
+            c.m,
+            c.wavelength,
+            ursell(big_h, c.wavelength, h)
+        );
+        let n = 4000;
+        let etas: Vec<f64> = (0..n)
+            .map(|i| wave.elevation(c.wavelength * i as f64 / n as f64, 0.0))
+            .collect();
+        let mean = etas.iter().sum::<f64>() / n as f64;
+        let (lo, hi) = etas
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(a, b), &e| (a.min(e), b.max(e)));
+        assert!(mean.abs() < 1e-6 * big_h, "mean {mean}");
+        assert!((hi - lo - big_h).abs() < 1e-9, "{}", hi - lo);
+        // The crest returns after one period at the same place.
+        assert!((wave.elevation(0.0, 6.0) - wave.elevation(0.0, 0.0)).abs() < 1e-9);
+        let long = Cnoidal::new(big_h, 60.0, h, G).unwrap();
+        assert!(1.0 - long.m < 1e-8, "m {}", long.m);
+        let cn = Wave::Cnoidal(long);
+        let sol = Wave::Solitary {
+            height: big_h,
+            depth: h,
+            crest: 0.0,
+            gravity: G,
+        };
+        for x in [-1.0, -0.4, 0.0, 0.3, 0.8] {
+            let d = cn.elevation(x, 0.0) - sol.elevation(x, 0.0);
+            assert!(d.abs() < 0.02 * big_h, "x {x}: {d}");
+        }
+        // Too short a period has no cnoidal solution.
+        assert!(Cnoidal::new(big_h, 0.5, h, G).is_none());
     }
 }
