@@ -142,7 +142,6 @@ impl Interface {
         }
         // Clipped per plane in parallel, then summed in plane order (the same bits on any
         // number of threads).
-        self.clipped.resize(g.padded()[2], Clipped::default());
         alpha
             .par_chunks_mut(plane)
             .zip(self.clipped.par_iter_mut())
@@ -195,40 +194,44 @@ impl Interface {
             };
             alpha[(base as i64 + m * s[axis] as i64) as usize]
         };
+        // Interior lines only (1 ..= n across the axis), every storage slot along it; the
+        // faces f = 0 ..= n sit at slots 1 ..= n + 1.
+        let span = |b: usize| {
+            if b == axis {
+                0..g.padded()[b]
+            } else {
+                1..g.n[b] + 1
+            }
+        };
         self.flux
             .par_chunks_mut(plane)
             .enumerate()
             .for_each(|(kk, out)| {
-                for jj in 0..g.padded()[1] {
-                    for ii in 0..g.padded()[0] {
+                out.fill(0.0);
+                if !span(2).contains(&kk) {
+                    return;
+                }
+                for jj in span(1) {
+                    for ii in span(0) {
                         let p = [ii, jj, kk];
-                        let q = ii + jj * s[1];
-                        // Interior faces of interior lines only.
-                        let on_line = (0..3)
-                            .filter(|&b| b != axis)
-                            .all(|b| (1..=g.n[b]).contains(&p[b]));
-                        let f = p[axis] as i64 - 1; // face index along the line
-                        if !on_line || !(0..=n as i64).contains(&f) {
-                            out[q] = 0.0;
+                        let f = p[axis] as i64 - 1; // the face's index along the line
+                        if !(0..=n as i64).contains(&f) {
                             continue;
                         }
+                        let q = ii + jj * s[1];
                         let c = kk * plane + q;
-                        let base = c - (f as usize + 1) * s[axis] + s[axis];
+                        let base = c - f as usize * s[axis];
                         let cf = courant * u[c];
                         out[q] = if cf >= 0.0 {
-                            let ghost_donor = !periodic && f == 0;
-                            if ghost_donor {
-                                at(base, -1) * cf
+                            if !periodic && f == 0 {
+                                at(base, -1) * cf // an inflow: the ghost donates
                             } else {
                                 thinc_flux(at(base, f - 2), at(base, f - 1), at(base, f), cf)
                             }
+                        } else if !periodic && f == n as i64 {
+                            at(base, n as i64) * cf
                         } else {
-                            let ghost_donor = !periodic && f == n as i64;
-                            if ghost_donor {
-                                at(base, n as i64) * cf
-                            } else {
-                                -thinc_flux(at(base, f + 1), at(base, f), at(base, f - 1), -cf)
-                            }
+                            -thinc_flux(at(base, f + 1), at(base, f), at(base, f - 1), -cf)
                         };
                     }
                 }

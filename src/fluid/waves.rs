@@ -75,7 +75,7 @@ pub enum Wave {
     Cnoidal(Cnoidal),
 }
 
-/// A regular wave: height, period, depth.
+/// A regular wave: height, period, depth, and its ω and k, solved once.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Regular {
     /// H [m].
@@ -84,15 +84,29 @@ pub struct Regular {
     pub period: f64,
     /// h [m].
     pub depth: f64,
-    /// g [m s⁻²].
-    pub gravity: f64,
+    /// ω = 2π/T [s⁻¹].
+    pub omega: f64,
+    /// k [m⁻¹] from the dispersion relation.
+    pub k: f64,
 }
 
 impl Regular {
+    /// The wave of height `height` [m] and period `period` [s] in water `depth` deep [m]
+    /// under gravity `g` [m s⁻²].
+    pub fn new(height: f64, period: f64, depth: f64, g: f64) -> Regular {
+        let omega = 2.0 * PI / period;
+        Regular {
+            height,
+            period,
+            depth,
+            omega,
+            k: wavenumber(omega, depth, g),
+        }
+    }
+
     /// ω [s⁻¹] and k [m⁻¹].
     pub fn omega_k(&self) -> (f64, f64) {
-        let omega = 2.0 * PI / self.period;
-        (omega, wavenumber(omega, self.depth, self.gravity))
+        (self.omega, self.k)
     }
 }
 
@@ -315,6 +329,8 @@ pub struct Cnoidal {
     pub depth: f64,
     /// The elliptic parameter m [-].
     pub m: f64,
+    /// K(m) and E(m) [-].
+    pub elliptic: (f64, f64),
     /// L [m].
     pub wavelength: f64,
 }
@@ -373,13 +389,14 @@ impl Cnoidal {
             period,
             depth,
             m,
+            elliptic: elliptic_ke(m),
             wavelength: period_of(m).1,
         })
     }
 
     /// η, u and ∂u/∂x at (x, t) (long-wave kinematics).
     fn shallow(&self, x: f64, t: f64) -> (f64, f64, f64) {
-        let (k, e) = elliptic_ke(self.m);
+        let (k, e) = self.elliptic;
         let trough = self.height * (1.0 - self.m - e / k) / self.m;
         let eta_at = |x: f64| {
             let cn = jacobi_cn(2.0 * k * (x / self.wavelength - t / self.period), self.m);
@@ -515,12 +532,7 @@ mod tests {
     /// ∂η/∂t = w at z = 0.
     #[test]
     fn regular_waves_are_potential_flows() {
-        let r = Regular {
-            height: 0.1,
-            period: 2.0,
-            depth: 0.8,
-            gravity: G,
-        };
+        let r = Regular::new(0.1, 2.0, 0.8, G);
         let (omega, _) = r.omega_k();
         let e = 1e-5;
         for wave in [Wave::Linear(r), Wave::Stokes2(r)] {
@@ -548,12 +560,7 @@ mod tests {
     /// k H²/8, Stokes' deep-water result.
     #[test]
     fn the_stokes_second_order_crest_is_higher_than_the_trough_is_deep() {
-        let r = Regular {
-            height: 0.1,
-            period: 1.0,
-            depth: 10.0,
-            gravity: G,
-        };
+        let r = Regular::new(0.1, 1.0, 10.0, G);
         let w = Wave::Stokes2(r);
         let (_, k) = r.omega_k();
         let crest = w.elevation(0.0, 0.0);
@@ -642,12 +649,7 @@ mod tests {
     /// leaves 38 %.
     #[test]
     fn the_stokes_second_order_wave_meets_the_surface_condition_to_second_order() {
-        let r = Regular {
-            height: 0.0016,
-            period: 2.0,
-            depth: 0.5,
-            gravity: G,
-        };
+        let r = Regular::new(0.0016, 2.0, 0.5, G);
         let (omega, k) = r.omega_k();
         let e = 1e-6;
         let residual = |wave: &Wave, x: f64, t: f64| {

@@ -33,6 +33,7 @@ use crate::fluid::Fluid;
 use crate::math::Vec3;
 use crate::rigid::bodies::RigidBodies;
 use crate::simulation::Simulation;
+use std::f64::consts::PI;
 
 /// A scenario turned into a simulation.
 pub struct Built {
@@ -179,7 +180,7 @@ fn parts(src: &Source, run: bool) -> Result<Parts, ScenarioError> {
     check_output(src, bodies.spheres.len() + report.n_fed)?;
     let limits = limits(src, report.v_ref)?;
     let radii: Vec<f64> = kinds.iter().map(|k| k.radius).collect();
-    let fluid = flow(src, &domain, gravity, &kinds, run, &mut report)?;
+    let fluid = flow(src, &domain, gravity, (&kinds, &radii), run, &mut report)?;
     if run {
         bodies.spheres.reserve(report.n_fed);
     }
@@ -321,17 +322,15 @@ fn check_output(src: &Source, n_total: usize) -> Result<(), ScenarioError> {
 
 /// Checks `[fluid]` and `[coupling]`; notes their derived quantities in `report` and returns
 /// the fluid, made only with `run` (`riprap check` estimates its memory). `radii` are the
-/// radii of the kinds of spheres [m].
+/// radii of `kinds` [m].
 fn flow(
     src: &Source,
     domain: &Domain,
     gravity: Vec3,
-    kinds: &[Kind],
+    (kinds, radii): (&[Kind], &[f64]),
     run: bool,
     report: &mut Report,
 ) -> Result<Option<Fluid>, ScenarioError> {
-    let radii: Vec<f64> = kinds.iter().map(|k| k.radius).collect();
-    let radii = &radii[..];
     let (fluid, mut fluid_derived) =
         match build_fluid(src, domain, gravity, report.steps.dt, radii, run)? {
             Some((f, d)) => (f, Some(d)),
@@ -340,13 +339,12 @@ fn flow(
     let mut coupling = coupling_parameters(src, fluid_derived.is_some())?;
     if let (Some(fd), Some(c)) = (&fluid_derived, coupling.as_mut()) {
         let p = &fd.parameters;
-        let masses: Vec<(f64, f64)> = kinds.iter().map(|k| (k.radius, k.mass)).collect();
         let mu = p.density * p.kinematic_viscosity;
+        let masses: Vec<(f64, f64)> = kinds.iter().map(|k| (k.radius, k.mass)).collect();
         c.lubrication = lubrication(src, fd.filter_width, mu, &masses, report.steps.dt)?;
         // St = ρ_p d v/(9 μ) = m v/(6π μ r²), of the kind that rebounds least.
-        let st =
-            |&(r, m): &(f64, f64)| m * report.v_ref / (6.0 * std::f64::consts::PI * mu * r * r);
-        report.stokes = masses.iter().map(st).reduce(f64::min);
+        let st = |k: &Kind| k.mass * report.v_ref / (6.0 * PI * mu * k.radius * k.radius);
+        report.stokes = kinds.iter().map(st).reduce(f64::min);
     }
     if let (Some(fd), Some(c)) = (fluid_derived.as_mut(), coupling) {
         note_coupling(fd, &c, gravity, report.v_ref);

@@ -82,9 +82,9 @@ pub(super) fn coupling_parameters(
 }
 
 /// The film of `[coupling]` (`lubrication = true`), checked against the flow (`cell` the
-/// grid's Δ [m], `mu` the viscosity [Pa s]), the kinds of spheres ((radius [m], mass [kg])
-/// of each) and the DEM step `dt` [s]: the explicit film force must not overshoot in one
-/// step, c Δt/m < 1 for every kind against a wall (stable below 2).
+/// grid's Δ [m], `mu` the viscosity [Pa s]), the kinds of spheres and the DEM step `dt` [s]:
+/// the explicit film force must not overshoot in one step, c Δt/m < 1 for every kind against
+/// a wall (stable below 2).
 pub(super) fn lubrication(
     src: &Source,
     cell: f64,

@@ -151,30 +151,22 @@ impl Law for HertzMindlin {
     /// for the slider.
     #[inline(always)]
     fn force<T: Real>(p: &Params<T>, c: &Contact<T>, xi: V3<T>, dt: T) -> Response<T> {
-        let Step {
-            k_t,
-            gamma_t,
-            c_i,
-            c_j,
-            f_n,
-            v_t,
-            xi,
-        } = Step::new(p, c, xi, dt);
+        let s = Step::new(p, c, xi, dt);
         let n = c.n;
-        let f_spring = xi.scale(-k_t);
-        let limit = p.friction * f_n.abs();
+        let f_spring = s.xi.scale(-s.k_t);
+        let limit = p.friction * s.f_n.abs();
         let ft2 = f_spring.dot(f_spring);
         // The slider [11][12]: scaled onto the Coulomb limit, ξ = −F_t/k_t.
         let f_slide = f_spring.scale(limit / ft2.sqrt());
         let slides = ft2.gt(limit * limit);
-        let f_t = V3::select(slides, f_slide, f_spring - v_t.scale(gamma_t));
-        let xi = V3::select(slides, f_slide.scale(T::splat(-1.0) / k_t), xi);
+        let f_t = V3::select(slides, f_slide, f_spring - s.v_t.scale(s.gamma_t));
+        let xi = V3::select(slides, f_slide.scale(T::splat(-1.0) / s.k_t), s.xi);
         let t = n.cross(f_t);
         Response {
             hist: xi,
-            force: n.scale(-f_n) + f_t,
-            torque_i: t.scale(c_i),
-            torque_j: t.scale(c_j),
+            force: n.scale(-s.f_n) + f_t,
+            torque_i: t.scale(s.c_i),
+            torque_j: t.scale(s.c_j),
         }
     }
 

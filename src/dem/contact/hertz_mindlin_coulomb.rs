@@ -44,30 +44,22 @@ impl Law for HertzMindlinCoulomb {
     /// law's).
     #[inline(always)]
     fn force<T: Real>(p: &Params<T>, c: &Contact<T>, xi: V3<T>, dt: T) -> Response<T> {
-        let Step {
-            k_t,
-            gamma_t,
-            c_i,
-            c_j,
-            f_n,
-            v_t,
-            xi,
-        } = Step::new(p, c, xi, dt);
+        let s = Step::new(p, c, xi, dt);
         let n = c.n;
-        let open = f_n.le(T::splat(0.0));
-        let limit = p.friction * f_n;
-        let spring = k_t * xi.length();
-        let xi = V3::select(spring.gt(limit), xi.scale(limit / spring), xi);
-        let f = xi.scale(-k_t) - v_t.scale(gamma_t);
+        let open = s.f_n.le(T::splat(0.0));
+        let limit = p.friction * s.f_n;
+        let spring = s.k_t * s.xi.length();
+        let xi = V3::select(spring.gt(limit), s.xi.scale(limit / spring), s.xi);
+        let f = xi.scale(-s.k_t) - s.v_t.scale(s.gamma_t);
         let len = f.length();
         let f_t = V3::select(len.gt(limit), f.scale(limit / len), f);
         let t = n.cross(f_t);
         let none = V3::zero();
         Response {
             hist: V3::select(open, none, xi),
-            force: V3::select(open, none, n.scale(-f_n) + f_t),
-            torque_i: V3::select(open, none, t.scale(c_i)),
-            torque_j: V3::select(open, none, t.scale(c_j)),
+            force: V3::select(open, none, n.scale(-s.f_n) + f_t),
+            torque_i: V3::select(open, none, t.scale(s.c_i)),
+            torque_j: V3::select(open, none, t.scale(s.c_j)),
         }
     }
 
