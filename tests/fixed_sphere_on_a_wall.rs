@@ -14,11 +14,7 @@ use riprap::math::Vec3;
 
 /// Every contact law riprap offers, with both dashpot choices of the source's Voigt model.
 fn laws() -> Vec<(&'static str, ContactModel)> {
-    let voigt = |spring, damping| ContactModel::Voigt {
-        spring,
-        damping,
-        tangential: Default::default(),
-    };
+    let voigt = |spring, damping| ContactModel::voigt(spring, damping, Default::default());
     vec![
         ("hertz", voigt(NormalSpring::Hertz, Damping::Restitution)),
         (
@@ -38,15 +34,18 @@ fn laws() -> Vec<(&'static str, ContactModel)> {
                 Damping::Restitution,
             ),
         ),
-        ("hertz_mindlin", ContactModel::HertzMindlin),
+        (
+            "hertz_mindlin",
+            ContactModel::HertzMindlin(Default::default()),
+        ),
         (
             "hooke_history",
-            ContactModel::HookeHistory {
+            ContactModel::HookeHistory(riprap::dem::material::HookeOptions {
                 normal_stiffness: 1e4,
                 tangential_stiffness: 2e3,
                 normal_damping: 10.0,
                 tangential_damping: 5.0,
-            },
+            }),
         ),
     ]
 }

@@ -38,11 +38,7 @@ struct Run {
 fn run(spring: NormalSpring, theta_deg: f64) -> Run {
     let th = theta_deg.to_radians();
     let mat = material(DENSITY, 5.0e7, 0.3, MU, 0.3);
-    let model = ContactModel::Voigt {
-        spring,
-        damping: Damping::Restitution,
-        tangential: Default::default(),
-    };
+    let model = ContactModel::voigt(spring, Damping::Restitution, Default::default());
     let m = sphere_mass(DENSITY, R);
     let load = m * G * th.cos();
     // Static overlap and the stiffness dF/dδ there, to start at rest and choose the step.

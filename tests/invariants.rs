@@ -46,11 +46,7 @@ fn static_overlap_on_a_plane() {
             k
         };
         let period = 2.0 * std::f64::consts::PI * (m / k_rest).sqrt();
-        let model = ContactModel::Voigt {
-            spring,
-            damping: Damping::Restitution,
-            tangential: Default::default(),
-        };
+        let model = ContactModel::voigt(spring, Damping::Restitution, Default::default());
         let mut d = dem(mat.clone(), model, open_box(1.0), period / 50.0);
         d.gravity = Vec3::new(0.0, 0.0, -g);
         d.walls.push(plane_wall(Vec3::ZERO, Vec3::Z));
@@ -154,13 +150,16 @@ fn elastic_gas_conserves_energy() {
     for (name, model) in [
         (
             "Voigt Hertz",
-            ContactModel::Voigt {
-                spring: NormalSpring::Hertz,
-                damping: Damping::Restitution,
-                tangential: Default::default(),
-            },
+            ContactModel::voigt(
+                NormalSpring::Hertz,
+                Damping::Restitution,
+                Default::default(),
+            ),
         ),
-        ("Hertz-Mindlin", ContactModel::HertzMindlin),
+        (
+            "Hertz-Mindlin",
+            ContactModel::HertzMindlin(Default::default()),
+        ),
     ] {
         let mut sim = gas(mat.clone(), model, 0.16, 200, 1.0, dt);
         let (e0, mut touching) = energy(&sim, es);
@@ -202,21 +201,24 @@ fn momentum_is_conserved_with_friction_and_damping() {
     for (name, model) in [
         (
             "Voigt Hertz",
-            ContactModel::Voigt {
-                spring: NormalSpring::Hertz,
-                damping: Damping::Restitution,
-                tangential: Default::default(),
-            },
+            ContactModel::voigt(
+                NormalSpring::Hertz,
+                Damping::Restitution,
+                Default::default(),
+            ),
         ),
         (
             "Voigt linear",
-            ContactModel::Voigt {
-                spring: NormalSpring::Linear { stiffness: 2.0e4 },
-                damping: Damping::Critical,
-                tangential: Default::default(),
-            },
+            ContactModel::voigt(
+                NormalSpring::Linear { stiffness: 2.0e4 },
+                Damping::Critical,
+                Default::default(),
+            ),
         ),
-        ("Hertz-Mindlin", ContactModel::HertzMindlin),
+        (
+            "Hertz-Mindlin",
+            ContactModel::HertzMindlin(Default::default()),
+        ),
     ] {
         let mut sim = gas(mat.clone(), model, 0.16, 200, 1.0, tc / 40.0);
         // A net drift, so that the check is not of a zero.

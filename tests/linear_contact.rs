@@ -17,7 +17,7 @@
 mod common;
 
 use common::*;
-use riprap::dem::contact::damping;
+use riprap::dem::contact::{damping, voigt, Columns};
 use riprap::dem::material::{ContactModel, Damping, NormalSpring};
 use riprap::math::Vec3;
 
@@ -127,20 +127,23 @@ fn collide(choice: &Choice, wall: bool, steps: f64) -> (f64, f64, f64, f64) {
         Choice::Ratio(_) => (0.5, Damping::Critical),
     };
     let mat = material(DENSITY, 1e8, 0.3, 0.0, e_target);
-    let model = ContactModel::Voigt {
-        spring: NormalSpring::Linear { stiffness: K },
+    let model = ContactModel::voigt(
+        NormalSpring::Linear { stiffness: K },
         damping,
-        tangential: Default::default(),
-    };
+        Default::default(),
+    );
     let m = sphere_mass(DENSITY, R);
     let m_star = if wall { m } else { 0.5 * m };
     let w0 = (K / m_star).sqrt();
     let dt = 2.0 * std::f64::consts::PI / w0 / steps;
     let mut d = dem(mat, model, open_box(1.0), dt);
+    // The law's constants, with ζ set directly for a `Ratio`.
+    let mut params: voigt::Params<f64> = Columns::from_columns(d.laws[0].k);
     if let Choice::Ratio(z) = *choice {
-        d.laws[0].damping_ratio = z;
+        params.damping_ratio = z;
+        d.laws[0].k = params.to_columns();
     }
-    let zeta = d.laws[0].damping_ratio;
+    let zeta = params.damping_ratio;
     let v = if wall { 0.6 } else { 1.0 };
     let gap = 10.37 * dt * v;
     if wall {

@@ -29,11 +29,11 @@ const G: f64 = 9.81;
 
 fn base(e: f64, gravity: Vec3, dt: f64) -> Dem {
     let mat = material(DENSITY, 5.0e7, 0.3, 0.4, e);
-    let model = ContactModel::Voigt {
-        spring: NormalSpring::Linear { stiffness: K },
-        damping: Damping::Restitution,
-        tangential: Default::default(),
-    };
+    let model = ContactModel::voigt(
+        NormalSpring::Linear { stiffness: K },
+        Damping::Restitution,
+        Default::default(),
+    );
     let mut d = dem(mat, model, open_box(1.0), dt);
     d.gravity = gravity;
     d

@@ -46,11 +46,7 @@ fn frame() -> (Vec3, Vec3) {
 /// Sphere hitting the plane through the origin with normal speed v_n and tangential speed v_t.
 fn impact(spring: NormalSpring, e: f64, vn: f64, vt: f64, steps_per_contact: f64) -> Outcome {
     let mat = material(DENSITY, 5.0e7, 0.3, MU, e);
-    let model = ContactModel::Voigt {
-        spring,
-        damping: Damping::Restitution,
-        tangential: Default::default(),
-    };
+    let model = ContactModel::voigt(spring, Damping::Restitution, Default::default());
     let m = sphere_mass(DENSITY, R);
     let tc = match spring {
         NormalSpring::Linear { stiffness } => std::f64::consts::PI * (m / stiffness).sqrt(),
@@ -201,11 +197,11 @@ fn no_slip_impact_leaves_with_the_tangential_velocity_its_stiffness_ratio_gives(
         (TangentialStiffness::Mindlin, 2.0 * 0.7 / 1.7, 1.0),
     ] {
         let mat = material(DENSITY, 5.0e7, 0.3, 1.0e4, 1.0);
-        let model = ContactModel::Voigt {
-            spring: NormalSpring::Linear { stiffness: k },
-            damping: Damping::Restitution,
+        let model = ContactModel::voigt(
+            NormalSpring::Linear { stiffness: k },
+            Damping::Restitution,
             tangential,
-        };
+        );
         let dt = tc / 8000.0;
         let (vn, vt) = (1.0, 0.1);
         let mut d = dem(mat, model, open_box(1.0), dt);
@@ -257,8 +253,10 @@ fn hertz_mindlin_with_the_coulomb_limit_gives_coulomb_impulses_in_gross_sliding(
     for e in [0.9, 0.5, 0.2] {
         for ratio in [1.1, 3.0] {
             let vt = ratio * 3.5 * MU * (1.0 + e);
-            let (coulomb, e_c) = impulse_ratio(ContactModel::HertzMindlinCoulomb, e, vt);
-            let (liggghts, _) = impulse_ratio(ContactModel::HertzMindlin, e, vt);
+            let (coulomb, e_c) =
+                impulse_ratio(ContactModel::HertzMindlinCoulomb(Default::default()), e, vt);
+            let (liggghts, _) =
+                impulse_ratio(ContactModel::HertzMindlin(Default::default()), e, vt);
             eprintln!(
                 "e = {e} (measured {e_c:.4}), v_t/v_n = {vt:.3}: J_t/J_n = {coulomb:.12} \
                  (Coulomb {MU}), LIGGGHTS law {liggghts:.5}"

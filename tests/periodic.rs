@@ -22,11 +22,11 @@ fn domain() -> Domain {
 }
 
 fn model() -> ContactModel {
-    ContactModel::Voigt {
-        spring: NormalSpring::Hertz,
-        damping: Damping::Restitution,
-        tangential: Default::default(),
-    }
+    ContactModel::voigt(
+        NormalSpring::Hertz,
+        Damping::Restitution,
+        Default::default(),
+    )
 }
 
 /// A free sphere (no gravity) started near a face moves straight through it: after the crossing

@@ -45,11 +45,7 @@ fn elastic_duration(spring: NormalSpring, r_star: f64, m_star: f64, v: f64) -> f
 /// Measured restitution of sphere 0 (radius r0) on sphere 1 (radius r1) or on a plane (r1 = ∞).
 fn measured(spring: NormalSpring, e: f64, v: f64, r0: f64, r1: f64) -> f64 {
     let mat = material(DENSITY, YOUNG, POISSON, 0.4, e);
-    let model = ContactModel::Voigt {
-        spring,
-        damping: Damping::Restitution,
-        tangential: Default::default(),
-    };
+    let model = ContactModel::voigt(spring, Damping::Restitution, Default::default());
     let m_star = harmonic(sphere_mass(DENSITY, r0), sphere_mass(DENSITY, r1));
     let tc = elastic_duration(spring, harmonic(r0, r1), m_star, v);
     let dt = tc / STEPS_PER_CONTACT;

@@ -122,7 +122,12 @@ fn settle(steps: usize, dt: f64) -> Settled {
         max: Vec3::new(0.25, 0.05, 0.05),
         periodic: [false; 3],
     };
-    let mut dem = Dem::new(vec![material], ContactModel::HertzMindlin, domain, dt);
+    let mut dem = Dem::new(
+        vec![material],
+        ContactModel::HertzMindlin(Default::default()),
+        domain,
+        dt,
+    );
     dem.gravity = Vec3::ZERO;
     let r = 0.5 * D;
     let ids: Vec<_> = (0..=N)

@@ -36,7 +36,12 @@ fn a_rod_block_dropped_on_a_floor_settles_lying_flat_and_stays_rigid() {
         periodic: [false; 3],
     };
     let dt = 2e-5; // ~80 steps per wall contact at 1 m/s
-    let mut dem = Dem::new(vec![material], ContactModel::HertzMindlin, domain, dt);
+    let mut dem = Dem::new(
+        vec![material],
+        ContactModel::HertzMindlin(Default::default()),
+        domain,
+        dt,
+    );
     dem.walls.push(Wall {
         name: "floor".into(),
         shape: Shape::Plane(Plane::new(Vec3::ZERO, Vec3::Z)),

@@ -472,11 +472,11 @@ fn a_bonded_pair_pulled_past_its_tensile_strength_breaks_and_lets_go() {
     };
     let dt = 5e-7; // 360 steps per bond period
                    // The source's Voigt law, whose joint carries no tension [10].
-    let model = ContactModel::Voigt {
-        spring: NormalSpring::Hertz,
-        damping: Damping::Restitution,
-        tangential: Default::default(),
-    };
+    let model = ContactModel::voigt(
+        NormalSpring::Hertz,
+        Damping::Restitution,
+        Default::default(),
+    );
     let mut dem = Dem::new(vec![material], model, domain, dt);
     dem.gravity = Vec3::ZERO;
     let v0 = Vec3::new(0.5, 0.0, 0.0);

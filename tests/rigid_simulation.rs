@@ -28,11 +28,11 @@ fn setup(
     templates: Vec<BlockTemplate>,
 ) -> (Dem, RigidBodies) {
     let th = theta_deg.to_radians();
-    let model = ContactModel::Voigt {
-        spring: NormalSpring::Hertz,
-        damping: Damping::Restitution,
-        tangential: Default::default(),
-    };
+    let model = ContactModel::voigt(
+        NormalSpring::Hertz,
+        Damping::Restitution,
+        Default::default(),
+    );
     let mut dem = Dem::new(
         vec![material(2400.0, 1.0e8, 0.2, mu, e)],
         model,

@@ -182,7 +182,9 @@ restitution_coefficient = 0.2
 /// LIGGGHTS's own; a tangential stiffness for Hertz-Mindlin is refused naming the key.
 #[test]
 fn contact_law_choices_reach_the_law_and_check_names_them() {
-    use riprap::dem::material::LawKind;
+    use riprap::dem::contact::{voigt, Columns};
+    use riprap::dem::material::{LawKind, PairLaw};
+    let ratio = |law: &PairLaw| voigt::Params::<f64>::from_columns(law.k).tangential_ratio;
     let dir = temp_dir("law_choices");
     let build_with = |contact: &str| {
         let text = format!("{BASE}{ONE_SPHERE}\n[contact]\n{contact}\n");
@@ -191,16 +193,13 @@ fn contact_law_choices_reach_the_law_and_check_names_them() {
         (build(&src).unwrap().simulation.dem.laws[0], report)
     };
     let (source, report) = build_with("model = \"hertz\"");
-    assert!(
-        (source.tangential_ratio - 1.0 / 2.5).abs() < 1e-15,
-        "ν = 0.25"
-    );
+    assert!((ratio(&source) - 1.0 / 2.5).abs() < 1e-15, "ν = 0.25");
     assert!(
         report.contains("tangential_stiffness = \"mindlin\" gives Mindlin's"),
         "{report}"
     );
     let (mindlin, report) = build_with("model = \"hertz\"\ntangential_stiffness = \"mindlin\"");
-    assert!((mindlin.tangential_ratio - 1.5 / 1.75).abs() < 1e-15);
+    assert!((ratio(&mindlin) - 1.5 / 1.75).abs() < 1e-15);
     assert!(report.contains("k_t/k_n = 0.857, Mindlin's"), "{report}");
     let (hm, report) = build_with("model = \"hertz_mindlin\"");
     assert_eq!(hm.kind, LawKind::HertzMindlinCoulomb);
@@ -211,7 +210,28 @@ fn contact_law_choices_reach_the_law_and_check_names_them() {
         &format!("{ONE_SPHERE}\n[contact]\nmodel = \"hertz_mindlin\"\ntangential_stiffness = \"mindlin\"\n"),
         "tangential_stiffness = ",
         "contact.tangential_stiffness",
-        &["only the Voigt laws"],
+        &["the `hertz_mindlin` model", "unknown field `tangential_stiffness`"],
+    );
+    // LAMMPS's Hooke law with its four constants, each checked by the law.
+    let hooke = "model = \"hooke_history\"\nnormal_stiffness = 2e3\ntangential_stiffness = 571.0\n\
+                 normal_damping = 50.0\ntangential_damping = 25.0";
+    let (law, report) = build_with(hooke);
+    assert_eq!(law.kind, LawKind::HookeHistory);
+    assert!(report.contains("LAMMPS gran/hooke/history"), "{report}");
+    refused(
+        &format!(
+            "{ONE_SPHERE}\n[contact]\n{}\n",
+            hooke.replace("= 50.0", "= -50.0")
+        ),
+        "normal_damping = ",
+        "contact.normal_damping",
+        &["must be zero or positive"],
+    );
+    refused(
+        &format!("{ONE_SPHERE}\n[contact]\nmodel = \"hooke_history\"\nnormal_stiffness = 2e3\n"),
+        "model = ",
+        "contact.model",
+        &["missing field `tangential_stiffness`"],
     );
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -48,7 +48,12 @@ pub fn b1_simulation(n: [usize; 3]) -> Simulation {
         max: hi,
         periodic: [false; 3],
     };
-    let mut dem = Dem::new(vec![material], ContactModel::HertzMindlin, domain, 3.0e-5);
+    let mut dem = Dem::new(
+        vec![material],
+        ContactModel::HertzMindlin(Default::default()),
+        domain,
+        3.0e-5,
+    );
     dem.neighbors.skin = 0.2 * d;
     dem.spheres.reserve(n[0] * n[1] * n[2]);
     let a = 0.05;

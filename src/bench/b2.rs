@@ -121,12 +121,12 @@ pub fn b2_simulation(data: &LammpsData) -> Simulation {
         restitution_coefficient: 0.0,
     };
     let kn = 200_000.0;
-    let model = ContactModel::HookeHistory {
+    let model = ContactModel::HookeHistory(crate::dem::material::HookeOptions {
         normal_stiffness: kn,
         tangential_stiffness: kn * 2.0 / 7.0,
         normal_damping: 50.0,
         tangential_damping: 0.0,
-    };
+    });
     // `boundary p p fs`: open in z; the box only needs room above the flow.
     let height = data.hi.z - data.lo.z;
     let domain = Domain {

@@ -99,7 +99,12 @@ mod tests {
             max: Vec3::splat(1.0),
             periodic: [false; 3],
         };
-        let mut dem = Dem::new(vec![m], ContactModel::HertzMindlin, domain, 1e-5);
+        let mut dem = Dem::new(
+            vec![m],
+            ContactModel::HertzMindlin(Default::default()),
+            domain,
+            1e-5,
+        );
         let r = 0.01;
         dem.add_sphere(Vec3::new(0.0, 0.0, r - 2e-4), Vec3::ZERO, Vec3::ZERO, r, 0);
         dem.add_sphere(

@@ -6,7 +6,6 @@
 //! linear spring with that period has the same contact duration. A step above T/10 is refused
 //! (fewer than five steps per contact) unless forced.
 
-use super::contact;
 use super::material::PairLaw;
 
 pub use super::contact::scales::HERTZ_DURATION_FACTOR;
@@ -40,7 +39,7 @@ pub struct ContactScales {
 ///
 /// Implements [22].
 pub fn contact_scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> ContactScales {
-    let s = (contact::law_fns(law.kind).scales)(law, r_star, m_star, v, load);
+    let s = law.scales(r_star, m_star, v, load);
     ContactScales {
         r_star,
         m_star,
@@ -105,11 +104,11 @@ mod tests {
             friction_coefficient: 0.5,
             restitution_coefficient: 0.3,
         };
-        let model = ContactModel::Voigt {
-            spring: NormalSpring::Hertz,
-            damping: Damping::Restitution,
-            tangential: Default::default(),
-        };
+        let model = ContactModel::voigt(
+            NormalSpring::Hertz,
+            Damping::Restitution,
+            Default::default(),
+        );
         let law = PairLaw::new(&model, &m, &m, PairOverride::default());
         let c = contact_scales(&law, 0.005, 1e-3, 1.0, 0.0);
         let (fine, n) = discrete_impact(&law, 0.005, 1e-3, 1.0, c.duration / 200.0);

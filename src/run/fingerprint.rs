@@ -45,7 +45,10 @@ pub fn fingerprint(src: &Source, sim: &Simulation) -> Fingerprint {
             hash(&(sc.run.skin_fraction, sc.run.reference_velocity)),
         ),
         ("domain", hash(&sc.domain)),
-        ("contact", hash(&sc.contact)),
+        (
+            "contact",
+            hash(&(&sc.contact.model, &sc.contact.options, &sc.contact.pairs)),
+        ),
         ("materials", hash(&sc.materials)),
         ("walls", walls),
         ("spheres", hash(&sc.spheres)),

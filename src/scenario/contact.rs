@@ -1,12 +1,13 @@
 //! The `[[material]]` tables and the `[contact]` section: the materials, checked, and the law
 //! of every pairing of two of them.
 
+use serde::Deserialize;
+
 use super::checks::{material_of, non_negative, positive, restitution};
-use super::schema::{ContactSection, DampingName, MaterialSection, ModelName, TangentialName};
+use super::schema::{ContactSection, MaterialSection};
 use super::{ScenarioError, Source};
-use crate::dem::material::{
-    ContactModel, Damping, Material, NormalSpring, PairLaw, PairOverride, TangentialStiffness,
-};
+use crate::dem::contact::ScenarioValues;
+use crate::dem::material::{ContactModel, Material, PairLaw, PairOverride};
 
 /// The scenario's materials, by index, and their names (for look-ups and messages).
 pub(super) struct Materials {
@@ -118,60 +119,40 @@ fn pair_overrides(src: &Source, names: &[String]) -> Result<Vec<PairOverride>, S
     Ok(overrides)
 }
 
-/// The `[contact]` section's model: the spring and the dashpot.
+/// The `[contact]` section's law: `model` names it, and the keys beside it are read as its
+/// options (each law's own struct, `dem::contact`), checked by the law.
 fn contact_model(
     src: &Source,
     c: &ContactSection,
     v_ref: f64,
 ) -> Result<ContactModel, ScenarioError> {
-    let damping = match c.damping {
-        DampingName::Critical => Damping::Critical,
-        DampingName::Restitution => Damping::Restitution,
-    };
-    let voigt = !matches!(
-        c.model,
-        ModelName::HertzMindlin | ModelName::HertzMindlinLiggghts
-    );
-    if c.tangential_stiffness.is_some() && !voigt {
-        return Err(src.invalid(
-            "contact.tangential_stiffness",
-            "only the Voigt laws (hertz, linear, apparent_linear_hertz) take it; Hertz-Mindlin's \
-             tangential stiffness is Mindlin's already (8 G* a)",
-        ));
-    }
-    let spring = match c.model {
-        ModelName::HertzMindlin => return Ok(ContactModel::HertzMindlinCoulomb),
-        ModelName::HertzMindlinLiggghts => return Ok(ContactModel::HertzMindlin),
-        ModelName::Hertz => NormalSpring::Hertz,
-        ModelName::ApparentLinearHertz => NormalSpring::ApparentLinearHertz {
-            reference_velocity: v_ref,
-        },
-        ModelName::Linear => {
-            let k = c.stiffness.ok_or_else(|| {
-                src.invalid_at(
-                    "contact.stiffness",
-                    "contact.model",
-                    "the linear model needs a normal stiffness: add `stiffness = ...` [N/m] to [contact] \
-                     (or choose a model that derives it from the materials, e.g. \"hertz\")",
-                )
-            })?;
-            NormalSpring::Linear {
-                stiffness: positive(src, "contact.stiffness", k)?,
-            }
+    let mut table = c.options.clone();
+    table.insert("model".into(), toml::Value::String(c.model.clone()));
+    let mut model = ContactModel::deserialize(toml::Value::Table(table)).map_err(|e| {
+        let msg = e.to_string();
+        let msg = msg.trim_end();
+        // serde names an unknown or missing key between backticks: point at it.
+        let key = c
+            .options
+            .keys()
+            .find(|k| msg.contains(&format!("`{k}`")))
+            .map_or("contact.model".to_string(), |k| format!("contact.{k}"));
+        if msg.contains("unknown variant") {
+            return src.invalid("contact.model", msg.to_string());
         }
-    };
-    if c.stiffness.is_some() && c.model != ModelName::Linear {
-        return Err(src.invalid(
-            "contact.stiffness",
-            "only the linear model takes a stiffness; the others derive it from the materials",
-        ));
-    }
-    Ok(ContactModel::Voigt {
-        spring,
-        damping,
-        tangential: match c.tangential_stiffness.unwrap_or_default() {
-            TangentialName::Source => TangentialStiffness::Source,
-            TangentialName::Mindlin => TangentialStiffness::Mindlin,
-        },
-    })
+        src.invalid_at(&key, &key, format!("the `{}` model: {msg}", c.model))
+    })?;
+    model.complete(&ScenarioValues {
+        reference_velocity: v_ref,
+    });
+    model.check().map_err(|e| {
+        let key = format!("contact.{}", e.key);
+        let at = if c.options.contains_key(e.key) {
+            key.clone()
+        } else {
+            "contact.model".into()
+        };
+        src.invalid_at(&key, &at, e.reason)
+    })?;
+    Ok(model)
 }

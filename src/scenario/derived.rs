@@ -5,7 +5,6 @@ use std::fmt::Write as _;
 
 use super::fluid::FluidDerived;
 use super::memory::MemoryEstimate;
-use crate::dem::contact;
 use crate::dem::material::PairLaw;
 use crate::dem::timestep::ContactScales;
 
@@ -144,7 +143,11 @@ impl Derived {
             let _ = writeln!(
                 s,
                 "  {:<34} μ {:.3}, e {:.3}, E* {:.3e} Pa, G* {:.3e} Pa",
-                name, c.law.friction, c.law.restitution, c.law.e_star, c.law.g_star
+                name,
+                c.law.mixed.friction,
+                c.law.mixed.restitution,
+                c.law.mixed.e_star,
+                c.law.mixed.g_star
             );
         }
     }
@@ -156,7 +159,7 @@ impl Derived {
             "restitution a run at this time step shows (head-on, reference velocity):"
         );
         for ((name, c), (e, n)) in self.pairings.iter().zip(&self.at_step) {
-            let target = ideal_restitution(&c.law);
+            let target = ideal_restitution(&c.law, c.m_star);
             let _ = writeln!(
                 s,
                 "  {:<34} target {:.3}, at Δt {:.3} ({:+.1} %), {} steps in contact",
@@ -171,11 +174,11 @@ impl Derived {
 }
 
 /// The restitution of a head-on impact in continuous time: what the dashpots were chosen for.
-fn ideal_restitution(law: &PairLaw) -> f64 {
-    (contact::law_fns(law.kind).restitution)(law)
+fn ideal_restitution(law: &PairLaw, m_star: f64) -> f64 {
+    law.restitution(m_star)
 }
 
 /// What `check` says of the contact law: which law, and the choices that change results.
 fn law_line(law: &PairLaw) -> String {
-    (contact::law_fns(law.kind).describe)(law)
+    law.describe()
 }

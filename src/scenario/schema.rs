@@ -88,65 +88,33 @@ pub struct DomainSection {
     pub gravity: Option<[f64; 3]>,
 }
 
-/// Which normal spring (or which whole law) to use.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ModelName {
-    /// Linear spring [18] with a given stiffness.
-    Linear,
-    /// Hertz spring [15]-[17].
-    #[default]
-    Hertz,
-    /// Apparent linear Hertz spring [18][19].
-    ApparentLinearHertz,
-    /// Hertz-Mindlin with tangential history and the Coulomb limit on the whole tangential
-    /// force, no tension (`contact::hertz_mindlin_coulomb`).
-    HertzMindlin,
-    /// Hertz-Mindlin exactly as LIGGGHTS computes it (`model hertz tangential history`), the
-    /// benchmarks' law: its friction can exceed μ F_n while a contact forms and ends.
-    HertzMindlinLiggghts,
-}
-
-/// The tangential spring of the Voigt laws against the normal one (`[contact]
-/// tangential_stiffness`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum TangentialName {
-    /// k_t/k_n = 1/(2(1 + ν)), the source's [20].
-    #[default]
-    Source,
-    /// k_t/k_n = 2(1 − ν)/(2 − ν), Mindlin's.
-    Mindlin,
-}
-
-/// Which dashpots (Voigt laws only).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum DampingName {
-    /// From each pair's restitution coefficient.
-    #[default]
-    Restitution,
-    /// Critical damping [21].
-    Critical,
-}
-
-/// `[contact]`
-#[derive(Clone, Debug, Default, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+/// `[contact]`: the law (`model`, one of `dem::contact::ContactModel::NAMES`), its options
+/// beside it (each law's keys: `dem::contact`), and the per-pair values.
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct ContactSection {
-    /// The law.
-    #[serde(default)]
-    pub model: ModelName,
-    /// The dashpots.
-    #[serde(default)]
-    pub damping: DampingName,
-    /// Normal stiffness for `linear` [N m⁻¹].
-    pub stiffness: Option<f64>,
-    /// Tangential spring of the Voigt laws (`source`, the default, or `mindlin`).
-    pub tangential_stiffness: Option<TangentialName>,
+    /// The law (default `hertz`).
+    #[serde(default = "default_model")]
+    pub model: String,
     /// Per-pair values.
     #[serde(default, rename = "pair")]
     pub pairs: Vec<PairSection>,
+    /// The law's options, read as the law's own struct (`scenario::contact`).
+    #[serde(flatten)]
+    pub options: toml::Table,
+}
+
+fn default_model() -> String {
+    "hertz".into()
+}
+
+impl Default for ContactSection {
+    fn default() -> ContactSection {
+        ContactSection {
+            model: default_model(),
+            pairs: Vec::new(),
+            options: toml::Table::new(),
+        }
+    }
 }
 
 /// `[[contact.pair]]`

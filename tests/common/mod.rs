@@ -370,12 +370,15 @@ pub fn models() -> [(&'static str, ContactModel); 2] {
     [
         (
             "Voigt Hertz",
-            ContactModel::Voigt {
-                spring: NormalSpring::Hertz,
-                damping: Damping::Restitution,
-                tangential: Default::default(),
-            },
+            ContactModel::voigt(
+                NormalSpring::Hertz,
+                Damping::Restitution,
+                Default::default(),
+            ),
         ),
-        ("Hertz-Mindlin", ContactModel::HertzMindlin),
+        (
+            "Hertz-Mindlin",
+            ContactModel::HertzMindlin(Default::default()),
+        ),
     ]
 }

@@ -9,8 +9,8 @@
 
 use super::real::{Real, V3};
 use super::scales::{self, Scales};
-use super::{Columns, Contact, Law, Response};
-use crate::dem::material::PairLaw;
+use super::{Columns, Contact, Law, NoOptions, Response};
+use crate::dem::material::Mixed;
 
 /// LIGGGHTS's Hertz-Mindlin.
 pub struct HertzMindlin;
@@ -24,8 +24,8 @@ pub fn roots(r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
     [a, (m_star * a).sqrt()]
 }
 
-/// The constants of the Hertz-Mindlin laws for a pair of materials (see
-/// `PairLaw::hertz_mindlin`): the springs and dashpots per contact radius a = √(R* δ).
+/// The constants of the Hertz-Mindlin laws for a pair of materials: the springs and dashpots
+/// per contact radius a = √(R* δ).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Params<T> {
     /// k_n/a = (4/3) E* [Pa].
@@ -40,16 +40,24 @@ pub struct Params<T> {
     pub friction: T,
 }
 
-/// [`Params`] of a pair.
-pub fn params(law: &PairLaw) -> Params<f64> {
-    let (kn_a, kt_a, c_n, c_t) = law.hertz_mindlin;
+/// [`Params`] of a pair whose dashpots have the factor `c` [-]: γ = c √(S m*), S = 2 E* a
+/// (normal) or 8 G* a (tangential).
+pub fn params(c: f64, m: &Mixed) -> Params<f64> {
     Params {
-        normal_stiffness: kn_a,
-        tangential_stiffness: kt_a,
-        normal_damping: c_n,
-        tangential_damping: c_t,
-        friction: law.friction,
+        normal_stiffness: 4.0 / 3.0 * m.e_star,
+        tangential_stiffness: 8.0 * m.g_star,
+        normal_damping: c * (2.0 * m.e_star).sqrt(),
+        tangential_damping: c * (8.0 * m.g_star).sqrt(),
+        friction: m.friction,
     }
+}
+
+/// LIGGGHTS's dashpot factor c = −2 √(5/6) β, β = ln e / √(ln² e + π²), which gives the
+/// restitution e to a law that may pull.
+pub fn liggghts_damping(e: f64) -> f64 {
+    let ln_e = e.max(1e-12).ln();
+    let beta = ln_e / (ln_e * ln_e + std::f64::consts::PI.powi(2)).sqrt();
+    -2.0 * (5.0f64 / 6.0).sqrt() * beta
 }
 
 impl<T: Copy> Columns<T> for Params<T> {
@@ -127,9 +135,11 @@ impl Law for HertzMindlin {
     /// also when δ/2 rounds to zero.
     const WALL: (f64, f64) = (-0.0, -0.0);
 
+    type Options = NoOptions;
     type Params<T: Real> = Params<T>;
-    fn params(law: &PairLaw) -> Params<f64> {
-        params(law)
+    /// The dashpots of LIGGGHTS ([`liggghts_damping`]).
+    fn params(_: &NoOptions, m: &Mixed) -> Params<f64> {
+        params(liggghts_damping(m.restitution), m)
     }
 
     #[inline(always)]
@@ -171,13 +181,13 @@ impl Law for HertzMindlin {
     }
 
     /// The elastic Hertz impact (LIGGGHTS's damping gives the pair's restitution).
-    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
-        scales::hertz(law.hertz_coefficient(r_star), m_star, v, load, None)
+    fn scales(_: &NoOptions, m: &Mixed, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        scales::hertz(m.hertz_coefficient(r_star), m_star, v, load, None)
     }
-    fn restitution(law: &PairLaw) -> f64 {
-        law.restitution
+    fn restitution(_: &NoOptions, m: &Mixed, _: f64) -> f64 {
+        m.restitution
     }
-    fn describe(_: &PairLaw) -> String {
+    fn describe(_: &NoOptions, _: &Mixed) -> String {
         "contact law: Hertz-Mindlin as LIGGGHTS computes it (its friction exceeds μ F_n while \
          a contact forms and ends; `hertz_mindlin` keeps the Coulomb limit)"
             .into()

@@ -8,8 +8,8 @@
 use super::hertz_mindlin::{self, roots, HertzMindlin, Params, Step};
 use super::real::{Real, V3};
 use super::scales::{self, Scales};
-use super::{Contact, Law, Response};
-use crate::dem::material::PairLaw;
+use super::{damping, Contact, Law, NoOptions, Response};
+use crate::dem::material::Mixed;
 
 /// Hertz-Mindlin with the Coulomb limit kept.
 pub struct HertzMindlinCoulomb;
@@ -17,11 +17,14 @@ pub struct HertzMindlinCoulomb;
 impl Law for HertzMindlinCoulomb {
     const WALL: (f64, f64) = HertzMindlin::WALL;
 
+    type Options = NoOptions;
     type Params<T: Real> = Params<T>;
-    /// As `HertzMindlin`'s; the dashpots take the damping ratio of the clamped Hertz law
-    /// (`PairLaw::new`).
-    fn params(law: &PairLaw) -> Params<f64> {
-        hertz_mindlin::params(law)
+    /// As `HertzMindlin`'s springs. LIGGGHTS's damping gives e to a law that may pull; without
+    /// tension the contact ends sooner and rebounds faster, so the dashpots take the damping
+    /// ratio ζ of the clamped Hertz law instead (its S_n is the Hertz tangent stiffness):
+    /// γ = 2 ζ √(S m*).
+    fn params(_: &NoOptions, m: &Mixed) -> Params<f64> {
+        hertz_mindlin::params(2.0 * damping_ratio(m), m)
     }
 
     #[inline(always)]
@@ -64,16 +67,21 @@ impl Law for HertzMindlinCoulomb {
     }
 
     /// The clamped damped Hertz impact (the dashpots' damping ratio is the clamped law's).
-    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
-        let k_h = law.hertz_coefficient(r_star);
-        scales::hertz(k_h, m_star, v, load, Some(law.damping_ratio))
+    fn scales(_: &NoOptions, m: &Mixed, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        let k_h = m.hertz_coefficient(r_star);
+        scales::hertz(k_h, m_star, v, load, Some(damping_ratio(m)))
     }
-    fn restitution(law: &PairLaw) -> f64 {
-        law.restitution
+    fn restitution(_: &NoOptions, m: &Mixed, _: f64) -> f64 {
+        m.restitution
     }
-    fn describe(_: &PairLaw) -> String {
+    fn describe(_: &NoOptions, _: &Mixed) -> String {
         "contact law: Hertz-Mindlin with the Coulomb limit kept (the whole tangential force \
          within μ F_n, no tension); `hertz_mindlin_liggghts` is LIGGGHTS's own"
             .into()
     }
+}
+
+/// ζ of the clamped Hertz law for the pair's restitution.
+fn damping_ratio(m: &Mixed) -> f64 {
+    damping::damping_ratio_for_restitution(m.restitution, damping::Spring::Hertz)
 }

@@ -7,11 +7,28 @@
 
 use super::real::{Real, V3};
 use super::scales::{self, Scales};
-use super::{Columns, Contact, Law, Response};
-use crate::dem::material::PairLaw;
+use serde::{Deserialize, Serialize};
+
+use super::{Columns, Contact, Invalid, Law, Response};
+use crate::dem::material::Mixed;
 
 /// LAMMPS's `gran/hooke/history`.
 pub struct Hooke;
+
+/// The options of the Hooke law: LAMMPS's `pair_style gran/hooke/history k_n k_t γ_n γ_t xmu
+/// dampflag` (the friction coefficient xmu is the pair's).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HookeOptions {
+    /// Normal stiffness k_n [N m⁻¹].
+    pub normal_stiffness: f64,
+    /// Tangential stiffness k_t [N m⁻¹] (LAMMPS's default: 2/7 k_n).
+    pub tangential_stiffness: f64,
+    /// Normal damping γ_n [s⁻¹]: the dashpot is m* γ_n.
+    pub normal_damping: f64,
+    /// Tangential damping γ_t [s⁻¹] (LAMMPS's default γ_n/2; 0 with dampflag 0).
+    pub tangential_damping: f64,
+}
 
 /// The constants of the Hooke law for a pair of materials.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -55,15 +72,40 @@ impl Law for Hooke {
     /// x + (−0) = x for every x, the sum without j's term.
     const WALL: (f64, f64) = (0.0, -0.0);
 
+    type Options = HookeOptions;
     type Params<T: Real> = Params<T>;
-    fn params(law: &PairLaw) -> Params<f64> {
+    fn params(o: &HookeOptions, m: &Mixed) -> Params<f64> {
         Params {
-            normal_stiffness: law.stiffness,
-            tangential_stiffness: law.tangential_stiffness,
-            normal_damping: law.gamma.0,
-            tangential_damping: law.gamma.1,
-            friction: law.friction,
+            normal_stiffness: o.normal_stiffness,
+            tangential_stiffness: o.tangential_stiffness,
+            normal_damping: o.normal_damping,
+            tangential_damping: o.tangential_damping,
+            friction: m.friction,
         }
+    }
+    /// Stiffnesses positive, damping rates not negative.
+    fn check(o: &HookeOptions) -> Result<(), Invalid> {
+        let bad = |key, v: f64, what| Invalid {
+            key,
+            reason: format!("must be {what} and finite, got {v}"),
+        };
+        for (key, v) in [
+            ("normal_stiffness", o.normal_stiffness),
+            ("tangential_stiffness", o.tangential_stiffness),
+        ] {
+            if !(v > 0.0 && v.is_finite()) {
+                return Err(bad(key, v, "positive"));
+            }
+        }
+        for (key, v) in [
+            ("normal_damping", o.normal_damping),
+            ("tangential_damping", o.tangential_damping),
+        ] {
+            if !(v >= 0.0 && v.is_finite()) {
+                return Err(bad(key, v, "zero or positive"));
+            }
+        }
+        Ok(())
     }
     /// One step of the Hooke contact:
     ///
@@ -111,25 +153,23 @@ impl Law for Hooke {
 
     /// m* δ'' + m* γ_n δ' + k_n δ = 0: ω0² = k_n/m*, damped ω = √(ω0² − γ_n²/4), the contact
     /// lasting π/ω.
-    fn scales(law: &PairLaw, _: f64, m_star: f64, v: f64, load: f64) -> Scales {
-        let k = law.stiffness;
+    fn scales(o: &HookeOptions, _: &Mixed, _: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        let (k, g) = (o.normal_stiffness, o.normal_damping);
         let w0 = (k / m_star).sqrt();
-        let w = (w0 * w0 - 0.25 * law.gamma.0 * law.gamma.0).max(0.0).sqrt();
+        let w = (w0 * w0 - 0.25 * g * g).max(0.0).sqrt();
         Scales {
             duration: std::f64::consts::PI / w,
             ..scales::linear(k, m_star, v, load, 0.0)
         }
     }
-    /// e = exp(−γ_n π / (2 ω)), reported for m* = 1 (γ_n and k_n/m* both enter; scenarios
-    /// do not use this law).
-    fn restitution(law: &PairLaw) -> f64 {
-        let w0 = law.stiffness.sqrt();
-        let w = (w0 * w0 - 0.25 * law.gamma.0 * law.gamma.0)
-            .max(1e-300)
-            .sqrt();
-        (-0.5 * law.gamma.0 * std::f64::consts::PI / w).exp()
+    /// e = exp(−γ_n π / (2 ω)), ω = √(k_n/m* − γ_n²/4) (the unclamped law).
+    fn restitution(o: &HookeOptions, _: &Mixed, m_star: f64) -> f64 {
+        let (k, g) = (o.normal_stiffness, o.normal_damping);
+        let w0 = (k / m_star).sqrt();
+        let w = (w0 * w0 - 0.25 * g * g).max(1e-300).sqrt();
+        (-0.5 * g * std::f64::consts::PI / w).exp()
     }
-    fn describe(_: &PairLaw) -> String {
+    fn describe(_: &HookeOptions, _: &Mixed) -> String {
         "contact law: LAMMPS gran/hooke/history".into()
     }
 }
@@ -150,12 +190,12 @@ mod tests {
             friction_coefficient: 0.5,
             restitution_coefficient: 0.5,
         };
-        let model = ContactModel::HookeHistory {
+        let model = ContactModel::HookeHistory(crate::dem::material::HookeOptions {
             normal_stiffness: 2.0e5,
             tangential_stiffness: 2.0e5 * 2.0 / 7.0,
             normal_damping: 50.0,
             tangential_damping: 25.0,
-        };
+        });
         PairLaw::new(&model, &m, &m, PairOverride::default())
     }
 

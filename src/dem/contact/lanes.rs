@@ -179,11 +179,11 @@ mod tests {
     }
 
     fn voigt(spring: NormalSpring) -> PairLaw {
-        law(ContactModel::Voigt {
+        law(ContactModel::voigt(
             spring,
-            damping: Damping::Restitution,
-            tangential: TangentialStiffness::Source,
-        })
+            Damping::Restitution,
+            TangentialStiffness::Source,
+        ))
     }
 
     /// A reproducible spread of contacts: sticking and sliding, closing and opening, new
@@ -253,13 +253,13 @@ mod tests {
         for batch in all.chunks(LANES) {
             let mut l = Lanes::default();
             for (k, c) in batch.iter().enumerate() {
-                fill::<L>(&mut l, c, k, L::constants(law));
+                fill::<L>(&mut l, c, k, law.k);
             }
             run::<L>(&mut l, dt);
             for (k, (p, xi)) in batch.iter().enumerate() {
                 let mut h = *xi;
                 let r = force_of::<L>(law, p, &mut h, dt);
-                let limit = law.friction * (r.force.dot(p.n)).abs();
+                let limit = law.friction() * (r.force.dot(p.n)).abs();
                 let f_t = r.force - r.force.dot(p.n) * p.n;
                 slid += usize::from((f_t.length() - limit).abs() < 1e-9 * limit);
                 assert_eq!(get(&l.hist, k), h, "history, contact {k}");
@@ -279,19 +279,23 @@ mod tests {
 
     #[test]
     fn hooke_lanes_give_the_bits_of_one_contact() {
-        let hooke = law(ContactModel::HookeHistory {
-            normal_stiffness: 2.0e3,
-            tangential_stiffness: 2.0e3 * 2.0 / 7.0,
-            normal_damping: 5.0e4,
-            tangential_damping: 2.5e4,
-        });
+        let hooke = law(ContactModel::HookeHistory(
+            crate::dem::material::HookeOptions {
+                normal_stiffness: 2.0e3,
+                tangential_stiffness: 2.0e3 * 2.0 / 7.0,
+                normal_damping: 5.0e4,
+                tangential_damping: 2.5e4,
+            },
+        ));
         both_paths(same_bits::<Hooke>(&hooke));
     }
 
     #[test]
     fn hertz_mindlin_lanes_give_the_bits_of_one_contact() {
-        both_paths(same_bits::<HertzMindlin>(&law(ContactModel::HertzMindlin)));
-        let coulomb = law(ContactModel::HertzMindlinCoulomb);
+        both_paths(same_bits::<HertzMindlin>(&law(ContactModel::HertzMindlin(
+            Default::default(),
+        ))));
+        let coulomb = law(ContactModel::HertzMindlinCoulomb(Default::default()));
         both_paths(same_bits::<HertzMindlinCoulomb>(&coulomb));
     }
 

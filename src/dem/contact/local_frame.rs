@@ -210,8 +210,9 @@ pub fn contact(law: &Law, d: f64, bi: &Body, bj: &Body, s0: S2, dt: f64) -> (V3,
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dem::contact::Columns;
     use crate::dem::contact::{contact_force, Pair};
-    use crate::dem::material::{LawKind, PairLaw};
+    use crate::dem::material::{ContactModel, Damping, LawKind, Mixed, NormalSpring, PairLaw};
     use crate::math::Vec3;
 
     /// xorshift64* with a fixed seed: the tests are deterministic.
@@ -342,20 +343,30 @@ mod tests {
             let k_n = rng.log_range(1e3, 1e7);
             let (ratio, zeta) = (rng.range(0.2, 1.0), rng.range(0.0, 1.0));
             let mu = rng.range(0.05, 1.0) * f64::from(case % 17 != 0); // some μ = 0
-            let law = PairLaw {
-                kind: LawKind::Linear,
-                stiffness: k_n,
-                tangential_stiffness: 0.0,
-                gamma: (0.0, 0.0),
+                                                                       // A pair with its constants set directly (ratio and ζ drawn, not derived).
+            let model = ContactModel::voigt(
+                NormalSpring::Linear { stiffness: k_n },
+                Damping::Critical,
+                Default::default(),
+            );
+            let params = crate::dem::contact::voigt::Params {
+                spring: k_n,
                 reference_velocity: 0.0,
-                e_star: 1.0,
-                g_star: 1.0,
+                damping_ratio: zeta,
                 tangential_ratio: ratio,
                 friction: mu,
-                restitution: 1.0,
-                damping_ratio: zeta,
-                beta: 0.0,
-                hertz_mindlin: (0.0, 0.0, 0.0, 0.0),
+            };
+            let law = PairLaw {
+                kind: LawKind::Linear,
+                model,
+                mixed: Mixed {
+                    e_star: 1.0,
+                    g_star: 1.0,
+                    poisson_ratio: 0.3,
+                    friction: mu,
+                    restitution: 1.0,
+                },
+                k: Columns::to_columns(params),
             };
             let oracle = Law::new(k_n, ratio, zeta, m_i, m_j, mu);
             let m = m_i * m_j / (m_i + m_j);

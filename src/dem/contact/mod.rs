@@ -6,6 +6,12 @@
 //! depends on the law: the tangential spring force s_t [N] for the Voigt laws (METHOD.md [9]),
 //! the tangential displacement ξ [m] for Hertz-Mindlin (as LIGGGHTS stores it) and for LAMMPS's
 //! Hooke law. Whatever the law, the history of the pair (j, i) is the opposite of that of (i, j).
+//!
+//! A law is one file: its options (what a user writes in `[contact]` besides `model`), its
+//! constants derived from them and the pair's mixed material constants, and its one
+//! formulation, in one `impl Law`. Adding one touches that file and this one (its `mod` line
+//! and its line in `registry!`); the scenario, the kernels, the lanes and `check` take it from
+//! there.
 
 pub mod damping;
 pub mod hertz_mindlin;
@@ -19,9 +25,13 @@ pub mod voigt;
 #[cfg(test)]
 mod local_frame;
 
-use crate::dem::material::{LawKind, PairLaw};
+use serde::de::DeserializeOwned;
+use serde::{Deserialize, Serialize};
+
+use crate::dem::material::{Mixed, PairLaw};
 use crate::math::Vec3;
 use real::{Real, V3};
+use scales::Scales;
 
 /// The state of the two bodies at a contact.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -146,9 +156,35 @@ pub trait Columns<T>: Copy {
     fn to_columns(self) -> [T; 5];
 }
 
-/// A contact law: one formulation ([`Law::force`]), run one contact at a time
-/// ([`contact_force`]) and on columns of contacts (`lanes::run`), with the same bits.
+/// An option of a law refused by [`Law::check`]: the key (as the scenario's `[contact]` table
+/// names it) and why.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Invalid {
+    /// The option's key.
+    pub key: &'static str,
+    /// Why it is refused.
+    pub reason: String,
+}
+
+/// What a scenario gives every law besides its own options ([`Law::complete`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ScenarioValues {
+    /// The reference impact velocity of the scenario [m s⁻¹] (`run.reference_velocity`).
+    pub reference_velocity: f64,
+}
+
+/// Options of a law that takes none (an empty `[contact]` table besides `model`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct NoOptions {}
+
+/// A contact law: its options, the constants it derives from them and the materials, one
+/// formulation ([`Law::force`]) run one contact at a time ([`contact_force`]) and on columns
+/// of contacts (`lanes::run`) with the same bits, and what `check` says of it. A law is one
+/// file with one `impl Law`, named in the registry at the end of this file.
 pub trait Law {
+    /// What a user chooses for the law (the keys of `[contact]` besides `model`).
+    type Options: Copy + std::fmt::Debug + PartialEq + Serialize + DeserializeOwned;
     /// The law's constants for one pair of materials, named and with their units, in numbers
     /// `T` (one pair, or eight contacts' pairs).
     type Params<T: Real>: Columns<T>;
@@ -156,17 +192,19 @@ pub trait Law {
     /// [`Contact`]: values whose terms change no sum, so that a wall gives what a sphere of
     /// infinite radius and mass would (signed zeros; each law says why its pair works).
     const WALL: (f64, f64);
-    /// The law's constants for a pair of materials, derived from them once.
-    fn params(law: &PairLaw) -> Self::Params<f64>;
+    /// The law's constants for a pair of materials, derived once from its options and the
+    /// pair's mixed material constants.
+    fn params(o: &Self::Options, m: &Mixed) -> Self::Params<f64>;
+    /// Refuses options out of range.
+    fn check(_o: &Self::Options) -> Result<(), Invalid> {
+        Ok(())
+    }
+    /// Fills the options a scenario gives rather than `[contact]` (none by default).
+    fn complete(_o: &mut Self::Options, _s: &ScenarioValues) {}
     /// The constants from the lanes' columns.
     #[inline(always)]
     fn unpack<T: Real>(k: [T; 5]) -> Self::Params<T> {
         Columns::from_columns(k)
-    }
-    /// [`Law::params`] as the lanes' columns hold them.
-    #[inline(always)]
-    fn constants(law: &PairLaw) -> Constants {
-        Self::params(law).to_columns()
     }
     /// Values of one contact that need more than IEEE-exact arithmetic, or that the kernels
     /// take early so that the processor overlaps their square roots (R* [m], m* [kg], δ ≥ 0
@@ -179,12 +217,12 @@ pub trait Law {
     fn force<T: Real>(p: &Self::Params<T>, c: &Contact<T>, hist: V3<T>, dt: T) -> Response<T>;
     /// A head-on impact of a pairing with R* [m] and m* [kg] at `v` [m s⁻¹], and its overlap
     /// at rest under `load` [N].
-    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> scales::Scales;
-    /// The restitution of a head-on impact in continuous time [-]: what the dashpots were
-    /// chosen for.
-    fn restitution(law: &PairLaw) -> f64;
+    fn scales(o: &Self::Options, m: &Mixed, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales;
+    /// The restitution of a head-on impact in continuous time of a pairing with m* [kg] [-]:
+    /// what the dashpots were chosen for.
+    fn restitution(o: &Self::Options, m: &Mixed, m_star: f64) -> f64;
     /// What `riprap check` says of the law: which law, and the choices that change results.
-    fn describe(law: &PairLaw) -> String;
+    fn describe(o: &Self::Options, m: &Mixed) -> String;
 }
 
 /// Something to do with the law of a kind (`dispatch`).
@@ -195,16 +233,110 @@ pub trait WithLaw {
     fn run<L: Law>(self) -> Self::Out;
 }
 
-/// The one place that maps a pair's kind to its law.
-#[inline(always)]
-pub fn dispatch<W: WithLaw>(kind: LawKind, w: W) -> W::Out {
-    match kind {
-        LawKind::Hertz => w.run::<voigt::Hertz>(),
-        LawKind::Linear => w.run::<voigt::Linear>(),
-        LawKind::ApparentLinear => w.run::<voigt::ApparentLinear>(),
-        LawKind::HertzMindlin => w.run::<hertz_mindlin::HertzMindlin>(),
-        LawKind::HertzMindlinCoulomb => w.run::<hertz_mindlin_coulomb::HertzMindlinCoulomb>(),
-        LawKind::HookeHistory => w.run::<hooke::Hooke>(),
+/// The registry of laws: from one line per law (its kind, its name in scenario files, its
+/// type) it makes [`LawKind`], [`ContactModel`] (the law and its options, `[contact] model =
+/// "name"` in TOML), [`dispatch`] and the model's methods. Adding a law is its file and one
+/// line here.
+macro_rules! registry {
+    ($($(#[doc = $doc:literal])* $kind:ident = $name:literal => $law:ty;)*) => {
+        /// Which law a pair uses.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+        pub enum LawKind {
+            $($(#[doc = $doc])* $kind,)*
+        }
+
+        /// The contact law of a scenario with its options: in TOML, `[contact] model =
+        /// "name"` and the options' keys beside it.
+        #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+        #[serde(tag = "model")]
+        pub enum ContactModel {
+            $($(#[doc = $doc])* #[serde(rename = $name)] $kind(<$law as Law>::Options),)*
+        }
+
+        /// The one place that maps a pair's kind to its law.
+        #[inline(always)]
+        pub fn dispatch<W: WithLaw>(kind: LawKind, w: W) -> W::Out {
+            match kind {
+                $(LawKind::$kind => w.run::<$law>(),)*
+            }
+        }
+
+        impl ContactModel {
+            /// The names of the laws in scenario files.
+            pub const NAMES: &'static [&'static str] = &[$($name),*];
+
+            /// The law's kind.
+            pub fn kind(&self) -> LawKind {
+                match self {
+                    $(Self::$kind(_) => LawKind::$kind,)*
+                }
+            }
+            /// The law's name in scenario files.
+            pub fn name(&self) -> &'static str {
+                match self {
+                    $(Self::$kind(_) => $name,)*
+                }
+            }
+            /// [`Law::params`] as the lanes' columns hold them.
+            pub fn constants(&self, m: &Mixed) -> Constants {
+                match self {
+                    $(Self::$kind(o) => <$law as Law>::params(o, m).to_columns(),)*
+                }
+            }
+            /// [`Law::check`].
+            pub fn check(&self) -> Result<(), Invalid> {
+                match self {
+                    $(Self::$kind(o) => <$law as Law>::check(o),)*
+                }
+            }
+            /// [`Law::complete`].
+            pub fn complete(&mut self, s: &ScenarioValues) {
+                match self {
+                    $(Self::$kind(o) => <$law as Law>::complete(o, s),)*
+                }
+            }
+            /// [`Law::scales`].
+            pub fn scales(&self, m: &Mixed, r_star: f64, m_star: f64, v: f64, load: f64)
+                -> Scales {
+                match self {
+                    $(Self::$kind(o) => <$law as Law>::scales(o, m, r_star, m_star, v, load),)*
+                }
+            }
+            /// [`Law::restitution`].
+            pub fn restitution(&self, m: &Mixed, m_star: f64) -> f64 {
+                match self {
+                    $(Self::$kind(o) => <$law as Law>::restitution(o, m, m_star),)*
+                }
+            }
+            /// [`Law::describe`].
+            pub fn describe(&self, m: &Mixed) -> String {
+                match self {
+                    $(Self::$kind(o) => <$law as Law>::describe(o, m),)*
+                }
+            }
+        }
+    };
+}
+
+registry! {
+    /// The source's Voigt law with the Hertz spring s_n = K δ^{3/2} [15]-[17].
+    Hertz = "hertz" => voigt::Hertz;
+    /// The source's Voigt law with a linear spring s_n = k_n δ, k_n given [18].
+    Linear = "linear" => voigt::Linear;
+    /// The source's Voigt law with the apparent linear Hertz spring [18][19].
+    ApparentLinear = "apparent_linear_hertz" => voigt::ApparentLinear;
+    /// Hertz-Mindlin with the Coulomb limit on the whole tangential force, no tension.
+    HertzMindlinCoulomb = "hertz_mindlin" => hertz_mindlin_coulomb::HertzMindlinCoulomb;
+    /// LIGGGHTS `model hertz tangential history` (= LAMMPS `hertz/material` + `mindlin`).
+    HertzMindlin = "hertz_mindlin_liggghts" => hertz_mindlin::HertzMindlin;
+    /// LAMMPS `pair_style gran/hooke/history`.
+    HookeHistory = "hooke_history" => hooke::Hooke;
+}
+
+impl Default for ContactModel {
+    /// The source's Voigt law with the Hertz spring and the default options.
+    fn default() -> ContactModel {
+        ContactModel::Hertz(Default::default())
     }
 }
 
@@ -212,7 +344,7 @@ pub fn dispatch<W: WithLaw>(kind: LawKind, w: W) -> W::Out {
 /// infinite) receives nothing: `torque_j` is zero.
 #[inline(always)]
 pub fn force_of<L: Law>(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
-    force_with::<L>(L::constants(law), p, hist, dt)
+    force_with::<L>(law.k, p, hist, dt)
 }
 
 /// [`force_of`] given the law's constants.
@@ -245,38 +377,14 @@ pub fn force_with<L: Law>(k: Constants, p: &Pair, hist: &mut Vec3, dt: f64) -> R
     }
 }
 
-/// The entry points of a law that take no generic numbers: for one-off uses (`check`, the
-/// time step rule, a single contact), not for the kernels.
-#[derive(Clone, Copy)]
-pub struct LawFns {
-    /// [`force_of`].
-    pub force: fn(&PairLaw, &Pair, &mut Vec3, f64) -> Reaction,
-    /// [`Law::scales`].
-    pub scales: fn(&PairLaw, f64, f64, f64, f64) -> scales::Scales,
-    /// [`Law::restitution`].
-    pub restitution: fn(&PairLaw) -> f64,
-    /// [`Law::describe`].
-    pub describe: fn(&PairLaw) -> String,
-}
-
-/// The [`LawFns`] of a kind of law.
-pub fn law_fns(kind: LawKind) -> LawFns {
-    struct Fns;
-    impl WithLaw for Fns {
-        type Out = LawFns;
-        fn run<L: Law>(self) -> LawFns {
-            LawFns {
-                force: force_of::<L>,
-                scales: L::scales,
-                restitution: L::restitution,
-                describe: L::describe,
-            }
-        }
-    }
-    dispatch(kind, Fns)
-}
-
 /// The force of one contact under the pair's law; `hist` is updated in place.
 pub fn contact_force(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> Reaction {
-    (law_fns(law.kind).force)(law, p, hist, dt)
+    struct One<'a>(&'a PairLaw, &'a Pair, &'a mut Vec3, f64);
+    impl WithLaw for One<'_> {
+        type Out = Reaction;
+        fn run<L: Law>(self) -> Reaction {
+            force_of::<L>(self.0, self.1, self.2, self.3)
+        }
+    }
+    dispatch(law.kind, One(law, p, hist, dt))
 }

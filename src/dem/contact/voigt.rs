@@ -8,10 +8,12 @@
 
 use std::marker::PhantomData;
 
+use serde::{Deserialize, Serialize};
+
 use super::real::{Real, V3};
 use super::scales::{self, Scales};
-use super::{damping, Columns, Contact, Law, Response};
-use crate::dem::material::PairLaw;
+use super::{damping, Columns, Contact, ContactModel, Invalid, Law, Response, ScenarioValues};
+use crate::dem::material::Mixed;
 
 /// The Voigt law with the normal spring `S` (one law, three springs).
 pub struct Voigt<S>(PhantomData<S>);
@@ -23,18 +25,142 @@ pub type Linear = Voigt<LinearSpring>;
 /// and masses ([`apparent_stiffness`]).
 pub type ApparentLinear = Voigt<ApparentLinearSpring>;
 
+/// How the dashpots of the Voigt law are chosen (`[contact] damping`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Damping {
+    /// Damping ratio chosen so that a head-on impact rebounds with the pair's restitution
+    /// coefficient (calibrated exactly for the clamped law, linear and Hertz alike).
+    #[default]
+    Restitution,
+    /// Critical damping, c = 2 √(m* k) [21] (k the tangent stiffness for Hertz springs).
+    Critical,
+}
+
+/// The ratio of the tangential to the normal spring of the Voigt laws, k_t/k_n (for Hertz,
+/// of the tangent stiffnesses; `[contact] tangential_stiffness`).
+///
+/// The source's [20] gives 1/(2(1 + ν)) (0.38 at ν = 0.3), the ratio of the shear to the
+/// Young's modulus. For Hertz contacts Mindlin's theory gives 2(1 − ν)/(2 − ν) (0.82 at
+/// ν = 0.3): with [20] a sphere striking a wall obliquely without sliding stores half the
+/// tangential energy it should, and rebounds with about half the tangential velocity that
+/// experiments (Kharaz, Gorham & Salman 2001) show at small incidence.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TangentialStiffness {
+    /// k_t/k_n = 1/(2(1 + ν)), the source's [20] (the default: faithful to the source).
+    #[default]
+    Source,
+    /// k_t/k_n = 2(1 − ν)/(2 − ν), Mindlin's ratio for elastic spheres in contact.
+    Mindlin,
+}
+
+impl TangentialStiffness {
+    /// k_t/k_n for Poisson's ratio `nu` (the mean of the two materials').
+    ///
+    /// Implements [20].
+    pub fn ratio(self, nu: f64) -> f64 {
+        match self {
+            TangentialStiffness::Source => 1.0 / (2.0 * (1.0 + nu)),
+            TangentialStiffness::Mindlin => 2.0 * (1.0 - nu) / (2.0 - nu),
+        }
+    }
+}
+
+/// The options of the three Voigt laws (the keys of `[contact]`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VoigtOptions {
+    /// The dashpots (default: from each pair's restitution).
+    #[serde(default)]
+    pub damping: Damping,
+    /// The tangential spring (default: the source's [20]).
+    #[serde(default)]
+    pub tangential_stiffness: TangentialStiffness,
+    /// Normal stiffness k_n [N m⁻¹]: the linear spring's, and only its.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stiffness: Option<f64>,
+    /// The reference impact velocity v_ref of [19] [m s⁻¹]: the apparent linear spring's, from
+    /// the scenario's `run.reference_velocity`.
+    #[serde(skip)]
+    pub reference_velocity: Option<f64>,
+}
+
+/// The normal spring of the Voigt law, for research code that picks one ([`ContactModel::voigt`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum NormalSpring {
+    /// s_n = k_n δ with a given k_n [N m⁻¹].
+    Linear {
+        /// Normal stiffness k_n [N m⁻¹].
+        stiffness: f64,
+    },
+    /// Hertz: s_n = k_n δ^{3/2}, k_n = (2/3) E/(1-ν²) √(r_i r_j/(r_i+r_j)) [15]-[17].
+    Hertz,
+    /// The apparent linear Hertz spring [18][19]: s_n = k_n δ with
+    /// k_n = {(4/9) r_i r_j/(r_i+r_j) (E/(1-ν²))² s_ref}^{1/3}, the secant of the Hertz curve at the
+    /// force s_ref. s_ref is the peak Hertz force of a head-on impact at `reference_velocity`.
+    ApparentLinearHertz {
+        /// Impact velocity that sets the representative force [m s⁻¹].
+        reference_velocity: f64,
+    },
+}
+
+impl ContactModel {
+    /// The source's Voigt law with the normal spring `spring`, the dashpots `damping` and
+    /// the tangential spring `tangential`.
+    pub fn voigt(
+        spring: NormalSpring,
+        damping: Damping,
+        tangential: TangentialStiffness,
+    ) -> ContactModel {
+        let o = VoigtOptions {
+            damping,
+            tangential_stiffness: tangential,
+            stiffness: None,
+            reference_velocity: None,
+        };
+        match spring {
+            NormalSpring::Hertz => ContactModel::Hertz(o),
+            NormalSpring::Linear { stiffness } => ContactModel::Linear(VoigtOptions {
+                stiffness: Some(stiffness),
+                ..o
+            }),
+            NormalSpring::ApparentLinearHertz { reference_velocity } => {
+                ContactModel::ApparentLinear(VoigtOptions {
+                    reference_velocity: Some(reference_velocity),
+                    ..o
+                })
+            }
+        }
+    }
+}
+
 /// What the three springs of the Voigt law differ in.
 pub trait Spring {
     /// How `check` names it.
     const NAME: &'static str;
+    /// The shape of its force against the overlap, for the dashpots' calibration.
+    const SHAPE: damping::Spring;
     /// The spring's factor `Params::spring` of a pair.
-    fn factor(law: &PairLaw) -> f64;
+    fn factor(o: &VoigtOptions, m: &Mixed) -> f64;
+    /// Refuses a stiffness where the spring takes none, or its absence where it needs one.
+    fn check(o: &VoigtOptions) -> Result<(), Invalid> {
+        match o.stiffness {
+            Some(_) => Err(Invalid {
+                key: "stiffness",
+                reason: "only the linear model takes a stiffness; the others derive it from \
+                         the materials"
+                    .into(),
+            }),
+            None => Ok(()),
+        }
+    }
+    /// `Law::complete` (nothing by default).
+    fn complete(_o: &mut VoigtOptions, _s: &ScenarioValues) {}
     /// s_n [N] and the stiffness k_n [N m⁻¹] of one contact (`Law::prepare`).
     fn prepare(p: &Params<f64>, r_star: f64, m_star: f64, delta: f64) -> [f64; 2];
     /// `Law::scales`.
-    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales;
-    /// `Law::restitution`.
-    fn restitution(law: &PairLaw) -> f64;
+    fn scales(p: &Params<f64>, m: &Mixed, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales;
 }
 
 /// The Hertz spring [15]-[17].
@@ -120,77 +246,118 @@ pub fn linear_spring(k_n: f64, delta: f64) -> [f64; 2] {
 
 impl Spring for HertzSpring {
     const NAME: &'static str = "a Hertz [15]-[17]";
-    fn factor(law: &PairLaw) -> f64 {
-        4.0 / 3.0 * law.e_star
+    const SHAPE: damping::Spring = damping::Spring::Hertz;
+    fn factor(_: &VoigtOptions, m: &Mixed) -> f64 {
+        4.0 / 3.0 * m.e_star
     }
     #[inline(always)]
     fn prepare(p: &Params<f64>, r_star: f64, _: f64, delta: f64) -> [f64; 2] {
         hertz_spring(p.spring, r_star, delta)
     }
-    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
-        let k_h = law.hertz_coefficient(r_star);
-        scales::hertz(k_h, m_star, v, load, Some(law.damping_ratio))
-    }
-    fn restitution(law: &PairLaw) -> f64 {
-        damping::hertz_contact(law.damping_ratio).1
+    fn scales(p: &Params<f64>, m: &Mixed, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        let k_h = m.hertz_coefficient(r_star);
+        scales::hertz(k_h, m_star, v, load, Some(p.damping_ratio))
     }
 }
 
 impl Spring for LinearSpring {
     const NAME: &'static str = "a linear [18]";
-    fn factor(law: &PairLaw) -> f64 {
-        law.stiffness
+    const SHAPE: damping::Spring = damping::Spring::Linear;
+    fn factor(o: &VoigtOptions, _: &Mixed) -> f64 {
+        o.stiffness.unwrap_or(f64::NAN)
+    }
+    fn check(o: &VoigtOptions) -> Result<(), Invalid> {
+        match o.stiffness {
+            Some(k) if k > 0.0 && k.is_finite() => Ok(()),
+            Some(k) => Err(Invalid {
+                key: "stiffness",
+                reason: format!("must be positive and finite, got {k}"),
+            }),
+            None => Err(Invalid {
+                key: "stiffness",
+                reason: "the linear model needs a normal stiffness: add `stiffness = ...` [N/m] \
+                         to [contact] (or choose a model that derives it from the materials, \
+                         e.g. \"hertz\")"
+                    .into(),
+            }),
+        }
     }
     #[inline(always)]
     fn prepare(p: &Params<f64>, _: f64, _: f64, delta: f64) -> [f64; 2] {
         linear_spring(p.spring, delta)
     }
-    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
-        linear_scales(law, r_star, m_star, v, load)
-    }
-    fn restitution(law: &PairLaw) -> f64 {
-        damping::linear_contact(law.damping_ratio).1
+    fn scales(p: &Params<f64>, _: &Mixed, _: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        linear_scales(p, p.spring, m_star, v, load)
     }
 }
 
 impl Spring for ApparentLinearSpring {
     const NAME: &'static str = "an apparent linear Hertz [19]";
-    fn factor(law: &PairLaw) -> f64 {
-        4.0 / 3.0 * law.e_star
+    const SHAPE: damping::Spring = damping::Spring::Linear;
+    fn factor(_: &VoigtOptions, m: &Mixed) -> f64 {
+        4.0 / 3.0 * m.e_star
+    }
+    fn check(o: &VoigtOptions) -> Result<(), Invalid> {
+        HertzSpring::check(o)?;
+        match o.reference_velocity {
+            Some(v) if v > 0.0 && v.is_finite() => Ok(()),
+            v => Err(Invalid {
+                key: "reference_velocity",
+                reason: format!(
+                    "the apparent linear Hertz spring needs a positive reference impact \
+                     velocity [19], got {v:?}"
+                ),
+            }),
+        }
+    }
+    /// v_ref from the scenario unless set.
+    fn complete(o: &mut VoigtOptions, s: &ScenarioValues) {
+        o.reference_velocity.get_or_insert(s.reference_velocity);
     }
     #[inline(always)]
     fn prepare(p: &Params<f64>, r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
         let k_n = apparent_stiffness(p.spring, p.reference_velocity, r_star, m_star);
         linear_spring(k_n, delta)
     }
-    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
-        linear_scales(law, r_star, m_star, v, load)
-    }
-    fn restitution(law: &PairLaw) -> f64 {
-        LinearSpring::restitution(law)
+    fn scales(p: &Params<f64>, _: &Mixed, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        let k = apparent_stiffness(p.spring, p.reference_velocity, r_star, m_star);
+        linear_scales(p, k, m_star, v, load)
     }
 }
 
-/// Scales of the linear springs (`Linear`, `ApparentLinear`).
-fn linear_scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
-    let k = law.linear_stiffness(r_star, m_star);
-    let (tc, _) = damping::linear_contact(law.damping_ratio);
+/// Scales of the linear springs of stiffness `k` [N m⁻¹].
+fn linear_scales(p: &Params<f64>, k: f64, m_star: f64, v: f64, load: f64) -> Scales {
+    let (tc, _) = damping::linear_contact(p.damping_ratio);
     scales::linear(k, m_star, v, load, tc)
 }
 
 impl<S: Spring> Law for Voigt<S> {
+    type Options = VoigtOptions;
     type Params<T: Real> = Params<T>;
     /// A wall's r_j = +0 and ω_j = −0: the lever sum r_i ω_i + r_j ω_j gets (+0)(−0) = −0,
     /// and x + (−0) = x for every x, the sum without j's term.
     const WALL: (f64, f64) = (0.0, -0.0);
-    fn params(law: &PairLaw) -> Params<f64> {
+    /// The spring's factor, ζ from the damping choice (for the pair's restitution, or 1), the
+    /// tangential ratio [20] of the pair's mean ν, and μ.
+    fn params(o: &VoigtOptions, m: &Mixed) -> Params<f64> {
         Params {
-            spring: S::factor(law),
-            reference_velocity: law.reference_velocity,
-            damping_ratio: law.damping_ratio,
-            tangential_ratio: law.tangential_ratio,
-            friction: law.friction,
+            spring: S::factor(o, m),
+            reference_velocity: o.reference_velocity.unwrap_or(0.0),
+            damping_ratio: match o.damping {
+                Damping::Critical => 1.0,
+                Damping::Restitution => {
+                    damping::damping_ratio_for_restitution(m.restitution, S::SHAPE)
+                }
+            },
+            tangential_ratio: o.tangential_stiffness.ratio(m.poisson_ratio),
+            friction: m.friction,
         }
+    }
+    fn check(o: &VoigtOptions) -> Result<(), Invalid> {
+        S::check(o)
+    }
+    fn complete(o: &mut VoigtOptions, s: &ScenarioValues) {
+        S::complete(o, s)
     }
     #[inline(always)]
     fn prepare(p: &Params<f64>, r_star: f64, m_star: f64, delta: f64) -> [f64; 2] {
@@ -200,29 +367,33 @@ impl<S: Spring> Law for Voigt<S> {
     fn force<T: Real>(p: &Params<T>, c: &Contact<T>, s_t: V3<T>, dt: T) -> Response<T> {
         force(p, c, s_t, dt)
     }
-    fn scales(law: &PairLaw, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
-        S::scales(law, r_star, m_star, v, load)
+    fn scales(o: &VoigtOptions, m: &Mixed, r_star: f64, m_star: f64, v: f64, load: f64) -> Scales {
+        S::scales(&Self::params(o, m), m, r_star, m_star, v, load)
     }
-    fn restitution(law: &PairLaw) -> f64 {
-        S::restitution(law)
+    fn restitution(o: &VoigtOptions, m: &Mixed, _: f64) -> f64 {
+        let zeta = Self::params(o, m).damping_ratio;
+        match S::SHAPE {
+            damping::Spring::Hertz => damping::hertz_contact(zeta).1,
+            damping::Spring::Linear => damping::linear_contact(zeta).1,
+        }
     }
     /// The spring, and the tangential ratio in use with why it matters.
-    fn describe(law: &PairLaw) -> String {
-        // The source's ratio 1/(2(1 + ν)) is at most 0.5, Mindlin's 2(1 − ν)/(2 − ν) at
-        // least 2/3.
-        let mindlin = law.tangential_ratio > 0.6;
+    fn describe(o: &VoigtOptions, m: &Mixed) -> String {
+        let ratio = o.tangential_stiffness.ratio(m.poisson_ratio);
         format!(
             "contact law: the source's Voigt law [9]-[14] with {} spring; tangential \
-             spring k_t/k_n = {:.3}, {}",
+             spring k_t/k_n = {ratio:.3}, {}",
             S::NAME,
-            law.tangential_ratio,
-            if mindlin {
-                "Mindlin's 2(1 − ν)/(2 − ν) (the source's [20] gives about half)"
-            } else {
-                "the source's [20], 1/(2(1 + ν)): about half Mindlin's, so oblique impacts \
-                 at small incidence rebound with about half the tangential velocity \
-                 experiments show; [contact] tangential_stiffness = \"mindlin\" gives \
-                 Mindlin's"
+            match o.tangential_stiffness {
+                TangentialStiffness::Mindlin => {
+                    "Mindlin's 2(1 − ν)/(2 − ν) (the source's [20] gives about half)"
+                }
+                TangentialStiffness::Source => {
+                    "the source's [20], 1/(2(1 + ν)): about half Mindlin's, so oblique impacts \
+                     at small incidence rebound with about half the tangential velocity \
+                     experiments show; [contact] tangential_stiffness = \"mindlin\" gives \
+                     Mindlin's"
+                }
             }
         )
     }

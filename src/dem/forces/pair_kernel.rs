@@ -84,7 +84,7 @@ impl PairContext<'_> {
         };
         if self.n_mat == 1 {
             let l = &mut batch.lanes;
-            for (c, v) in K::constants(&self.laws[0]).into_iter().enumerate() {
+            for (c, v) in self.laws[0].k.into_iter().enumerate() {
                 l.params[c] = [v; BATCH];
             }
         }
@@ -240,7 +240,7 @@ impl PairContext<'_> {
             // With one material the law's constants were set once for all lanes.
             if self.n_mat > 1 {
                 let law = material[i] as usize * self.n_mat + material[j] as usize;
-                for (c, v) in K::constants(&self.laws[law]).into_iter().enumerate() {
+                for (c, v) in self.laws[law].k.into_iter().enumerate() {
                     l.params[c][k] = v;
                 }
             }

@@ -154,7 +154,7 @@ impl WallContext<'_> {
                 put(&mut l.hist, q, hist[s]);
                 let delta = h.contact.overlap;
                 (l.delta[q], l.r_i[q], l.r_star[q], l.m_star[q]) = (delta, r, r, m);
-                for (c, p) in K::constants(&self.laws[law]).into_iter().enumerate() {
+                for (c, p) in self.laws[law].k.into_iter().enumerate() {
                     l.params[c][q] = p;
                 }
                 (b.entry[q], b.slot[q], b.sphere[q]) = (e as u32, s as u8, k as u32);
@@ -444,17 +444,14 @@ mod tests {
 
     #[test]
     fn hertz_mindlin_walls_on_lanes_give_the_bits_of_one_contact() {
-        same_bits::<HertzMindlin>(ContactModel::HertzMindlin);
-        same_bits::<HertzMindlinCoulomb>(ContactModel::HertzMindlinCoulomb);
+        same_bits::<HertzMindlin>(ContactModel::HertzMindlin(Default::default()));
+        same_bits::<HertzMindlinCoulomb>(ContactModel::HertzMindlinCoulomb(Default::default()));
     }
 
     #[test]
     fn voigt_walls_on_lanes_give_the_bits_of_one_contact() {
-        let voigt = |spring| ContactModel::Voigt {
-            spring,
-            damping: Damping::Restitution,
-            tangential: TangentialStiffness::Source,
-        };
+        let voigt =
+            |spring| ContactModel::voigt(spring, Damping::Restitution, TangentialStiffness::Source);
         same_bits::<voigt::Hertz>(voigt(NormalSpring::Hertz));
         same_bits::<voigt::Linear>(voigt(NormalSpring::Linear { stiffness: 2.0e3 }));
         same_bits::<voigt::ApparentLinear>(voigt(NormalSpring::ApparentLinearHertz {
@@ -464,11 +461,13 @@ mod tests {
 
     #[test]
     fn hooke_walls_on_lanes_give_the_bits_of_one_contact() {
-        same_bits::<Hooke>(ContactModel::HookeHistory {
-            normal_stiffness: 2.0e3,
-            tangential_stiffness: 2.0e3 * 2.0 / 7.0,
-            normal_damping: 5.0e4,
-            tangential_damping: 2.5e4,
-        });
+        same_bits::<Hooke>(ContactModel::HookeHistory(
+            crate::dem::material::HookeOptions {
+                normal_stiffness: 2.0e3,
+                tangential_stiffness: 2.0e3 * 2.0 / 7.0,
+                normal_damping: 5.0e4,
+                tangential_damping: 2.5e4,
+            },
+        ));
     }
 }
