@@ -64,6 +64,10 @@ mkdir -p "$RUN"
 # A copy, so that rebuilding the tree during the (long) comparison does not change what runs.
 cp "$ROOT/target/release/riprap" "$RUN/riprap"
 RIPRAP=$RUN/riprap
+if [ -n "${BASELINE:-}" ]; then
+  cp "$BASELINE" "$RUN/riprap-base"
+  BASE=$RUN/riprap-base
+fi
 { echo "date: $(date -u +%Y-%m-%dT%H:%MZ)"; echo "commit: $(git -C "$ROOT" rev-parse --short HEAD)";
   lscpu | grep -E "Model name|^CPU\(s\)|L2|L3"; free -g | head -2; } > "$RUN/machine.txt"
 
@@ -89,6 +93,8 @@ b1_round() {  # b1_round N STEPS REP
         -var nsteps "$steps" -in "$INPUTS/in.b1.liggghts" -log none ;;
     esac
     run "b1.riprap.$n.np$np.r$rep" "$RIPRAP" --threads "$np" bench b1 --n "$n" --steps "$steps"
+    [ -z "${BASE:-}" ] || run "b1.base.$n.np$np.r$rep" "$BASE" --threads "$np" bench b1 \
+      --n "$n" --steps "$steps"
     case " $B1_PEERS " in *" lammps "*)
       run "b1.lammps.$n.np$np.r$rep" "${MPIRUN[@]}" -np "$np" lmp -var data "b1_$n.data" \
         -var nsteps "$steps" -in "$INPUTS/in.b1.lammps" -log none ;;
@@ -104,6 +110,8 @@ b2_round() {  # b2_round REP
       -in "$INPUTS/in.chute" -log none
     run "b2.riprap.32000.np$np.r$rep" "$RIPRAP" --threads "$np" bench b2 --data data.chute \
       --steps "$B2_STEPS"
+    [ -z "${BASE:-}" ] || run "b2.base.32000.np$np.r$rep" "$BASE" --threads "$np" bench b2 \
+      --data data.chute --steps "$B2_STEPS"
   done
 }
 

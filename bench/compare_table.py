@@ -87,6 +87,21 @@ def main(run):
     print()
     print("Loop times are medians over the runs (count in parentheses); speed-up = peer median / "
           "riprap median. Peak RSS is per process (per rank for the MPI peers).")
+    base = [(k, c) for k, c in sorted(runs.items()) if "base" in c and "riprap" in c]
+    if base:
+        # BASELINE runs: the same riprap case with another binary, right after this tree's.
+        print()
+        print("| case | threads | steps | baseline loop s | riprap loop s | speed-up over baseline "
+              "| runs (baseline, riprap) each |")
+        print("|---|---:|---:|---:|---:|---:|---|")
+        for (bench, n, np_), codes in base:
+            b = [r[0] for r in codes["base"]]
+            r = [x[0] for x in codes["riprap"]]
+            label = {"b1": "B1 N=%d" % n, "b2": "B2 chute", "b1m": "B1 N=%d" % n}.get(bench, bench)
+            print("| %s | %d | %s | %.2f | %.2f | %.3f | %s |" % (
+                label, np_, codes["riprap"][0][1], statistics.median(b), statistics.median(r),
+                statistics.median(b) / statistics.median(r),
+                "; ".join("%.2f, %.2f" % p for p in zip(b, r))))
 
 
 if __name__ == "__main__":
