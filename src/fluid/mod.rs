@@ -50,6 +50,7 @@ pub mod grid;
 pub mod interface;
 pub mod model;
 pub mod operators;
+pub mod phases;
 pub mod pressure;
 pub mod sgs;
 pub mod step;

@@ -4,10 +4,13 @@
 use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts, Boundaries};
 use super::forcing::DrivingPressureGradient;
 use super::grid::{IndexBox, StaggeredGrid, Stencil};
+use super::interface::{Clipped, Interface};
 use super::operators::{cell_velocity, cell_vorticity, divergence};
+use super::phases::{self, Air};
+use super::pressure::pcg::Solve;
 use super::pressure::{Passes, PressureFields, Projection};
 use super::sgs::Smagorinsky;
-use super::timestep::{max_speed, stable_time_step, TimeStepLimits};
+use super::timestep::{free_surface_time_step, max_speed, stable_time_step, TimeStepLimits};
 use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 
@@ -30,6 +33,9 @@ pub struct FluidParameters {
     /// Ferrante (2014); more converge to the exact variable-coefficient projection. The first
     /// step, which has no pressure history to extrapolate, always iterates to convergence.
     pub pressure_passes: usize,
+    /// Air above the water (a free surface, [`super::phases`]), or `None` for water only.
+    #[serde(default)]
+    pub air: Option<Air>,
 }
 
 impl FluidParameters {
@@ -44,6 +50,7 @@ impl FluidParameters {
             driving_pressure_gradient: DrivingPressureGradient::None,
             time_step: TimeStepLimits::default(),
             pressure_passes: 1,
+            air: None,
         }
     }
 
@@ -58,6 +65,7 @@ impl FluidParameters {
             driving_pressure_gradient: DrivingPressureGradient::None,
             time_step: TimeStepLimits::default(),
             pressure_passes: 1,
+            air: None,
         }
     }
 
@@ -93,6 +101,9 @@ pub struct FluidState {
     /// μ_SGS [Pa s] at cell centres from the last step [57] (zero without the model): it
     /// bounds the next adaptive time step, so a restart needs it.
     pub eddy_viscosity: Vec<f64>,
+    /// The water fraction α of each cell [-] with air (`FluidParameters::air`); empty
+    /// without.
+    pub water_fraction: Vec<f64>,
 }
 
 /// The flow solver: state, configuration and a workspace allocated once.
@@ -115,6 +126,15 @@ pub struct Fluid {
     /// Whether the body force of [51] holds the excess weight (ρ̄ − ρ_w) g of the mixture
     /// ([`Fluid::set_mixture_weight`]).
     pub(super) mixture_weight: bool,
+    /// The scheme that carries α, with air.
+    pub(super) interface: Option<Interface>,
+    /// μ_SGS + μ(α) − μ_w at cell centres [Pa s], with air ([`super::phases`]).
+    pub(super) viscosity_excess: Vec<f64>,
+    /// What the interface scheme clipped back into [0, 1] since the fluid was made (not part
+    /// of the state).
+    pub(super) clipped: Clipped,
+    /// The last exact projection's iterations and residual, with air.
+    pub(super) last_solve: Solve,
 }
 
 /// Cell-centred copies of the fields for output (compact, nx·ny·nz, i fastest: the order of
@@ -133,6 +153,8 @@ pub struct CellFields {
     pub eddy_viscosity: Vec<f64>,
     /// Discrete divergence D u [s⁻¹].
     pub divergence: Vec<f64>,
+    /// Water fraction α [-] (empty without air).
+    pub water_fraction: Vec<f64>,
 }
 
 impl Fluid {
@@ -146,6 +168,14 @@ impl Fluid {
         if !(parameters.density > 0.0 && parameters.kinematic_viscosity >= 0.0) {
             return Err("fluid density must be positive and viscosity non-negative".into());
         }
+        if let Some(air) = parameters.air {
+            if !(air.density > 0.0 && air.density < parameters.density) {
+                return Err("air must be lighter than water, and of positive density".into());
+            }
+            if air.dynamic_viscosity.is_nan() || air.dynamic_viscosity < 0.0 {
+                return Err("air's viscosity must not be negative".into());
+            }
+        }
         let zero3 = || std::array::from_fn(|_| grid.field());
         let state = FluidState {
             time: 0.0,
@@ -158,6 +188,11 @@ impl Fluid {
             body_force: zero3(),
             previous_tendency: zero3(),
             eddy_viscosity: grid.field(),
+            water_fraction: if parameters.air.is_some() {
+                grid.field()
+            } else {
+                Vec::new()
+            },
         };
         let regions = std::array::from_fn(|m| {
             std::array::from_fn(|a| {
@@ -181,6 +216,14 @@ impl Fluid {
             projection: Projection::new(&grid, &boundaries),
             pressure_seconds: 0.0,
             mixture_weight: true,
+            interface: parameters.air.map(|_| Interface::new(grid, boundaries)),
+            viscosity_excess: if parameters.air.is_some() {
+                grid.field()
+            } else {
+                Vec::new()
+            },
+            clipped: Clipped::default(),
+            last_solve: Solve::default(),
         };
         fluid.fill_ghosts();
         Ok(fluid)
@@ -195,6 +238,63 @@ impl Fluid {
     /// `a_resting_bed_rests_on_its_contacts_not_on_the_pressure`).
     pub fn set_mixture_weight(&mut self, on: bool) {
         self.mixture_weight = on;
+    }
+
+    /// Sets the water fraction α of every cell from `f(lo, hi)`, the fraction of the cell
+    /// with corners `lo`, `hi` [m] that holds water (e.g. [`super::phases::box_fraction`]),
+    /// then ρ̄ from it and p̄ at rest ([`super::phases::hydrostatic`]) as pⁿ and pⁿ⁻¹. Needs
+    /// air (`FluidParameters::air`).
+    pub fn set_water_fraction(
+        &mut self,
+        f: impl Fn([f64; 3], [f64; 3]) -> f64,
+    ) -> Result<(), String> {
+        let Some(air) = self.parameters.air else {
+            return Err("a water fraction needs air (FluidParameters::air)".into());
+        };
+        let g = self.grid;
+        let (o, h) = (g.origin.to_array(), g.spacing.to_array());
+        for k in 0..g.n[2] {
+            for j in 0..g.n[1] {
+                for i in 0..g.n[0] {
+                    let lo: [f64; 3] = std::array::from_fn(|d| o[d] + [i, j, k][d] as f64 * h[d]);
+                    let hi: [f64; 3] = std::array::from_fn(|d| lo[d] + h[d]);
+                    self.state.water_fraction[g.cell(i, j, k)] = f(lo, hi).clamp(0.0, 1.0);
+                }
+            }
+        }
+        let st = &mut self.state;
+        fill_scalar_ghosts(&g, &self.boundaries, &mut st.water_fraction);
+        phases::set_density(
+            &st.water_fraction,
+            self.parameters.density,
+            &air,
+            &mut st.mixture_density,
+        );
+        phases::hydrostatic(
+            &g,
+            &st.mixture_density,
+            self.parameters.density,
+            self.parameters.gravity.z,
+            &mut st.pressure,
+        );
+        fill_scalar_ghosts(&g, &self.boundaries, &mut st.pressure);
+        st.previous_pressure.copy_from_slice(&st.pressure);
+        Ok(())
+    }
+
+    /// The water fraction α of each cell (padded; empty without air) [-].
+    pub fn water_fraction(&self) -> &[f64] {
+        &self.state.water_fraction
+    }
+
+    /// The last exact projection (air over water): its iterations and final residual.
+    pub fn last_solve(&self) -> Solve {
+        self.last_solve
+    }
+
+    /// What the interface scheme clipped back into [0, 1] since the fluid was made.
+    pub fn clipped(&self) -> Clipped {
+        self.clipped
     }
 
     /// Wall-clock time spent in the pressure projection since the fluid was made [s].
@@ -247,7 +347,8 @@ impl Fluid {
             && state.pressure.len() == n
             && state.previous_pressure.len() == n
             && state.mixture_density.len() == n
-            && state.eddy_viscosity.len() == n;
+            && state.eddy_viscosity.len() == n
+            && state.water_fraction.len() == self.state.water_fraction.len();
         if !ok {
             return Err(format!("fluid state does not match the grid ({n} points)"));
         }
@@ -383,8 +484,20 @@ impl Fluid {
                 }
             }
         }
-        let nu = self.parameters.kinematic_viscosity + nu_t;
-        stable_time_step(&self.grid, speed, nu, &self.parameters.time_step)
+        let mut nu = self.parameters.kinematic_viscosity;
+        if let Some(air) = self.parameters.air {
+            nu = nu.max(air.dynamic_viscosity / air.density);
+        }
+        let nu = nu + nu_t;
+        let limits = &self.parameters.time_step;
+        let dt = stable_time_step(&self.grid, speed, nu, limits);
+        match self.parameters.air {
+            Some(_) => {
+                let g = self.parameters.gravity.length();
+                dt.min(free_surface_time_step(&self.grid, speed, g, limits))
+            }
+            None => dt,
+        }
     }
 
     /// Cell-centred copies of the fields, for output.
@@ -401,6 +514,9 @@ impl Fluid {
                     out.mixture_density.push(self.state.mixture_density[c]);
                     out.eddy_viscosity.push(self.state.eddy_viscosity[c]);
                     out.divergence.push(divergence(st, u, c));
+                    if let Some(&a) = self.state.water_fraction.get(c) {
+                        out.water_fraction.push(a);
+                    }
                 }
             }
         }

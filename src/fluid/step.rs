@@ -27,6 +27,7 @@ use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts}
 use super::forcing::body_acceleration;
 use super::grid::{shifted, update_rows};
 use super::model::Fluid;
+use super::phases::{set_density, viscosity_excess};
 use super::pressure::{Passes, PressureFields};
 use super::sgs::eddy_viscosity;
 use super::tendency::tendency_row;
@@ -74,6 +75,13 @@ impl Fluid {
             eddy_viscosity(&grid, &bcs, model, mu, u, rho, &mut state.eddy_viscosity);
         }
 
+        // With air, the stress divergence also carries μ(α) − μ_w (`phases`).
+        if let Some(air) = &par.air {
+            let sgs = par.smagorinsky.map(|_| &state.eddy_viscosity[..]);
+            let alpha = &state.water_fraction;
+            viscosity_excess(&grid, &bcs, alpha, sgs, mu, air, &mut self.viscosity_excess);
+        }
+
         // Hⁿ: advection and viscous stress divergence.
         {
             let u = [
@@ -81,8 +89,10 @@ impl Fluid {
                 &state.velocity[1][..],
                 &state.velocity[2][..],
             ];
-            let mu_t = &state.eddy_viscosity[..];
-            let sgs = par.smagorinsky.is_some();
+            let (mu_t, sgs) = match par.air {
+                Some(_) => (&self.viscosity_excess[..], true),
+                None => (&state.eddy_viscosity[..], par.smagorinsky.is_some()),
+            };
             for (a, h) in self.tendency.iter_mut().enumerate() {
                 update_rows(&grid, &self.regions[a], h, |start, row| {
                     tendency_row(&st, a, sgs, u, mu_t, rho, mu, start, row);
@@ -148,23 +158,33 @@ impl Fluid {
         fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
         advance_outflow(&grid, &bcs, &mut state.velocity, dt);
         let clock = std::time::Instant::now();
-        self.projection.project(
-            &grid,
-            &bcs,
-            &self.regions,
-            &mut state.velocity,
-            PressureFields {
-                current: &state.pressure,
-                previous: &state.previous_pressure,
-                next: &mut self.next_pressure,
-            },
-            &state.mixture_density,
-            dt,
-            r,
-            passes,
-        );
+        let fields = PressureFields {
+            current: &state.pressure,
+            previous: &state.previous_pressure,
+            next: &mut self.next_pressure,
+        };
+        let (u, rho) = (&mut state.velocity, &state.mixture_density);
+        if par.air.is_some() {
+            // Air over water: the exact projection (`pressure::pcg`).
+            let solve =
+                (self.projection).project_exact(&grid, &bcs, &self.regions, u, fields, rho, dt, r);
+            self.last_solve = solve;
+        } else {
+            self.projection
+                .project(&grid, &bcs, &self.regions, u, fields, rho, dt, r, passes);
+        }
         self.pressure_seconds += clock.elapsed().as_secs_f64();
         fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
+
+        // With air: α carried by uⁿ⁺¹, then ρ̄ from it for the next step.
+        if let (Some(air), Some(interface)) = (&par.air, &mut self.interface) {
+            let alpha = &mut state.water_fraction;
+            let c = interface.advect(alpha, &state.velocity, dt, state.steps);
+            self.clipped.above += c.above;
+            self.clipped.below += c.below;
+            fill_scalar_ghosts(&grid, &bcs, alpha);
+            set_density(alpha, rho_w, air, &mut state.mixture_density);
+        }
 
         // Rotate: pⁿ⁻¹ ← pⁿ ← pⁿ⁺¹, Hⁿ⁻¹ ← Hⁿ. After the first step p⁰ is no pressure of the
         // flow (just the initial zero): take p¹ as both, so the next p̂ is p¹, not 2p¹.

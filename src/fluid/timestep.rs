@@ -83,3 +83,24 @@ pub fn stable_time_step(
     };
     dt_adv.min(dt_visc).min(limits.max)
 }
+
+/// The step of a flow with a free surface, where gravity accelerates fluid from rest
+/// (Kang, Fedkiw & Liu 2000, eq. 32, without surface tension):
+///
+/// ```text
+/// Δt = 2 C_adv / ( R + √(R² + 4 |g| / Δ_min) ),   R = Σ_a max|u_a| / Δ_a
+/// ```
+///
+/// At rest this is C_adv √(Δ_min / |g|), the time for a surface cell falling from rest to
+/// move by about C_adv Δ/2; in fast flow it tends to the advective limit C_adv / R.
+pub fn free_surface_time_step(
+    grid: &StaggeredGrid,
+    max_speed: [f64; 3],
+    gravity: f64,
+    limits: &TimeStepLimits,
+) -> f64 {
+    let d = grid.spacing;
+    let rate = max_speed[0] / d.x + max_speed[1] / d.y + max_speed[2] / d.z;
+    let g = gravity.abs() / d.x.min(d.y).min(d.z);
+    2.0 * limits.cfl / (rate + (rate * rate + 4.0 * g).sqrt())
+}

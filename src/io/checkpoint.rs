@@ -21,7 +21,7 @@ const MAGIC: &[u8; 8] = b"RIPRAPCK";
 /// 2: blocks and links; 3: the fluid state; 4: the storage order, the neighbour-build
 /// positions, the contact history by pair, and the fluid's held load on each sphere
 /// (`Spheres::fluid`); 5: the scenario's fingerprint (`run::fingerprint`).
-const VERSION: u32 = 5;
+const VERSION: u32 = 6;
 
 /// The saved state.
 #[derive(Clone, Debug, Serialize, Deserialize)]

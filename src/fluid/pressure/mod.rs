@@ -23,6 +23,7 @@
 //! Units: p [Pa], ρ [kg m⁻³], u [m s⁻¹], Δt [s].
 
 pub mod fft;
+pub mod pcg;
 
 use super::boundary::{fill_scalar_ghosts, Boundaries};
 use super::grid::{
@@ -51,6 +52,8 @@ pub struct Projection {
     q: [Vec<f64>; 3],
     /// A copy of u* for repeated passes (sized on first use) [m s⁻¹].
     u_star: [Vec<f64>; 3],
+    /// The vectors of the exact projection ([`pcg`], sized on first use).
+    krylov: pcg::Krylov,
 }
 
 /// The pressure fields one projection reads and writes (padded, ghosts filled on exit).
@@ -81,6 +84,7 @@ impl Projection {
             p_hat: grid.field(),
             q: std::array::from_fn(|_| grid.field()),
             u_star: std::array::from_fn(|_| grid.field()),
+            krylov: pcg::Krylov::default(),
         }
     }
 

@@ -86,6 +86,7 @@ pub(in crate::scenario) fn build_fluid(
         driving_pressure_gradient: driving,
         time_step,
         pressure_passes: 1,
+        air: None,
     };
     let fluid = if make {
         let mut fluid =

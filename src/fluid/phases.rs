@@ -1,0 +1,156 @@
+//! Water and air: the fluid's density and viscosity in each cell from its water fraction α,
+//! which [`super::interface`] carries with the flow.
+//!
+//! With two fluids the "water" of METHOD.md [50]-[53] becomes a mixture of water and air, one
+//! fluid of variable density (the one-fluid formulation of VOF codes, e.g. interFoam):
+//!
+//! ```text
+//! ρ = α ρ_w + (1 − α) ρ_a        μ = α μ_w + (1 − α) μ_a                              [53]
+//! ```
+//!
+//! ρ enters [51] as ρ̄ does already: as the inertia (1/ρ̄_f on each face), in the excess
+//! weight (ρ̄_f − ρ_w) g, and in the variable-density projection of Dodd & Ferrante
+//! ([`super::pressure`], ρ₀ the air's density). The variable viscosity is written as the
+//! molecular term of water plus a stress divergence of the excess μ − μ_w (negative in air):
+//! μ_w ∇²u + ∇·(2 (μ − μ_w) S) = ∇·(2 μ S) for a divergence-free u, so it joins the subgrid
+//! term of [`super::diffusion::subgrid`] (μ_SGS + μ − μ_w, [`viscosity_excess`]).
+//!
+//! p̄ stays the pressure less the hydrostatic pressure of water: in still air it grows upwards
+//! as (ρ_w − ρ_a) g z. [`hydrostatic`] sets it for a fluid at rest, so that a still tank starts
+//! in discrete balance (the first step's splitting converges slowly at a density ratio of 830:
+//! its error shrinks by 1 − ρ_a/ρ_w per pass).
+
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+use super::boundary::fill_scalar_ghosts;
+use super::{Boundaries, StaggeredGrid};
+
+/// The lighter fluid above the water.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Air {
+    /// Density ρ_a [kg m⁻³].
+    pub density: f64,
+    /// Dynamic viscosity μ_a [Pa s].
+    pub dynamic_viscosity: f64,
+}
+
+impl Default for Air {
+    /// Dry air at 20 °C and 1 atm: ρ_a = 1.204 kg m⁻³, μ_a = 1.813e-5 Pa s.
+    fn default() -> Air {
+        Air {
+            density: 1.204,
+            dynamic_viscosity: 1.813e-5,
+        }
+    }
+}
+
+/// ρ = α ρ_w + (1 − α) ρ_a [kg m⁻³] for water fraction `alpha` [-].
+///
+/// Implements [53].
+#[inline]
+pub fn density(alpha: f64, rho_w: f64, rho_a: f64) -> f64 {
+    rho_a + alpha * (rho_w - rho_a)
+}
+
+/// μ = α μ_w + (1 − α) μ_a [Pa s] for water fraction `alpha` [-].
+#[inline]
+pub fn viscosity(alpha: f64, mu_w: f64, mu_a: f64) -> f64 {
+    mu_a + alpha * (mu_w - mu_a)
+}
+
+/// ρ̄ from α on every cell, ghosts included (`alpha` with filled ghosts) [kg m⁻³].
+pub fn set_density(alpha: &[f64], rho_w: f64, air: &Air, rho: &mut [f64]) {
+    rho.par_iter_mut()
+        .zip(alpha.par_iter())
+        .for_each(|(r, &a)| *r = density(a, rho_w, air.density));
+}
+
+/// The viscosity the stress-divergence term takes [Pa s]: μ_SGS (when `sgs`) + μ(α) − μ_w,
+/// ghosts filled.
+pub fn viscosity_excess(
+    grid: &StaggeredGrid,
+    bcs: &Boundaries,
+    alpha: &[f64],
+    mu_sgs: Option<&[f64]>,
+    mu_w: f64,
+    air: &Air,
+    out: &mut [f64],
+) {
+    let mu_a = air.dynamic_viscosity;
+    match mu_sgs {
+        Some(t) => out
+            .par_iter_mut()
+            .zip(alpha.par_iter().zip(t.par_iter()))
+            .for_each(|(o, (&a, &t))| *o = t + (viscosity(a, mu_w, mu_a) - mu_w)),
+        None => out
+            .par_iter_mut()
+            .zip(alpha.par_iter())
+            .for_each(|(o, &a)| *o = viscosity(a, mu_w, mu_a) - mu_w),
+    }
+    fill_scalar_ghosts(grid, bcs, out);
+}
+
+/// The pressure p̄ [Pa] of a fluid of density `rho` (cells, ghosts filled) at rest under
+/// gravity g_z [m s⁻²] along z: on each z-face (p̄_k − p̄_{k−1}) / Δz = (ρ̄_f − ρ_w) g_z with
+/// ρ̄_f the mean of the two cells, the discrete balance the momentum equation holds at rest;
+/// p̄ = 0 in the bottom cell of each column. Columns in parallel, each summed upwards.
+pub fn hydrostatic(grid: &StaggeredGrid, rho: &[f64], rho_w: f64, g_z: f64, p: &mut [f64]) {
+    let [sx, sy, sz] = grid.strides();
+    let (nx, ny, nz) = (grid.n[0], grid.n[1], grid.n[2]);
+    let dz = grid.spacing.z;
+    // One column per (i, j); written through a column list to keep the writes disjoint.
+    let cols: Vec<(usize, Vec<f64>)> = (0..nx * ny)
+        .into_par_iter()
+        .map(|q| {
+            let (i, j) = (q % nx + 1, q / nx + 1);
+            let base = i * sx + j * sy;
+            let mut col = vec![0.0; nz];
+            for k in 1..nz {
+                let (lo, hi) = (base + k * sz, base + (k + 1) * sz);
+                let rho_f = 0.5 * (rho[lo] + rho[hi]);
+                col[k] = col[k - 1] + dz * (rho_f - rho_w) * g_z;
+            }
+            (base, col)
+        })
+        .collect();
+    for (base, col) in cols {
+        for (k, v) in col.into_iter().enumerate() {
+            p[base + (k + 1) * sz] = v;
+        }
+    }
+}
+
+/// The volume fraction of the cell [lo, hi] (corners [m]) that lies in the box [a, b] [-].
+pub fn box_fraction(lo: [f64; 3], hi: [f64; 3], a: [f64; 3], b: [f64; 3]) -> f64 {
+    (0..3)
+        .map(|d| ((hi[d].min(b[d]) - lo[d].max(a[d])) / (hi[d] - lo[d])).clamp(0.0, 1.0))
+        .product()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn density_and_viscosity_are_the_phases_at_the_ends() {
+        let air = Air::default();
+        assert_eq!(density(1.0, 998.2, air.density), 998.2);
+        assert_eq!(density(0.0, 998.2, air.density), air.density);
+        assert_eq!(
+            viscosity(0.0, 1e-3, air.dynamic_viscosity),
+            air.dynamic_viscosity
+        );
+        assert!((density(0.5, 998.2, 1.2) - 499.7).abs() < 1e-12);
+    }
+
+    #[test]
+    fn box_fraction_is_the_overlap() {
+        let lo = [0.0, 0.0, 0.0];
+        let hi = [1.0, 1.0, 1.0];
+        assert_eq!(box_fraction(lo, hi, [-1.0; 3], [2.0; 3]), 1.0);
+        assert_eq!(box_fraction(lo, hi, [-1.0; 3], [2.0, 2.0, 0.25]), 0.25);
+        assert_eq!(box_fraction(lo, hi, [0.5, 0.5, -1.0], [2.0; 3]), 0.25);
+        assert_eq!(box_fraction(lo, hi, [3.0; 3], [4.0; 3]), 0.0);
+    }
+}
