@@ -45,9 +45,8 @@ impl Default for Air {
     }
 }
 
-/// ρ = α ρ_w + (1 − α) ρ_a [kg m⁻³] for water fraction `alpha` [-].
-///
-/// Implements [53].
+/// ρ = α ρ_w + (1 − α) ρ_a [kg m⁻³] for water fraction `alpha` [-]: the fluid's density in
+/// the mixture of [53], whose implementation (with solids) is `coupling`'s.
 #[inline]
 pub fn density(alpha: f64, rho_w: f64, rho_a: f64) -> f64 {
     rho_a + alpha * (rho_w - rho_a)
