@@ -128,7 +128,7 @@ pub struct Fluid {
     pub(super) mixture_weight: bool,
     /// The scheme that carries α, with air.
     pub(super) interface: Option<Interface>,
-    /// μ_SGS + μ(α) − μ_w at cell centres [Pa s], with air ([`super::phases`]).
+    /// μ(α) + μ_SGS at cell centres [Pa s], with air ([`super::phases`]).
     pub(super) viscosity_excess: Vec<f64>,
     /// What the interface scheme clipped back into [0, 1] since the fluid was made (not part
     /// of the state).

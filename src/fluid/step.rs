@@ -75,7 +75,7 @@ impl Fluid {
             eddy_viscosity(&grid, &bcs, model, mu, u, rho, &mut state.eddy_viscosity);
         }
 
-        // With air, the stress divergence also carries μ(α) − μ_w (`phases`).
+        // With air, the stress divergence carries μ(α) + μ_SGS (`phases`).
         if let Some(air) = &par.air {
             let sgs = par.smagorinsky.map(|_| &state.eddy_viscosity[..]);
             let alpha = &state.water_fraction;
@@ -89,9 +89,11 @@ impl Fluid {
                 &state.velocity[1][..],
                 &state.velocity[2][..],
             ];
-            let (mu_t, sgs) = match par.air {
-                Some(_) => (&self.viscosity_excess[..], true),
-                None => (&state.eddy_viscosity[..], par.smagorinsky.is_some()),
+            // With air the whole viscosity μ(α) + μ_SGS goes through the stress divergence
+            // and the Laplacian form of water's is off (`phases`).
+            let (mu_t, sgs, mu) = match par.air {
+                Some(_) => (&self.viscosity_excess[..], true, 0.0),
+                None => (&state.eddy_viscosity[..], par.smagorinsky.is_some(), mu),
             };
             for (a, h) in self.tendency.iter_mut().enumerate() {
                 update_rows(&grid, &self.regions[a], h, |start, row| {

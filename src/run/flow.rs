@@ -3,7 +3,8 @@
 //! columns of `series.csv`, and the fluid part of a restart.
 //!
 //! Image arrays: `velocity` [m s⁻¹], `pressure` (less hydrostatic) [Pa], `vorticity` [s⁻¹],
-//! `eddy_viscosity` μ_SGS [Pa s], `mixture_density` ρ̄ [kg m⁻³] [53], and
+//! `eddy_viscosity` μ_SGS [Pa s], `mixture_density` ρ̄ [kg m⁻³] [53], `water_fraction` α [-]
+//! (with air; the free surface is its ½ contour), and
 //! `divergence_end_of_step` [s⁻¹], ∇·u of the velocity written: with spheres that is after the
 //! coupling's correction [62], which is not divergence-free (up to tens of s⁻¹ where spheres
 //! move), unlike `series.csv`'s `fluid_max_divergence_after_projection`.
@@ -112,21 +113,18 @@ pub fn write_flow(
     format: Format,
 ) -> std::io::Result<()> {
     let g = fluid.grid();
-    write_image(
-        path,
-        g.n,
-        g.origin,
-        g.spacing,
-        &[
-            Array::vectors("velocity", &fields.velocity),
-            Array::scalars("pressure", &fields.pressure),
-            Array::vectors("vorticity", &fields.vorticity),
-            Array::scalars("eddy_viscosity", &fields.eddy_viscosity),
-            Array::scalars("mixture_density", &fields.mixture_density),
-            Array::scalars("divergence_end_of_step", &fields.divergence),
-        ],
-        format,
-    )
+    let mut arrays = vec![
+        Array::vectors("velocity", &fields.velocity),
+        Array::scalars("pressure", &fields.pressure),
+        Array::vectors("vorticity", &fields.vorticity),
+        Array::scalars("eddy_viscosity", &fields.eddy_viscosity),
+        Array::scalars("mixture_density", &fields.mixture_density),
+        Array::scalars("divergence_end_of_step", &fields.divergence),
+    ];
+    if !fields.water_fraction.is_empty() {
+        arrays.push(Array::scalars("water_fraction", &fields.water_fraction));
+    }
+    write_image(path, g.n, g.origin, g.spacing, &arrays, format)
 }
 
 /// One line or plane of cells written to CSV on its own schedule.

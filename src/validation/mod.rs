@@ -9,12 +9,15 @@
 //! * the coupling's cases 1 to 5 of METHOD.md §5: [`sphere_drag`], [`cylinder_strouhal`],
 //!   [`block_settling`], [`hopper_cloud`] and [`sheet_flow`];
 //! * beyond the source: [`wet_rebound`] (a sphere rebounding from a wall in a liquid, against
-//!   the measurements of Gondret et al. 2002), the lubrication film of wet contacts.
+//!   the measurements of Gondret et al. 2002), the lubrication film of wet contacts;
+//!   [`dam_break`] (a water column collapsing under air, against Martin & Moyce 1952), the
+//!   free surface.
 
 pub mod block_settling;
 pub mod cavity;
 pub mod channel180;
 pub mod cylinder_strouhal;
+pub mod dam_break;
 pub mod hopper_cloud;
 pub mod report;
 pub mod sheet_flow;

@@ -80,7 +80,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 12] = [
+pub const CASES: [&str; 13] = [
     "cavity",
     "channel",
     "sphere_drag",
@@ -88,6 +88,7 @@ pub const CASES: [&str; 12] = [
     "block_settling",
     "hopper_cloud",
     "wet_rebound",
+    "dam_break",
     "sheet_flow",
     "sheet_flow_sensitivity",
     "sheet_flow_report",
@@ -133,6 +134,9 @@ pub fn run_validation_cases(
     }
     if run("wet_rebound") {
         all &= super::wet_rebound::report::section(out, quick, &mut md)?;
+    }
+    if run("dam_break") {
+        all &= super::dam_break::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
         all &= sections::ensemble(out, quick, case5, &mut md)?;

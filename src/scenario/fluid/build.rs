@@ -6,7 +6,7 @@ use super::report::FluidDerived;
 use super::{DrivingKind, FaceKind, FaceSection, FluidSection};
 use crate::dem::domain::Domain;
 use crate::dem::insertion::Rng;
-use crate::fluid::timestep::stable_time_step;
+use crate::fluid::timestep::{free_surface_time_step, stable_time_step};
 use crate::fluid::{
     Boundaries, Boundary, DrivingPressureGradient, Fluid, FluidParameters, InflowVelocity,
     Smagorinsky, StaggeredGrid, TimeStepLimits,
@@ -77,6 +77,7 @@ pub(in crate::scenario) fn build_fluid(
         ));
     }
     samples(src, f, lo, hi)?;
+    let phases = super::air::phases(src, f, density, lo, hi, !radii.is_empty())?;
 
     let parameters = FluidParameters {
         density,
@@ -86,13 +87,17 @@ pub(in crate::scenario) fn build_fluid(
         driving_pressure_gradient: driving,
         time_step,
         pressure_passes: 1,
-        air: None,
+        air: phases.as_ref().map(|p| p.air),
     };
     let fluid = if make {
         let mut fluid =
             Fluid::new(grid, boundaries, parameters).map_err(|e| src.invalid("fluid", e))?;
         let seed = f.perturbation_seed;
         fluid.set_velocity(|x| u0 + amplitude * perturbation(seed, x));
+        if let Some(p) = &phases {
+            p.fill(&mut fluid)
+                .map_err(|e| src.invalid("fluid.air", e))?;
+        }
         let open = boundaries
             .faces
             .iter()
@@ -106,7 +111,22 @@ pub(in crate::scenario) fn build_fluid(
         None
     };
 
-    let scale = velocity_scale(f, &boundaries, &driving);
+    let mut scale = velocity_scale(f, &boundaries, &driving);
+    if let Some(p) = &phases {
+        // Water falling or running under gravity: 2 √(g H), the front speed of a dam break
+        // of height H (Ritter), along every axis more than four cells long.
+        let top = p
+            .boxes
+            .iter()
+            .map(|b| b.1[2])
+            .fold(p.level.unwrap_or(lo.z), f64::max);
+        let fall = 2.0 * (gravity.length() * (top.min(hi.z) - lo.z)).sqrt();
+        for a in 0..3 {
+            if grid.n[a] > 4 {
+                scale[a] = scale[a].max(fall);
+            }
+        }
+    }
     let limits_only = |cfl: bool| {
         let (speed, nu) = if cfl {
             (scale.to_array(), 0.0)
@@ -120,7 +140,21 @@ pub(in crate::scenario) fn build_fluid(
         stable_time_step(&grid, speed, nu, &unbounded)
     };
     let (cfl_step, viscous_step) = (limits_only(true), limits_only(false));
-    let fluid_step = cfl_step.min(viscous_step).min(time_step.max);
+    let mut fluid_step = cfl_step.min(viscous_step).min(time_step.max);
+    let surface = phases.map(|p| {
+        let rest = free_surface_time_step(&grid, [0.0; 3], gravity.length(), &time_step);
+        fluid_step = fluid_step.min(free_surface_time_step(
+            &grid,
+            scale.to_array(),
+            gravity.length(),
+            &time_step,
+        ));
+        (p, rest)
+    });
+    let water_volume = match &surface {
+        Some((p, _)) => p.water_volume(lo, hi),
+        None => grid.cell_volume() * grid.cell_count() as f64,
+    };
     let filter_width = grid.cell_volume().cbrt();
     let diameters = radii
         .iter()
@@ -150,6 +184,8 @@ pub(in crate::scenario) fn build_fluid(
         },
         resolved_from: None,
         stirred: None,
+        phases: surface,
+        water_volume,
     };
     Ok(Some((fluid, derived)))
 }

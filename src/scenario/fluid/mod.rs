@@ -22,6 +22,14 @@
 //! velocity_amplitude = [0.85, 0.0, 0.0]
 //! period = 5.0
 //!
+//! [fluid.air]                      # water under air, a free surface (default: no air)
+//! water_level = 0.3                # m, water below it at the start
+//! density = 1.204                  # kg/m3 (default); dynamic_viscosity = 1.813e-5 Pa s
+//!
+//! [[fluid.water]]                  # and/or boxes of water at the start (a dam break)
+//! min = [0.0, 0.0, 0.0]
+//! max = [0.057, 0.1, 0.114]
+//!
 //! [[fluid.sample]]                 # cell values along a line (or on a plane) to CSV
 //! name = "profile"
 //! kind = "line"
@@ -33,9 +41,11 @@
 //! The schema is here; [`build`] checks it and makes the `Fluid`, [`report`] holds what
 //! `riprap check` prints.
 
+mod air;
 mod build;
 mod report;
 
+pub use air::Phases;
 pub(super) use build::build_fluid;
 pub use report::{note_coupling, FluidDerived, CELLS_PER_DIAMETER};
 
@@ -91,6 +101,33 @@ pub struct FluidSection {
     /// Line and plane samples written to CSV.
     #[serde(default, rename = "sample")]
     pub samples: Vec<SampleSection>,
+    /// Air above the water: a free surface (default: none, water fills the box).
+    pub air: Option<AirSection>,
+    /// Boxes of water at the start, with air.
+    #[serde(default)]
+    pub water: Vec<WaterSection>,
+}
+
+/// `[fluid.air]`: water under air, with a free surface between them.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AirSection {
+    /// Density of air ρ_a [kg m⁻³] (default 1.204, dry air at 20 °C).
+    pub density: Option<f64>,
+    /// Dynamic viscosity of air μ_a [Pa s] (default 1.813e-5).
+    pub dynamic_viscosity: Option<f64>,
+    /// Water fills the box below this height at the start [m].
+    pub water_level: Option<f64>,
+}
+
+/// `[[fluid.water]]`: a box of water at the start (e.g. the column of a dam break).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WaterSection {
+    /// Lower corner [m].
+    pub min: [f64; 3],
+    /// Upper corner [m].
+    pub max: [f64; 3],
 }
 
 fn yes() -> bool {

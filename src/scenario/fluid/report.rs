@@ -3,6 +3,8 @@
 
 use std::fmt::Write as _;
 
+use super::Phases;
+
 use crate::coupling::{CouplingMode, CouplingParameters};
 use crate::fluid::timestep::stable_time_step;
 use crate::fluid::{
@@ -49,6 +51,10 @@ pub struct FluidDerived {
     /// With coupled spheres: their reference speed [m s⁻¹] and the fluid step [s] if they stir
     /// the water to that speed along gravity (the step then shrinks; the run adapts to it).
     pub stirred: Option<(f64, f64)>,
+    /// Air over the water, and the free-surface limit on the step at rest [s].
+    pub phases: Option<(Phases, f64)>,
+    /// The water's volume at the start [m³] (the box's, without air).
+    pub water_volume: f64,
 }
 
 /// Tells the flow's report about coupled spheres: which the grid resolves, and the fluid step
@@ -214,6 +220,42 @@ impl FluidDerived {
             }
         }
         let _ = writeln!(s, "fluid boundaries: {}", faces.join("; "));
+        if let Some((ph, step)) = &self.phases {
+            let (a, d) = (ph.air, g.spacing.x.min(g.spacing.y).min(g.spacing.z));
+            let mut start = Vec::new();
+            if let Some(z) = ph.level {
+                start.push(format!("below z = {} m", sig4(z)));
+            }
+            if !ph.boxes.is_empty() {
+                start.push(format!("{} box(es)", ph.boxes.len()));
+            }
+            let _ = writeln!(
+                s,
+                "free surface: water under air (ρ_a = {} kg/m³, μ_a = {:.4e} Pa s, density ratio \
+                 {:.0}), water {} at the start, {:.4e} m³; free-surface step limit at rest \
+                 C √(Δ/g) = {step:.4e} s; projection by conjugate gradients",
+                sig4(a.density),
+                a.dynamic_viscosity,
+                p.density / a.density,
+                start.join(" and "),
+                self.water_volume
+            );
+            // Surface tension is not modelled: it shapes features of a few capillary lengths
+            // √(σ/(ρ g)) (2.7 mm for clean water), which the grid resolves when Δ is small.
+            let capillary = (0.0728 / (p.density * p.gravity.length().max(1e-12))).sqrt();
+            let _ = writeln!(
+                s,
+                "surface tension: not modelled (negligible for waves and bodies much larger than \
+                 the capillary length {:.1} mm){}",
+                capillary * 1e3,
+                if d < 3.0 * capillary {
+                    "; warning: Δ is within 3 capillary lengths, so features the grid resolves \
+                     would feel it"
+                } else {
+                    ""
+                }
+            );
+        }
         let _ = match (p.driving_pressure_gradient, self.oscillatory_peak) {
             (
                 DrivingPressureGradient::Oscillatory {
@@ -238,7 +280,7 @@ impl FluidDerived {
         let _ = writeln!(
             s,
             "fluid velocity scale: {} m/s (initial velocity and perturbation, oscillatory U_max, \
-             boundary velocities)",
+             boundary velocities; with air, 2 √(g H) of the water's height H)",
             vec4(self.velocity_scale)
         );
         let cfl = if self.cfl_step.is_finite() {
