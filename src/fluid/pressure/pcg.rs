@@ -16,8 +16,8 @@
 //! preconditioned operator's spectrum lies in [1/ρ_w, 1/ρ_a] with most eigenvalues clustered at
 //! its two ends (the cells of each phase), which conjugate gradients resolve quickly. The
 //! start is the extrapolated p̂ = (1 + r) pⁿ − r pⁿ⁻¹. The iteration stops when the residual's
-//! 2-norm falls below [`TOLERANCE`] times that of the right-hand side, or after
-//! [`MAX_ITERATIONS`].
+//! 2-norm falls below [`TOLERANCE`] times that of the right-hand side, when round-off stops it
+//! falling (no new low in [`STALL`] iterations), or after [`MAX_ITERATIONS`].
 //!
 //! Every sum runs over fixed blocks of cells (one z-plane each), the blocks' sums added in
 //! order: the bits do not depend on the number of threads.
@@ -34,6 +34,10 @@ pub const TOLERANCE: f64 = 1e-13;
 
 /// The most iterations of one projection.
 pub const MAX_ITERATIONS: usize = 1000;
+
+/// Iterations without a new lowest residual after which round-off is taken to have stopped
+/// the iteration.
+pub const STALL: usize = 30;
 
 /// The vectors of the iteration (compact cells), allocated on the first use.
 #[derive(Default)]
@@ -107,10 +111,16 @@ impl Projection {
             let mut rz = dot(&k.r, &k.z, plane, &mut k.partial);
             let mut x = std::mem::take(&mut self.rhs); // x as compact, reusing rhs
             grid.gather_interior(p.next, &mut x);
+            let (mut lowest, mut since) = (f64::INFINITY, 0);
             loop {
                 let r_norm = dot(&k.r, &k.r, plane, &mut k.partial).sqrt() / b_norm;
                 solve.residual = r_norm;
-                if r_norm <= TOLERANCE || solve.iterations >= MAX_ITERATIONS {
+                if r_norm < lowest {
+                    (lowest, since) = (r_norm, 0);
+                } else {
+                    since += 1;
+                }
+                if r_norm <= TOLERANCE || since >= STALL || solve.iterations >= MAX_ITERATIONS {
                     break;
                 }
                 grid.scatter_interior(&k.d, &mut k.padded);
