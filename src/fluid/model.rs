@@ -282,6 +282,24 @@ impl Fluid {
         Ok(())
     }
 
+    /// The water's volume Σ α V over the interior cells, summed in storage order [m³] (0
+    /// without air).
+    pub fn water_volume(&self) -> f64 {
+        let (g, a) = (&self.grid, &self.state.water_fraction);
+        if a.is_empty() {
+            return 0.0;
+        }
+        let mut s = 0.0;
+        for k in 0..g.n[2] {
+            for j in 0..g.n[1] {
+                s += a[g.cell(0, j, k)..g.cell(0, j, k) + g.n[0]]
+                    .iter()
+                    .sum::<f64>();
+            }
+        }
+        s * g.cell_volume()
+    }
+
     /// The water fraction α of each cell (padded; empty without air) [-].
     pub fn water_fraction(&self) -> &[f64] {
         &self.state.water_fraction

@@ -86,7 +86,7 @@ pub fn run(n: usize) -> anyhow::Result<Run> {
         .simulation
         .fluid
         .ok_or_else(|| anyhow::anyhow!("the case has a fluid"))?;
-    let v0 = water_volume(&fluid);
+    let v0 = fluid.water_volume();
     let scale = (2.0 * G / A).sqrt();
     let (mut front, mut height) = (Vec::new(), Vec::new());
     let mut max_iterations = 0;
@@ -105,27 +105,12 @@ pub fn run(n: usize) -> anyhow::Result<Run> {
         cells_per_a: n,
         front,
         height,
-        volume_change: (water_volume(&fluid) - v0) / v0,
+        volume_change: (fluid.water_volume() - v0) / v0,
         clipped: c.above + c.below,
         steps: fluid.steps(),
         max_iterations,
         seconds: start.elapsed().as_secs_f64(),
     })
-}
-
-/// Σ α V over the cells [m³].
-fn water_volume(f: &Fluid) -> f64 {
-    let g = f.grid();
-    let a = f.water_fraction();
-    let mut s = 0.0;
-    for k in 0..g.n[2] {
-        for j in 0..g.n[1] {
-            for i in 0..g.n[0] {
-                s += a[g.cell(i, j, k)];
-            }
-        }
-    }
-    s * g.cell_volume()
 }
 
 /// The front Z = x/a: along the bottom row of cells, where α falls through ½ farthest from
