@@ -201,6 +201,8 @@ pub struct Verdict {
     /// RMS of H − H_measured over the table's τ the run covers, the run's time moved by the
     /// lead (τ + lead/√2) [-].
     pub height_rms: f64,
+    /// The same without moving the run's time [-] (reported: the heights match better so).
+    pub height_rms_unshifted: f64,
 }
 
 impl Verdict {
@@ -222,17 +224,18 @@ pub fn verdict(run: &Run) -> Verdict {
         .filter_map(|&z| Some(time_at(&measured, z)? - time_at(&run.front, z)?))
         .collect();
     let lead = leads.iter().sum::<f64>() / leads.len().max(1) as f64;
-    let shift = lead / 2f64.sqrt();
-    let errors: Vec<f64> = measured_height()
-        .iter()
-        .filter_map(|&(tau, h)| Some(interpolate(&run.height, tau - shift)? - h))
-        .collect();
-    let height_rms =
-        (errors.iter().map(|e| e * e).sum::<f64>() / errors.len().max(1) as f64).sqrt();
+    let rms = |shift: f64| {
+        let errors: Vec<f64> = measured_height()
+            .iter()
+            .filter_map(|&(tau, h)| Some(interpolate(&run.height, tau - shift)? - h))
+            .collect();
+        (errors.iter().map(|e| e * e).sum::<f64>() / errors.len().max(1) as f64).sqrt()
+    };
     Verdict {
         speed,
         lead,
-        height_rms,
+        height_rms: rms(lead / 2f64.sqrt()),
+        height_rms_unshifted: rms(0.0),
     }
 }
 

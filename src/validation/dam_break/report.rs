@@ -32,8 +32,8 @@ pub fn section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool>
     );
     md.push_str(
         "| a/Δ | steps | most CG iterations | front speed dZ/dT, T 1.4-3.0 | measured | lead in T \
-         | H rms (shifted by the lead) | volume change | clipped | time | verdict |\n\
-         |---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n",
+         | H rms (shifted by the lead) | H rms (not shifted) | volume change | clipped | time | \
+         verdict |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n",
     );
     let mut all = true;
     for r in &runs {
@@ -42,7 +42,7 @@ pub fn section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool>
         all &= ok;
         let _ = writeln!(
             md,
-            "| {} | {} | {} | {:.3} | {:.3} | {:.3} | {:.3} | {:.1e} | {:.1e} | {:.0} s | {} |",
+            "| {} | {} | {} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.1e} | {:.1e} | {:.0} s | {} |",
             r.cells_per_a,
             r.steps,
             r.max_iterations,
@@ -50,6 +50,7 @@ pub fn section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool>
             v.speed.1,
             v.lead,
             v.height_rms,
+            v.height_rms_unshifted,
             r.volume_change,
             r.clipped,
             r.seconds,
