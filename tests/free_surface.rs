@@ -187,6 +187,13 @@ fn air_and_water_in_a_scenario_are_checked_by_key() {
         "ai",
         "unknown",
     );
+    // Spheres in water under air: refused until the coupling with the mixture is built.
+    let wet = format!(
+        "{}\n[fluid.air]\nwater_level = 0.05\n",
+        riprap::validation::wet_rebound::SCENARIO
+    );
+    let e = built(&wet).err().expect("spheres with air are refused");
+    assert!(e.contains("fluid.air") && e.contains("not built yet"), "{e}");
 }
 
 /// A standing wave in a closed tank (the first sloshing mode, η = A cos(π x / L)): its period
