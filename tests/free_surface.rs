@@ -193,7 +193,10 @@ fn air_and_water_in_a_scenario_are_checked_by_key() {
         riprap::validation::wet_rebound::SCENARIO
     );
     let e = built(&wet).err().expect("spheres with air are refused");
-    assert!(e.contains("fluid.air") && e.contains("not built yet"), "{e}");
+    assert!(
+        e.contains("fluid.air") && e.contains("not built yet"),
+        "{e}"
+    );
 }
 
 /// A standing wave in a closed tank (the first sloshing mode, η = A cos(π x / L)): its period
