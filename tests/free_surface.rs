@@ -192,7 +192,9 @@ fn air_and_water_in_a_scenario_are_checked_by_key() {
         "{}\n[fluid.air]\nwater_level = 0.05\n",
         riprap::validation::wet_rebound::SCENARIO
     );
-    let e = built(&wet).err().expect("spheres with air are refused");
+    let e = built(&wet)
+        .map(|_| ())
+        .expect_err("spheres with air are refused");
     assert!(
         e.contains("fluid.air") && e.contains("not built yet"),
         "{e}"
