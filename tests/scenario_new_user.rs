@@ -202,10 +202,10 @@ fn contact_law_choices_reach_the_law_and_check_names_them() {
     assert!((ratio(&mindlin) - 1.5 / 1.75).abs() < 1e-15);
     assert!(report.contains("k_t/k_n = 0.857, Mindlin's"), "{report}");
     let (hm, report) = build_with("model = \"hertz_mindlin\"");
-    assert_eq!(hm.kind, LawKind::HertzMindlinCoulomb);
+    assert_eq!(hm.kind(), LawKind::HertzMindlinCoulomb);
     assert!(report.contains("Coulomb limit kept"), "{report}");
     let (liggghts, _) = build_with("model = \"hertz_mindlin_liggghts\"");
-    assert_eq!(liggghts.kind, LawKind::HertzMindlin);
+    assert_eq!(liggghts.kind(), LawKind::HertzMindlin);
     refused(
         &format!("{ONE_SPHERE}\n[contact]\nmodel = \"hertz_mindlin\"\ntangential_stiffness = \"mindlin\"\n"),
         "tangential_stiffness = ",
@@ -216,7 +216,7 @@ fn contact_law_choices_reach_the_law_and_check_names_them() {
     let hooke = "model = \"hooke_history\"\nnormal_stiffness = 2e3\ntangential_stiffness = 571.0\n\
                  normal_damping = 50.0\ntangential_damping = 25.0";
     let (law, report) = build_with(hooke);
-    assert_eq!(law.kind, LawKind::HookeHistory);
+    assert_eq!(law.kind(), LawKind::HookeHistory);
     assert!(report.contains("LAMMPS gran/hooke/history"), "{report}");
     refused(
         &format!(

@@ -82,8 +82,6 @@ impl Mixed {
 /// Everything the contact kernel needs for one pair of materials.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct PairLaw {
-    /// The law's kernel.
-    pub kind: LawKind,
     /// The law and its options.
     pub model: ContactModel,
     /// The pair's mixed material constants.
@@ -106,11 +104,15 @@ impl PairLaw {
     pub fn new(model: &ContactModel, a: &Material, b: &Material, over: PairOverride) -> PairLaw {
         let mixed = Mixed::new(a, b, over);
         PairLaw {
-            kind: model.kind(),
             model: *model,
             mixed,
             k: model.constants(&mixed),
         }
+    }
+
+    /// The law's kernel.
+    pub fn kind(&self) -> LawKind {
+        self.model.kind()
     }
 
     /// The friction coefficient μ of the pair [-].

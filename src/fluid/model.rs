@@ -129,7 +129,7 @@ pub struct Fluid {
     /// The scheme that carries α, with air.
     pub(super) interface: Option<Interface>,
     /// μ(α) + μ_SGS at cell centres [Pa s], with air ([`super::phases`]).
-    pub(super) viscosity_excess: Vec<f64>,
+    pub(super) stress_viscosity: Vec<f64>,
     /// What the interface scheme clipped back into [0, 1] since the fluid was made (not part
     /// of the state).
     pub(super) clipped: Clipped,
@@ -217,7 +217,7 @@ impl Fluid {
             pressure_seconds: 0.0,
             mixture_weight: true,
             interface: parameters.air.map(|_| Interface::new(grid, boundaries)),
-            viscosity_excess: if parameters.air.is_some() {
+            stress_viscosity: if parameters.air.is_some() {
                 grid.field()
             } else {
                 Vec::new()

@@ -11,7 +11,7 @@
 //! ρ enters [51] as ρ̄ does already, as the inertia (1/ρ̄_f on each face) and in the exact
 //! variable-density projection ([`super::pressure::pcg`]). The variable viscosity goes whole
 //! through the stress divergence of [`super::diffusion::subgrid`], ∇·(2 (μ + μ_SGS) S), and the
-//! Laplacian form of water's is left out ([`viscosity_excess`] gives μ + μ_SGS).
+//! Laplacian form of water's is left out ([`stress_viscosity`] gives μ + μ_SGS).
 //!
 //! p̄ stays the pressure less the hydrostatic pressure of water: in still air it grows upwards
 //! as (ρ_w − ρ_a) g z. [`hydrostatic`] sets it for a fluid at rest, so that a still tank starts
@@ -71,7 +71,7 @@ pub fn set_density(alpha: &[f64], rho_w: f64, air: &Air, rho: &mut [f64]) {
 
 /// The viscosity the stress-divergence term takes [Pa s]: μ(α) + μ_SGS (when given), ghosts
 /// filled.
-pub fn viscosity_excess(
+pub fn stress_viscosity(
     grid: &StaggeredGrid,
     bcs: &Boundaries,
     alpha: &[f64],

@@ -27,7 +27,7 @@ use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts}
 use super::forcing::body_acceleration;
 use super::grid::{shifted, update_rows};
 use super::model::Fluid;
-use super::phases::{set_density, viscosity_excess};
+use super::phases::{set_density, stress_viscosity};
 use super::pressure::{Passes, PressureFields};
 use super::sgs::eddy_viscosity;
 use super::tendency::tendency_row;
@@ -79,7 +79,7 @@ impl Fluid {
         if let Some(air) = &par.air {
             let sgs = par.smagorinsky.map(|_| &state.eddy_viscosity[..]);
             let alpha = &state.water_fraction;
-            viscosity_excess(&grid, &bcs, alpha, sgs, mu, air, &mut self.viscosity_excess);
+            stress_viscosity(&grid, &bcs, alpha, sgs, mu, air, &mut self.stress_viscosity);
         }
 
         // Hⁿ: advection and viscous stress divergence.
@@ -92,7 +92,7 @@ impl Fluid {
             // With air the whole viscosity μ(α) + μ_SGS goes through the stress divergence
             // and the Laplacian form of water's is off (`phases`).
             let (mu_t, sgs, mu) = match par.air {
-                Some(_) => (&self.viscosity_excess[..], true, 0.0),
+                Some(_) => (&self.stress_viscosity[..], true, 0.0),
                 None => (&state.eddy_viscosity[..], par.smagorinsky.is_some(), mu),
             };
             for (a, h) in self.tendency.iter_mut().enumerate() {

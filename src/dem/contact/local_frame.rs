@@ -212,7 +212,7 @@ mod tests {
     use super::*;
     use crate::dem::contact::Columns;
     use crate::dem::contact::{contact_force, Pair};
-    use crate::dem::material::{ContactModel, Damping, LawKind, Mixed, NormalSpring, PairLaw};
+    use crate::dem::material::{ContactModel, Damping, Mixed, NormalSpring, PairLaw};
     use crate::math::Vec3;
 
     /// xorshift64* with a fixed seed: the tests are deterministic.
@@ -357,7 +357,6 @@ mod tests {
                 friction: mu,
             };
             let law = PairLaw {
-                kind: LawKind::Linear,
                 model,
                 mixed: Mixed {
                     e_star: 1.0,

@@ -386,5 +386,5 @@ pub fn contact_force(law: &PairLaw, p: &Pair, hist: &mut Vec3, dt: f64) -> React
             force_of::<L>(self.0, self.1, self.2, self.3)
         }
     }
-    dispatch(law.kind, One(law, p, hist, dt))
+    dispatch(law.kind(), One(law, p, hist, dt))
 }

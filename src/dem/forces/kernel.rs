@@ -8,9 +8,9 @@ use super::super::material::{LawKind, PairLaw};
 /// they share a kind; a mix (set by hand through `Dem::laws`) is refused here, since the
 /// kernels run one law on whole columns of contacts.
 pub(super) fn uniform_kind(laws: &[PairLaw]) -> LawKind {
-    let kind = laws.first().map_or(LawKind::Hertz, |l| l.kind);
+    let kind = laws.first().map_or(LawKind::Hertz, |l| l.kind());
     assert!(
-        laws.iter().all(|l| l.kind == kind),
+        laws.iter().all(|l| l.kind() == kind),
         "the contact laws of one DEM must be of one kind (one `ContactModel`)"
     );
     kind
