@@ -130,6 +130,9 @@ pub struct Fluid {
     pub(super) interface: Option<Interface>,
     /// μ(α) + μ_SGS at cell centres [Pa s], with air ([`super::phases`]).
     pub(super) stress_viscosity: Vec<f64>,
+    /// ρ_f on the faces of each component [kg m⁻³], with air ([`super::phases::face_density`]),
+    /// derived from α at the start of each step.
+    pub(super) face_density: [Vec<f64>; 3],
     /// What the interface scheme clipped back into [0, 1] since the fluid was made (not part
     /// of the state).
     pub(super) clipped: Clipped,
@@ -222,6 +225,11 @@ impl Fluid {
             } else {
                 Vec::new()
             },
+            face_density: if parameters.air.is_some() {
+                zero3()
+            } else {
+                Default::default()
+            },
             clipped: Clipped::default(),
             last_solve: Solve::default(),
         };
@@ -270,9 +278,16 @@ impl Fluid {
             &air,
             &mut st.mixture_density,
         );
+        phases::face_density(
+            &g,
+            &st.water_fraction,
+            self.parameters.density,
+            &air,
+            &mut self.face_density,
+        );
         phases::hydrostatic(
             &g,
-            &st.mixture_density,
+            &self.face_density[2],
             self.parameters.density,
             self.parameters.gravity.z,
             &mut st.pressure,

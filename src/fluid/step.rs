@@ -27,10 +27,10 @@ use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts}
 use super::forcing::body_acceleration;
 use super::grid::{shifted, update_rows};
 use super::model::Fluid;
-use super::phases::{set_density, stress_viscosity};
+use super::phases::{face_density, set_density, stress_viscosity};
 use super::pressure::{Passes, PressureFields};
 use super::sgs::eddy_viscosity;
-use super::tendency::tendency_row;
+use super::tendency::{tendency_row, Inertia};
 
 /// Most passes of the variable-density projection on the first step: the error shrinks by
 /// 1 − ρ₀/ρ̄_max per pass, 0.62 for quartz in water, so 100 passes reach 1e-13 below
@@ -75,8 +75,16 @@ impl Fluid {
             eddy_viscosity(&grid, &bcs, model, mu, u, rho, &mut state.eddy_viscosity);
         }
 
-        // With air, the stress divergence carries μ(α) + μ_SGS (`phases`).
+        // With air, ρ_f on the faces from α, and the stress divergence carries μ(α) + μ_SGS
+        // (`phases`).
         if let Some(air) = &par.air {
+            face_density(
+                &grid,
+                &state.water_fraction,
+                rho_w,
+                air,
+                &mut self.face_density,
+            );
             let sgs = par.smagorinsky.map(|_| &state.eddy_viscosity[..]);
             let alpha = &state.water_fraction;
             stress_viscosity(&grid, &bcs, alpha, sgs, mu, air, &mut self.stress_viscosity);
@@ -96,8 +104,12 @@ impl Fluid {
                 None => (&state.eddy_viscosity[..], par.smagorinsky.is_some(), mu),
             };
             for (a, h) in self.tendency.iter_mut().enumerate() {
+                let inertia = match par.air {
+                    Some(_) => Inertia::Faces(&self.face_density[a]),
+                    None => Inertia::Cells(rho),
+                };
                 update_rows(&grid, &self.regions[a], h, |start, row| {
-                    tendency_row(&st, a, sgs, u, mu_t, rho, mu, start, row);
+                    tendency_row(&st, a, sgs, u, mu_t, inertia, mu, start, row);
                 });
             }
         }
@@ -129,9 +141,17 @@ impl Fluid {
                     let len = u_row.len();
                     let at = |f, off| shifted(f, start, off, len);
                     let (h, h_old, f) = (at(h, 0), at(h_old, 0), at(f, 0));
-                    let (rho_c, rho_m) = (at(rho, 0), at(rho, -sa));
+                    // ρ̄_f = (ρ̄[c] + ρ̄[c − s_a]) / 2 (interp_to_face), or with air ρ_f itself
+                    // (the mean of a row with itself is the row, to the bit).
+                    let (rho_c, rho_m) = match par.air {
+                        Some(_) => {
+                            let f = at(&self.face_density[a], 0);
+                            (f, f)
+                        }
+                        None => (at(rho, 0), at(rho, -sa)),
+                    };
                     for (i, u) in u_row.iter_mut().enumerate() {
-                        let rho_f = 0.5 * (rho_c[i] + rho_m[i]); // interp_to_face
+                        let rho_f = 0.5 * (rho_c[i] + rho_m[i]);
                         let ab2 = if first {
                             h[i]
                         } else {
@@ -168,8 +188,17 @@ impl Fluid {
         let (u, rho) = (&mut state.velocity, &state.mixture_density);
         if par.air.is_some() {
             // Air over water: the exact projection (`pressure::pcg`).
-            let solve =
-                (self.projection).project_exact(&grid, &bcs, &self.regions, u, fields, rho, dt, r);
+            let rho_f = &self.face_density;
+            let solve = (self.projection).project_exact(
+                &grid,
+                &bcs,
+                &self.regions,
+                u,
+                fields,
+                rho_f,
+                dt,
+                r,
+            );
             self.last_solve = solve;
         } else {
             self.projection

@@ -18,10 +18,19 @@
 use super::grid::{shifted, Stencil};
 use super::operators::Velocity;
 
+/// The density the viscous stress divergence is divided by on each face.
+#[derive(Clone, Copy)]
+pub enum Inertia<'a> {
+    /// ρ̄ at cell centres [kg m⁻³], averaged to the face (interp_to_face).
+    Cells(&'a [f64]),
+    /// ρ_f on the a-faces themselves [kg m⁻³] (water and air: `phases::face_density`).
+    Faces(&'a [f64]),
+}
+
 /// Writes H_a [m s⁻²] for the `out.len()` consecutive a-faces from padded index `start` on.
 ///
 /// `u` is the velocity with filled ghosts [m s⁻¹], `mu_t` μ_SGS at cell centres with filled
-/// ghosts [Pa s] (read only with `sgs`), `rho` ρ̄ at cell centres [kg m⁻³], `mu` the dynamic
+/// ghosts [Pa s] (read only with `sgs`), `rho` the density on the faces [kg m⁻³], `mu` the dynamic
 /// viscosity [Pa s]. The faces and all their neighbours must lie inside the padded fields.
 #[allow(clippy::too_many_arguments)]
 pub fn tendency_row(
@@ -30,7 +39,7 @@ pub fn tendency_row(
     sgs: bool,
     u: Velocity,
     mu_t: &[f64],
-    rho: &[f64],
+    rho: Inertia,
     mu: f64,
     start: usize,
     out: &mut [f64],
@@ -57,7 +66,7 @@ fn row<const A: usize, const SGS: bool>(
     st: &Stencil,
     u: Velocity,
     mu_t: &[f64],
-    rho: &[f64],
+    rho: Inertia,
     mu: f64,
     start: usize,
     out: &mut [f64],
@@ -79,9 +88,13 @@ fn row<const A: usize, const SGS: bool>(
     let vbma: [&[f64]; 3] = std::array::from_fn(|b| at(u[b], off(b, -sa)));
     let vbp: [&[f64]; 3] = std::array::from_fn(|b| at(u[b], off(b, s[b])));
     let vbpma: [&[f64]; 3] = std::array::from_fn(|b| at(u[b], off(b, s[b] - sa)));
-    let (r0, rma) = (at(rho, 0), at(rho, -sa));
+    // ρ̄_f = (r0 + rma) / 2: the mean of two cells, or of a face row with itself (exact).
+    let (r0, rma) = match rho {
+        Inertia::Cells(r) => (at(r, 0), at(r, -sa)),
+        Inertia::Faces(f) => (at(f, 0), at(f, 0)),
+    };
     // μ_SGS rows; without the model they are never read (any in-bounds row will do).
-    let m = if SGS { mu_t } else { rho };
+    let m = if SGS { mu_t } else { u[A] };
     let (m0, mma) = (at(m, 0), at(m, -sa));
     let mmb: [&[f64]; 3] = std::array::from_fn(|b| at(m, off(b, -s[b])));
     let mmamb: [&[f64]; 3] = std::array::from_fn(|b| at(m, off(b, -sa - s[b])));
@@ -165,7 +178,17 @@ mod tests {
                     for j in 1..=grid.n[1] {
                         let start = grid.index(lo, j, k);
                         let mut out = vec![0.0; grid.n[0] + 1 - lo];
-                        tendency_row(&st, a, sgs, u, &mu_t, &rho, mu, start, &mut out);
+                        tendency_row(
+                            &st,
+                            a,
+                            sgs,
+                            u,
+                            &mu_t,
+                            Inertia::Cells(&rho),
+                            mu,
+                            start,
+                            &mut out,
+                        );
                         for (i, h) in out.iter().enumerate() {
                             let c = start + i;
                             let mut viscous = molecular(&st, mu, u[a], c);

@@ -10,8 +10,9 @@
 //!   [`block_settling`], [`hopper_cloud`] and [`sheet_flow`];
 //! * beyond the source: [`wet_rebound`] (a sphere rebounding from a wall in a liquid, against
 //!   the measurements of Gondret et al. 2002), the lubrication film of wet contacts;
-//!   [`dam_break`] (a water column collapsing under air, against Martin & Moyce 1952), the
-//!   free surface.
+//!   [`dam_break`] (a water column collapsing under air, against Martin & Moyce 1952) and
+//!   [`standing_wave`] (the first sloshing mode of a tank, against linear theory), the free
+//!   surface.
 
 pub mod block_settling;
 pub mod cavity;
@@ -22,6 +23,7 @@ pub mod hopper_cloud;
 pub mod report;
 pub mod sheet_flow;
 pub mod sphere_drag;
+pub mod standing_wave;
 pub mod wet_rebound;
 
 pub use report::{run_validation, run_validation_cases, CASES};

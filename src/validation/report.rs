@@ -80,7 +80,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 13] = [
+pub const CASES: [&str; 14] = [
     "cavity",
     "channel",
     "sphere_drag",
@@ -89,6 +89,7 @@ pub const CASES: [&str; 13] = [
     "hopper_cloud",
     "wet_rebound",
     "dam_break",
+    "standing_wave",
     "sheet_flow",
     "sheet_flow_sensitivity",
     "sheet_flow_report",
@@ -137,6 +138,9 @@ pub fn run_validation_cases(
     }
     if run("dam_break") {
         all &= super::dam_break::report::section(out, quick, &mut md)?;
+    }
+    if run("standing_wave") {
+        all &= super::standing_wave::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
         all &= sections::ensemble(out, quick, case5, &mut md)?;

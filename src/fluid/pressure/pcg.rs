@@ -26,7 +26,7 @@ use rayon::prelude::*;
 
 use super::super::boundary::{fill_scalar_ghosts, Boundaries};
 use super::super::grid::{update_region, update_rows, IndexBox, StaggeredGrid, Stencil};
-use super::super::operators::{gradient, interp_to_face};
+use super::super::operators::gradient;
 use super::{copy_periodic_face, DivergenceRow, PressureFields, Projection};
 
 /// Relative residual ‖r‖₂/‖b‖₂ at which the iteration stops.
@@ -72,7 +72,7 @@ impl Projection {
         regions: &[IndexBox; 3],
         u: &mut [Vec<f64>; 3],
         p: PressureFields,
-        rho: &[f64],
+        rho_f: &[Vec<f64>; 3],
         dt: f64,
         r: f64,
     ) -> Solve {
@@ -99,7 +99,16 @@ impl Projection {
         let b_norm = dot(&self.rhs, &self.rhs, plane, &mut k.partial).sqrt();
 
         // r = b − A x₀.
-        apply(grid, bcs, regions, &st, rho, p.next, &mut self.q, &mut k.ad);
+        apply(
+            grid,
+            bcs,
+            regions,
+            &st,
+            rho_f,
+            p.next,
+            &mut self.q,
+            &mut k.ad,
+        );
         k.r.par_iter_mut()
             .zip(self.rhs.par_iter().zip(k.ad.par_iter()))
             .for_each(|(r, (b, a))| *r = b - a);
@@ -130,7 +139,7 @@ impl Projection {
                     bcs,
                     regions,
                     &st,
-                    rho,
+                    rho_f,
                     &k.padded,
                     &mut self.q,
                     &mut k.ad,
@@ -163,7 +172,7 @@ impl Projection {
             update_rows(grid, &regions[a], ua, |start, row| {
                 for (i, x) in row.iter_mut().enumerate() {
                     let c = start + i;
-                    *x -= dt / interp_to_face(&st, a, rho, c) * gradient(&st, a, p_next, c);
+                    *x -= dt / rho_f[a][c] * gradient(&st, a, p_next, c);
                 }
             });
         }
@@ -191,14 +200,14 @@ fn apply(
     bcs: &Boundaries,
     regions: &[IndexBox; 3],
     st: &Stencil,
-    rho: &[f64],
+    rho_f: &[Vec<f64>; 3],
     p: &[f64],
     q: &mut [Vec<f64>; 3],
     out: &mut [f64],
 ) {
     for (a, qa) in q.iter_mut().enumerate() {
         update_region(grid, &regions[a], qa, |c, _| {
-            gradient(st, a, p, c) / interp_to_face(st, a, rho, c)
+            gradient(st, a, p, c) / rho_f[a][c]
         });
         copy_periodic_face(grid, bcs, a, qa);
     }
