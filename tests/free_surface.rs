@@ -224,3 +224,69 @@ fn a_standing_wave_keeps_the_linear_period() {
     );
     assert!(passes(&r));
 }
+
+/// `[fluid.waves]` in a scenario (`examples/wave_flume.toml`): the flume the flow gets, and
+/// bad input refused by key.
+#[test]
+fn a_wave_flume_in_a_scenario_is_checked_by_key() {
+    use riprap::scenario::{build, Source};
+    let example = include_str!("../examples/wave_flume.toml");
+    let dir = std::env::temp_dir();
+    let built = |text: &str| -> Result<Fluid, String> {
+        let src = Source::from_str(text, "case.toml", dir.clone()).map_err(|e| e.to_string())?;
+        let b = build(&src).map_err(|e| e.to_string())?;
+        Ok(b.simulation.fluid.unwrap())
+    };
+    let f = built(example).unwrap();
+    let flume = f.flume().expect("the example is a flume");
+    assert_eq!(flume.still_water_level, 0.4);
+    // L = 1.4637 m: the generating zone one wavelength from x = 0, the absorbing one 1.5
+    // wavelengths before the far end.
+    let g = flume.generation.unwrap();
+    assert_eq!(g.outer, 0.0);
+    assert!((g.inner - 1.4637).abs() < 1e-3, "{g:?}");
+    let a = flume.absorption.unwrap();
+    assert!((a.outer - a.inner - 1.5 * 1.4637).abs() < 2e-3, "{a:?}");
+    // The still water at t = 0: the gauge reads the level.
+    assert!((f.surface_height(5.0, 0.01) - 0.4).abs() < 1e-12);
+    let refused = |from: &str, to: &str, key: &str, words: &str| {
+        let text = example.replace(from, to);
+        assert_ne!(text, example, "{from}");
+        let e = built(&text)
+            .err()
+            .unwrap_or_else(|| panic!("accepted: {to}"));
+        assert!(e.contains(key) && e.contains(words), "{e}");
+    };
+    refused(
+        "height = 0.04 ",
+        "height = 0.3 ",
+        "fluid.waves.height",
+        "breaking limit",
+    );
+    refused(
+        "absorption_length = 1.5 ",
+        "absorption_length = 7.5 ",
+        "fluid.waves.generation_length",
+        "fill",
+    );
+    // Water from a box, not a level: the flume has no still level to relax towards.
+    let boxed = example.replace("water_level = 0.4 ", "").replace(
+        "[fluid.waves]",
+        "[[fluid.water]]\nmin = [0.0, -1.0, 0.0]\nmax = [11.71, 1.0, 0.4]\n[fluid.waves]",
+    );
+    let e = built(&boxed)
+        .map(|_| ())
+        .expect_err("a flume without a level");
+    assert!(
+        e.contains("fluid.waves") && e.contains("water_level"),
+        "{e}"
+    );
+    refused(
+        "periodic = [false, true, false]",
+        "periodic = [true, true, false]",
+        "x_",
+        "",
+    );
+    refused("ramp_periods = 2.0", "ramp = 2.0", "ramp", "unknown");
+    refused("theory = \"linear\"", "theory = \"stokes5\"", "theory", "");
+}

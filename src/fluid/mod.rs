@@ -45,6 +45,7 @@ pub mod advection;
 pub mod boundary;
 pub mod diagnostics;
 pub mod diffusion;
+pub mod flume;
 pub mod forcing;
 pub mod grid;
 pub mod interface;

@@ -130,6 +130,8 @@ pub struct Fluid {
     pub(super) interface: Option<Interface>,
     /// μ(α) + μ_SGS at cell centres [Pa s], with air ([`super::phases`]).
     pub(super) stress_viscosity: Vec<f64>,
+    /// Waves in and out through relaxation zones, with air ([`Fluid::set_flume`]).
+    pub(super) flume: Option<super::flume::Flume>,
     /// ρ_f on the faces of each component [kg m⁻³], with air ([`super::phases::face_density`]),
     /// derived from α at the start of each step.
     pub(super) face_density: [Vec<f64>; 3],
@@ -225,6 +227,7 @@ impl Fluid {
             } else {
                 Vec::new()
             },
+            flume: None,
             face_density: if parameters.air.is_some() {
                 zero3()
             } else {
@@ -295,6 +298,44 @@ impl Fluid {
         fill_scalar_ghosts(&g, &self.boundaries, &mut st.pressure);
         st.previous_pressure.copy_from_slice(&st.pressure);
         Ok(())
+    }
+
+    /// Makes the flow a wave flume: waves generated and absorbed in relaxation zones at the
+    /// ends along x ([`super::flume`]). Needs air.
+    pub fn set_flume(&mut self, flume: super::flume::Flume) -> Result<(), String> {
+        if self.parameters.air.is_none() {
+            return Err("a wave flume needs air (FluidParameters::air)".into());
+        }
+        self.flume = Some(flume);
+        Ok(())
+    }
+
+    /// The flume, if the flow is one.
+    pub fn flume(&self) -> Option<&super::flume::Flume> {
+        self.flume.as_ref()
+    }
+
+    /// The height of the water's surface [m] over the point (x, y) of the bed: the bottom of
+    /// the flow plus the water in the column, Σ α Δz, linear in x between the centres of the
+    /// two nearest columns (a wave gauge). 0 without air.
+    pub fn surface_height(&self, x: f64, y: f64) -> f64 {
+        let (g, a) = (&self.grid, &self.state.water_fraction);
+        if a.is_empty() {
+            return 0.0;
+        }
+        let column =
+            |i: usize, j: usize| (0..g.n[2]).map(|k| a[g.cell(i, j, k)]).sum::<f64>() * g.spacing.z;
+        let cell = |v: f64, d: usize| ((v - g.origin[d]) / g.spacing[d] - 0.5).max(0.0);
+        let j = (cell(y, 1) + 0.5).floor().min((g.n[1] - 1) as f64) as usize;
+        let s = cell(x, 0).min((g.n[0] - 1) as f64);
+        let i = (s.floor() as usize).min(g.n[0].saturating_sub(2));
+        let f = (s - i as f64).clamp(0.0, 1.0);
+        let hi = if g.n[0] > 1 {
+            column(i + 1, j)
+        } else {
+            column(i, j)
+        };
+        g.origin.z + (1.0 - f) * column(i, j) + f * hi
     }
 
     /// The water's volume Σ α V over the interior cells, summed in storage order [m³] (0

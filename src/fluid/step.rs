@@ -205,6 +205,11 @@ impl Fluid {
                 .project(&grid, &bcs, &self.regions, u, fields, rho, dt, r, passes);
         }
         self.pressure_seconds += clock.elapsed().as_secs_f64();
+        // A flume's zones blend uⁿ⁺¹ towards their targets (`flume`; after the projection:
+        // u* holds the weight that the pressure balances, which a blend would break).
+        if let Some(flume) = &self.flume {
+            flume.relax_velocity(&grid, &self.regions, &mut state.velocity, t + dt);
+        }
         fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
 
         // With air: α carried by uⁿ⁺¹, then ρ̄ from it for the next step.
@@ -213,6 +218,9 @@ impl Fluid {
             let c = interface.advect(alpha, &state.velocity, dt, state.steps);
             self.clipped.above += c.above;
             self.clipped.below += c.below;
+            if let Some(flume) = &self.flume {
+                flume.relax_water_fraction(&grid, alpha, t + dt);
+            }
             fill_scalar_ghosts(&grid, &bcs, alpha);
             set_density(alpha, rho_w, air, &mut state.mixture_density);
         }

@@ -12,7 +12,8 @@
 //!   the measurements of Gondret et al. 2002), the lubrication film of wet contacts;
 //!   [`dam_break`] (a water column collapsing under air, against Martin & Moyce 1952) and
 //!   [`standing_wave`] (the first sloshing mode of a tank, against linear theory), the free
-//!   surface.
+//!   surface; [`regular_waves`] (a wave generated, carried five wavelengths and absorbed),
+//!   the wave flume.
 
 pub mod block_settling;
 pub mod cavity;
@@ -20,6 +21,7 @@ pub mod channel180;
 pub mod cylinder_strouhal;
 pub mod dam_break;
 pub mod hopper_cloud;
+pub mod regular_waves;
 pub mod report;
 pub mod sheet_flow;
 pub mod sphere_drag;

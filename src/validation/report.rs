@@ -80,7 +80,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 14] = [
+pub const CASES: [&str; 15] = [
     "cavity",
     "channel",
     "sphere_drag",
@@ -90,6 +90,7 @@ pub const CASES: [&str; 14] = [
     "wet_rebound",
     "dam_break",
     "standing_wave",
+    "regular_waves",
     "sheet_flow",
     "sheet_flow_sensitivity",
     "sheet_flow_report",
@@ -141,6 +142,9 @@ pub fn run_validation_cases(
     }
     if run("standing_wave") {
         all &= super::standing_wave::report::section(out, quick, &mut md)?;
+    }
+    if run("regular_waves") {
+        all &= super::regular_waves::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
         all &= sections::ensemble(out, quick, case5, &mut md)?;

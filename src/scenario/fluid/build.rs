@@ -78,6 +78,15 @@ pub(in crate::scenario) fn build_fluid(
     }
     samples(src, f, lo, hi)?;
     let phases = super::air::phases(src, f, density, lo, hi, !radii.is_empty())?;
+    let waves = super::waves::waves(
+        src,
+        f,
+        &boundaries,
+        phases.as_ref().and_then(|p| p.level),
+        lo,
+        hi,
+        gravity.length(),
+    )?;
 
     let parameters = FluidParameters {
         density,
@@ -97,6 +106,11 @@ pub(in crate::scenario) fn build_fluid(
         if let Some(p) = &phases {
             p.fill(&mut fluid)
                 .map_err(|e| src.invalid("fluid.air", e))?;
+        }
+        if let Some(w) = &waves {
+            fluid
+                .set_flume(w.flume.clone())
+                .map_err(|e| src.invalid("fluid.waves", e))?;
         }
         let open = boundaries
             .faces
@@ -120,7 +134,11 @@ pub(in crate::scenario) fn build_fluid(
             .iter()
             .map(|b| b.1[2])
             .fold(p.level.unwrap_or(lo.z), f64::max);
-        let fall = 2.0 * (gravity.length() * (top.min(hi.z) - lo.z)).sqrt();
+        // In a wave flume with no boxes the water does not fall: the waves' phase speed.
+        let fall = match &waves {
+            Some(w) if p.boxes.is_empty() => w.phase_speed(),
+            _ => 2.0 * (gravity.length() * (top.min(hi.z) - lo.z)).sqrt(),
+        };
         for a in 0..3 {
             if grid.n[a] > 4 {
                 scale[a] = scale[a].max(fall);
@@ -186,6 +204,7 @@ pub(in crate::scenario) fn build_fluid(
         stirred: None,
         phases: surface,
         water_volume,
+        waves,
     };
     Ok(Some((fluid, derived)))
 }

@@ -26,6 +26,14 @@
 //! water_level = 0.3                # m, water below it at the start
 //! density = 1.204                  # kg/m3 (default); dynamic_viscosity = 1.813e-5 Pa s
 //!
+//! [fluid.waves]                    # a wave flume along x (needs water_level; x faces walls)
+//! theory = "linear"                # "linear", "stokes2" or "cnoidal"
+//! height = 0.04                    # m
+//! period = 1.0                     # s
+//! generation_length = 1.0          # wavelengths at x = min (default 1)
+//! absorption_length = 1.5          # wavelengths at x = max (default 1.5; 0: none)
+//! ramp_periods = 2.0               # ramp-up from rest (default 2)
+//!
 //! [[fluid.water]]                  # and/or boxes of water at the start (a dam break)
 //! min = [0.0, 0.0, 0.0]
 //! max = [0.057, 0.1, 0.114]
@@ -44,10 +52,12 @@
 mod air;
 mod build;
 mod report;
+mod waves;
 
 pub use air::Phases;
 pub(super) use build::build_fluid;
 pub use report::{note_coupling, FluidDerived, CELLS_PER_DIAMETER};
+pub use waves::{Theory, Waves, WavesSection};
 
 use serde::{Deserialize, Serialize};
 
@@ -106,6 +116,8 @@ pub struct FluidSection {
     /// Boxes of water at the start, with air.
     #[serde(default)]
     pub water: Vec<WaterSection>,
+    /// A wave flume: waves generated at x = min and absorbed at x = max, with air.
+    pub waves: Option<WavesSection>,
 }
 
 /// `[fluid.air]`: water under air, with a free surface between them.

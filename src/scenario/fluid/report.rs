@@ -53,6 +53,8 @@ pub struct FluidDerived {
     pub stirred: Option<(f64, f64)>,
     /// Air over the water, and the free-surface limit on the step at rest [s].
     pub phases: Option<(Phases, f64)>,
+    /// The wave flume, with `[fluid.waves]`.
+    pub waves: Option<super::Waves>,
     /// The water's volume at the start [m³] (the box's, without air).
     pub water_volume: f64,
 }
@@ -255,6 +257,9 @@ impl FluidDerived {
                     ""
                 }
             );
+        }
+        if let Some(w) = &self.waves {
+            s.push_str(&w.describe(g, self.fluid_step));
         }
         let _ = match (p.driving_pressure_gradient, self.oscillatory_peak) {
             (

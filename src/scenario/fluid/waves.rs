@@ -1,0 +1,249 @@
+//! `[fluid.waves]`: a wave flume along x, checked, its flume for the flow, and what `check`
+//! prints about the wave.
+
+use std::fmt::Write as _;
+
+use serde::{Deserialize, Serialize};
+
+use super::FluidSection;
+use crate::fluid::flume::Flume;
+use crate::fluid::waves::{miche_limit, ursell, Cnoidal, Regular, RelaxationZone, Wave};
+use crate::fluid::{Boundaries, StaggeredGrid};
+use crate::math::Vec3;
+use crate::scenario::checks::positive;
+use crate::scenario::{ScenarioError, Source};
+
+/// `[fluid.waves]`: waves generated at x = min and absorbed at x = max.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WavesSection {
+    /// The wave theory: "linear", "stokes2" or "cnoidal".
+    pub theory: Theory,
+    /// Wave height H [m].
+    pub height: f64,
+    /// Wave period T [s].
+    pub period: f64,
+    /// The generating zone's length at x = min [wavelengths] (default 1).
+    pub generation_length: Option<f64>,
+    /// The absorbing zone's length at x = max [wavelengths] (default 1.5; 0: none, a wall).
+    pub absorption_length: Option<f64>,
+    /// The ramp-up from rest [periods] (default 2).
+    pub ramp_periods: Option<f64>,
+}
+
+/// The theories a scenario can name.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Theory {
+    /// Airy.
+    Linear,
+    /// Stokes, second order.
+    Stokes2,
+    /// Cnoidal, first order.
+    Cnoidal,
+}
+
+/// The checked flume and the figures `check` prints.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Waves {
+    /// The flume the flow gets.
+    pub flume: Flume,
+    /// The theory named.
+    pub theory: Theory,
+    /// H [m], T [s], h [m], L [m], k [m⁻¹].
+    pub height: f64,
+    /// See [`Waves::height`].
+    pub period: f64,
+    /// See [`Waves::height`].
+    pub depth: f64,
+    /// See [`Waves::height`].
+    pub wavelength: f64,
+    /// Zone lengths [wavelengths].
+    pub zones: (f64, f64),
+}
+
+/// Checks `[fluid.waves]` for the flow box [lo, hi] with still water at `level` [m].
+pub(super) fn waves(
+    src: &Source,
+    f: &FluidSection,
+    bcs: &Boundaries,
+    level: Option<f64>,
+    lo: Vec3,
+    hi: Vec3,
+    g: f64,
+) -> Result<Option<Waves>, ScenarioError> {
+    let Some(w) = &f.waves else {
+        return Ok(None);
+    };
+    let Some(level) = level else {
+        return Err(src.invalid(
+            "fluid.waves",
+            "a wave flume needs still water under air: give [fluid.air] water_level",
+        ));
+    };
+    if bcs.is_periodic(0) {
+        return Err(src.invalid(
+            "fluid.boundaries.x_min",
+            "a wave flume runs along x between walls: the x faces must not be periodic (give \
+             x_min and x_max a kind of \"free_slip\" or \"wall\")",
+        ));
+    }
+    let h = level - lo.z;
+    let height = positive(src, "fluid.waves.height", w.height)?;
+    let period = positive(src, "fluid.waves.period", w.period)?;
+    let regular = Regular::new(height, period, h, g);
+    let (wave, wavelength) = match w.theory {
+        Theory::Linear => (
+            Wave::Linear(regular),
+            2.0 * std::f64::consts::PI / regular.k,
+        ),
+        Theory::Stokes2 => (
+            Wave::Stokes2(regular),
+            2.0 * std::f64::consts::PI / regular.k,
+        ),
+        Theory::Cnoidal => {
+            let c = Cnoidal::new(height, period, h, g).ok_or_else(|| {
+                src.invalid(
+                    "fluid.waves.theory",
+                    "the cnoidal theory has no solution for this wave (too short or too low \
+                     for it): use \"stokes2\" or \"linear\"",
+                )
+            })?;
+            (Wave::Cnoidal(c), c.wavelength)
+        }
+    };
+    let k = 2.0 * std::f64::consts::PI / wavelength;
+    let breaking = miche_limit(k, h);
+    if height >= breaking {
+        return Err(src.invalid(
+            "fluid.waves.height",
+            format!(
+                "{height} m is at or above the breaking limit of this wave (Miche: {breaking:.4} \
+                 m for L = {wavelength:.4} m in h = {h} m)"
+            ),
+        ));
+    }
+    if level + height > hi.z {
+        return Err(src.invalid(
+            "fluid.waves.height",
+            format!(
+                "the crests would reach the top of the flow box ({} m)",
+                hi.z
+            ),
+        ));
+    }
+    let generation = w.generation_length.unwrap_or(1.0);
+    let absorption = w.absorption_length.unwrap_or(1.5);
+    if !(generation.is_finite() && generation > 0.0) {
+        return Err(src.invalid(
+            "fluid.waves.generation_length",
+            format!("must be positive (wavelengths), got {generation}"),
+        ));
+    }
+    if !(absorption.is_finite() && absorption >= 0.0) {
+        return Err(src.invalid(
+            "fluid.waves.absorption_length",
+            format!("must be zero or positive (wavelengths), got {absorption}"),
+        ));
+    }
+    let length = hi.x - lo.x;
+    if (generation + absorption) * wavelength >= length {
+        return Err(src.invalid(
+            "fluid.waves.generation_length",
+            format!(
+                "the zones ({generation} + {absorption} wavelengths of {wavelength:.4} m) fill \
+                 the flume ({length} m): make it longer or the zones shorter"
+            ),
+        ));
+    }
+    let ramp = w.ramp_periods.unwrap_or(2.0);
+    if !(ramp.is_finite() && ramp >= 0.0) {
+        return Err(src.invalid(
+            "fluid.waves.ramp_periods",
+            format!("must be zero or positive, got {ramp}"),
+        ));
+    }
+    let flume = Flume {
+        wave,
+        still_water_level: level,
+        generation: Some(RelaxationZone {
+            inner: lo.x + generation * wavelength,
+            outer: lo.x,
+        }),
+        absorption: (absorption > 0.0).then_some(RelaxationZone {
+            inner: hi.x - absorption * wavelength,
+            outer: hi.x,
+        }),
+        ramp_time: ramp * period,
+    };
+    Ok(Some(Waves {
+        flume,
+        theory: w.theory,
+        height,
+        period,
+        depth: h,
+        wavelength,
+        zones: (generation, absorption),
+    }))
+}
+
+/// Where a wave of these figures lies on Le Méhauté's (1976) diagram, roughly: which theory
+/// describes it.
+fn validity(kh: f64, ursell: f64) -> &'static str {
+    if ursell > 26.0 {
+        "cnoidal (Ursell number above 26)"
+    } else if kh > std::f64::consts::PI {
+        "Stokes (deep water)"
+    } else {
+        "Stokes (intermediate depth)"
+    }
+}
+
+impl Waves {
+    /// The phase speed c = L/T [m s⁻¹]: the flow's velocity scale in a flume (water in a
+    /// wave short of breaking moves slower than its crests).
+    pub fn phase_speed(&self) -> f64 {
+        self.wavelength / self.period
+    }
+
+    /// The lines `riprap check` prints for the waves on `grid` with fluid step `step` [s].
+    pub fn describe(&self, grid: &StaggeredGrid, step: f64) -> String {
+        let mut s = String::new();
+        let (h, l, big_h) = (self.depth, self.wavelength, self.height);
+        let kh = 2.0 * std::f64::consts::PI / l * h;
+        let ur = ursell(big_h, l, h);
+        let _ = writeln!(
+            s,
+            "waves: {} theory, H = {big_h} m, T = {} s in h = {h} m: L = {l:.4} m, kh = {kh:.3}, \
+             H/L = {:.4}, H/h = {:.4}, Ursell number {ur:.2}; on Le Méhauté's diagram: {}",
+            match self.theory {
+                Theory::Linear => "linear",
+                Theory::Stokes2 => "Stokes second-order",
+                Theory::Cnoidal => "cnoidal",
+            },
+            self.period,
+            big_h / l,
+            big_h / h,
+            validity(kh, ur)
+        );
+        let (per_h, per_l) = (big_h / grid.spacing.z, l / grid.spacing.x);
+        let _ = writeln!(
+            s,
+            "waves: {per_h:.1} cells per H, {per_l:.1} per L, at most about {:.0} steps per period (at \
+             the velocity scale); zones {} L (generating) and {} L (absorbing); ramp over {:.1} s",
+            self.period / step,
+            self.zones.0,
+            self.zones.1,
+            self.flume.ramp_time
+        );
+        // (A hair under: the cell counts are rounded from the box.)
+        if per_h < 3.99 || per_l < 39.9 {
+            let _ = writeln!(
+                s,
+                "warning: below 4 cells per H or 40 per L, the resolution at which the \
+                 validation case regular_waves was run (src/validation/regular_waves/README.md)"
+            );
+        }
+        s
+    }
+}
