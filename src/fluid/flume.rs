@@ -1,15 +1,17 @@
 //! Waves in and out of the flow: relaxation zones at the ends of a flume along x (Jacobsen,
 //! Fuhrman & Fredsøe 2012), with water and air ([`super::phases`]).
 //!
-//! In a zone each step blends the flow towards a target: the velocity on the faces after the
-//! projection (the predictor's u* holds the weight that the pressure balances; blending it
-//! would break that balance), and the water fraction α of the cells after the surface is
-//! carried. What the blend leaves divergent in the zone the next projection takes out.
+//! In a zone each step blends the flow towards a target. The velocity on the faces is
+//! blended in the predictor, before the projection, with the step's own increment kept:
 //!
 //! ```text
-//! q ← w q_target + (1 − w) q        w = RelaxationZone::weight(x) ∈ [0, 1]
+//! u* ← u* + w (u_target − uⁿ)        α ← w α_target + (1 − w) α   (after α is carried)
 //! ```
 //!
+//! so that u* − uⁿ, which holds the air's weight that the pressure balances, is not blended
+//! away (blending u* itself made the air jump to 9 m/s in one step), and the projection makes
+//! the blended field divergence-free. Blending uⁿ⁺¹ after the projection instead gave the same
+//! waves (measured) but left the zones divergent for the surface's transport.
 //! w is 0 where a zone meets the computed flow and 1 at the flume's end ([`RelaxationZone`]).
 //! The target of the generating zone is the incoming wave ([`Wave`]): α the part of each cell
 //! below η(x, t) (the mean over four points across the cell), u the wave's velocity on the part
@@ -74,17 +76,21 @@ impl Flume {
         }
     }
 
-    /// Blends the velocity on the faces of `regions` towards the zones' targets at `t` [s].
+    /// Blends the velocity on the faces of `regions` towards the zones' targets at `t` [s]:
+    /// u ← u + w (u_target − u_prev) with `previous` the velocity before the step's increment
+    /// (module docs), or u ← w u_target + (1 − w) u without it.
     pub fn relax_velocity(
         &self,
         grid: &StaggeredGrid,
         regions: &[IndexBox; 3],
         u: &mut [Vec<f64>; 3],
+        previous: Option<&[Vec<f64>; 3]>,
         t: f64,
     ) {
         let dz = grid.spacing.z;
         for (a, ua) in u.iter_mut().enumerate() {
             update_region(grid, &regions[a], ua, |c, old| {
+                let base = previous.map_or(old, |v| v[a][c]);
                 let p = grid.position(c, Some(a));
                 let Some((w, target)) = self.zone(p.x) else {
                     return old;
@@ -105,7 +111,7 @@ impl Flume {
                         }
                     }
                 };
-                w * goal + (1.0 - w) * old
+                old + w * (goal - base)
             });
         }
     }
@@ -200,7 +206,7 @@ mod tests {
             std::array::from_fn(|_| std::array::from_fn(|d| 0..grid.padded()[d]));
         let mut u = [grid.field(), grid.field(), grid.field()];
         let t = 3.0; // ω t = 6π: the crest near x = 0
-        f.relax_velocity(&grid, &regions, &mut u, t);
+        f.relax_velocity(&grid, &regions, &mut u, None, t);
         // An x-face 0.1 m below the still surface in the first column: w u_wave.
         let c = grid.cell(1, 0, 15);
         let p = grid.position(c, Some(0));

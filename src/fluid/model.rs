@@ -132,6 +132,8 @@ pub struct Fluid {
     pub(super) stress_viscosity: Vec<f64>,
     /// Waves in and out through relaxation zones, with air ([`Fluid::set_flume`]).
     pub(super) flume: Option<super::flume::Flume>,
+    /// uⁿ, kept in a flume for the zones' blend of u* (empty otherwise).
+    pub(super) flume_velocity: [Vec<f64>; 3],
     /// ρ_f on the faces of each component [kg m⁻³], with air ([`super::phases::face_density`]),
     /// derived from α at the start of each step.
     pub(super) face_density: [Vec<f64>; 3],
@@ -228,6 +230,7 @@ impl Fluid {
                 Vec::new()
             },
             flume: None,
+            flume_velocity: Default::default(),
             face_density: if parameters.air.is_some() {
                 zero3()
             } else {
@@ -307,6 +310,8 @@ impl Fluid {
             return Err("a wave flume needs air (FluidParameters::air)".into());
         }
         self.flume = Some(flume);
+        let g = self.grid;
+        self.flume_velocity = [g.field(), g.field(), g.field()];
         Ok(())
     }
 

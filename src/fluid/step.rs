@@ -114,6 +114,13 @@ impl Fluid {
             }
         }
 
+        // A flume keeps uⁿ for its zones' blend.
+        if self.flume.is_some() {
+            for (keep, u) in self.flume_velocity.iter_mut().zip(&state.velocity) {
+                keep.copy_from_slice(u);
+            }
+        }
+
         // u* = uⁿ + Δt [AB2(H) + B].
         let drive = par
             .driving_pressure_gradient
@@ -164,6 +171,14 @@ impl Fluid {
             );
         }
 
+        // A flume's zones: u* += w (u_target − uⁿ), the blend of uⁿ towards the target with the
+        // step's own increment kept (it holds the weight the pressure balances), so that the
+        // projection makes the blended field divergence-free.
+        if let Some(flume) = &self.flume {
+            let prev = Some(&self.flume_velocity);
+            flume.relax_velocity(&grid, &self.regions, &mut state.velocity, prev, t + dt);
+        }
+
         // Boundary values at tⁿ⁺¹, then the projection. Without history (first step) p̂ = 0
         // would be a poor guess wherever ρ̄ varies: iterate the splitting to convergence.
         let passes = if first {
@@ -205,11 +220,6 @@ impl Fluid {
                 .project(&grid, &bcs, &self.regions, u, fields, rho, dt, r, passes);
         }
         self.pressure_seconds += clock.elapsed().as_secs_f64();
-        // A flume's zones blend uⁿ⁺¹ towards their targets (`flume`; after the projection:
-        // u* holds the weight that the pressure balances, which a blend would break).
-        if let Some(flume) = &self.flume {
-            flume.relax_velocity(&grid, &self.regions, &mut state.velocity, t + dt);
-        }
         fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
 
         // With air: α carried by uⁿ⁺¹, then ρ̄ from it for the next step.

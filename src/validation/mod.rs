@@ -29,3 +29,22 @@ pub mod standing_wave;
 pub mod wet_rebound;
 
 pub use report::{run_validation, run_validation_cases, CASES};
+
+use crate::fluid::phases::Air;
+use crate::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
+use crate::math::Vec3;
+
+/// The free-surface cases' flow: `cells` over a box of `size` [m] from the origin, a 2D
+/// slice (periodic in y), free-slip walls along x and z, water without a subgrid model under
+/// air at 20 °C, gravity `g` [m s⁻²] down z. The water is set by the case.
+pub fn slice_under_air(cells: [usize; 3], size: Vec3, g: f64) -> Fluid {
+    let grid = StaggeredGrid::new(cells, size, Vec3::ZERO);
+    let bcs = Boundaries::periodic()
+        .with(0, Boundary::FreeSlip, Boundary::FreeSlip)
+        .with(2, Boundary::FreeSlip, Boundary::FreeSlip);
+    let mut p = FluidParameters::water();
+    p.smagorinsky = None;
+    p.gravity = Vec3::new(0.0, 0.0, -g);
+    p.air = Some(Air::default());
+    Fluid::new(grid, bcs, p).expect("the slice is a valid fluid")
+}

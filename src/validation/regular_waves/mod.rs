@@ -7,9 +7,8 @@ pub mod report;
 use std::f64::consts::PI;
 
 use crate::fluid::flume::Flume;
-use crate::fluid::phases::Air;
 use crate::fluid::waves::{Regular, RelaxationZone, Wave};
-use crate::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
+use crate::fluid::Fluid;
 use crate::math::Vec3;
 
 /// Still-water depth h [m].
@@ -121,19 +120,8 @@ pub fn flume(res: Resolution) -> Fluid {
     let dz = HEIGHT / res.per_height as f64;
     let nz = ((DEPTH + AIR) / dz).round() as usize;
     let dx = length / nx as f64;
-    let grid = StaggeredGrid::new(
-        [nx, 1, nz],
-        Vec3::new(length, dx, nz as f64 * dz),
-        Vec3::ZERO,
-    );
-    let bcs = Boundaries::periodic()
-        .with(0, Boundary::FreeSlip, Boundary::FreeSlip)
-        .with(2, Boundary::FreeSlip, Boundary::FreeSlip);
-    let mut p = FluidParameters::water();
-    p.smagorinsky = None;
-    p.gravity = Vec3::new(0.0, 0.0, -G);
-    p.air = Some(Air::default());
-    let mut f = Fluid::new(grid, bcs, p).expect("the flume is a valid fluid");
+    let size = Vec3::new(length, dx, nz as f64 * dz);
+    let mut f = super::slice_under_air([nx, 1, nz], size, G);
     f.set_water_fraction(|lo, hi| ((DEPTH - lo[2]) / (hi[2] - lo[2])).clamp(0.0, 1.0))
         .expect("the flume has air");
     f.set_flume(Flume {

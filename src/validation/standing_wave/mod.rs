@@ -5,8 +5,7 @@ pub mod report;
 
 use std::f64::consts::PI;
 
-use crate::fluid::phases::Air;
-use crate::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
+use crate::fluid::Fluid;
 use crate::math::Vec3;
 
 /// The tank's length L [m] (half the wavelength: k = π/L).
@@ -78,19 +77,8 @@ impl Run {
 pub fn tank(n: usize) -> Fluid {
     let dx = LENGTH / n as f64;
     let nz = (HEIGHT / dx).round() as usize;
-    let grid = StaggeredGrid::new(
-        [n, 2, nz],
-        Vec3::new(LENGTH, 2.0 * dx, nz as f64 * dx),
-        Vec3::ZERO,
-    );
-    let bcs = Boundaries::periodic()
-        .with(0, Boundary::FreeSlip, Boundary::FreeSlip)
-        .with(2, Boundary::FreeSlip, Boundary::FreeSlip);
-    let mut p = FluidParameters::water();
-    p.smagorinsky = None;
-    p.gravity = Vec3::new(0.0, 0.0, -G);
-    p.air = Some(Air::default());
-    let mut f = Fluid::new(grid, bcs, p).expect("the tank is a valid fluid");
+    let size = Vec3::new(LENGTH, 2.0 * dx, nz as f64 * dx);
+    let mut f = super::slice_under_air([n, 2, nz], size, G);
     let k = wavenumber();
     f.set_water_fraction(|lo, hi| {
         let m = 16;
