@@ -226,9 +226,12 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             );
         }
     } else {
-        let samples: Vec<String> = (sc.fluid.iter())
+        let mut samples: Vec<String> = (sc.fluid.iter())
             .flat_map(|f| f.samples.iter().enumerate().map(|(i, s)| s.file_name(i)))
             .collect();
+        if sc.fluid.as_ref().is_some_and(|f| f.gauges.is_some()) {
+            samples.push(flow::GAUGES_FILE.to_string());
+        }
         let removed = owned::clear(&out, &samples)?;
         if opts.progress && !removed.is_empty() {
             eprintln!(
@@ -268,11 +271,10 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     };
     let mut reference =
         DisplacementReference::new(sc.output.displacement_reference_time, t0, &sim.rigid);
-    let samples = sc.fluid.as_ref().map_or(&[][..], |f| &f.samples[..]);
     let flow_interval = sc.output.flow_interval.unwrap_or(vtk_interval);
     let mut flow_out = FlowOutput::open(
         &sim,
-        samples,
+        sc.fluid.as_ref(),
         &out,
         resuming,
         kinds.flow.then_some(flow_interval),

@@ -547,3 +547,34 @@ fn probe_reports_the_hertz_contact_of_single_impact() {
     assert_eq!((last[count], last[delta], last[f_n]), (0.0, 0.0, 0.0));
     let _ = std::fs::remove_dir_all(&out_dir);
 }
+
+/// `[fluid.gauges]` writes `gauges.csv`: one row per gauge per time, the still water's
+/// surface at t = 0 (elevation 0 to round-off).
+#[test]
+fn a_wave_flume_writes_its_gauges() {
+    let dir = temp_dir("gauges");
+    let out = riprap(&[
+        "run",
+        path_str(&examples().join("wave_flume.toml")),
+        "--output",
+        path_str(&dir),
+        "--steps",
+        "5",
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let csv = std::fs::read_to_string(dir.join("gauges.csv")).unwrap();
+    let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
+    assert_eq!(
+        lines.next().unwrap(),
+        "time,gauge,x,y,surface_height,elevation"
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    // t = 0: three gauges over still water at 0.4 m.
+    assert!(rows.len() >= 3, "{csv}");
+    for (g, r) in rows[..3].iter().enumerate() {
+        assert_eq!((r[0], r[1]), (0.0, g as f64));
+        assert!((r[4] - 0.4).abs() < 1e-12 && r[5].abs() < 1e-12, "{r:?}");
+    }
+}

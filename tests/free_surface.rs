@@ -288,6 +288,18 @@ fn a_wave_flume_in_a_scenario_is_checked_by_key() {
         "",
     );
     refused("ramp_periods = 2.0", "ramp = 2.0", "ramp", "unknown");
+    refused(
+        "[2.927, 0.0183]",
+        "[20.0, 0.0183]",
+        "fluid.gauges.positions",
+        "outside the flow box",
+    );
+    refused(
+        "interval = 0.02 ",
+        "interval = -0.02 ",
+        "fluid.gauges.interval",
+        "",
+    );
     refused("theory = \"linear\"", "theory = \"stokes5\"", "theory", "");
 }
 

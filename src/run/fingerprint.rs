@@ -35,6 +35,7 @@ pub fn fingerprint(src: &Source, sim: &Simulation) -> Fingerprint {
     let fluid = sc.fluid.as_ref().map(|f| {
         let mut f = f.clone();
         f.samples.clear();
+        f.gauges = None;
         f
     });
 

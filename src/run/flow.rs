@@ -23,7 +23,7 @@ use crate::io::csv::CsvSeries;
 use crate::io::pvd::PvdSeries;
 use crate::io::vtk::{write_image, Array, Format};
 use crate::math::Vec3;
-use crate::scenario::fluid::{SampleKind, SampleSection};
+use crate::scenario::fluid::{FluidSection, SampleKind, SampleSection};
 use crate::simulation::Simulation;
 
 /// The fluid's columns of `series.csv`, after [`SERIES_COLUMNS`]: kinetic energy of the flow
@@ -35,6 +35,33 @@ pub const FLUID_SERIES_COLUMNS: [&str; 4] = [
     "fluid_max_divergence_after_projection",
     "fluid_time_step",
 ];
+
+/// The wave gauges' file (`[fluid.gauges]`).
+pub const GAUGES_FILE: &str = "gauges.csv";
+
+/// Columns of [`GAUGES_FILE`]: one row per gauge per time; `surface_height` [m] the height of
+/// the water's surface over (x, y), `elevation` [m] that less `[fluid.air] water_level` (NaN
+/// without one).
+pub const GAUGE_COLUMNS: [&str; 6] = ["time", "gauge", "x", "y", "surface_height", "elevation"];
+
+/// Wave gauges written on their schedule.
+struct Gauges {
+    positions: Vec<[f64; 2]>,
+    level: f64,
+    csv: CsvSeries,
+    schedule: Schedule,
+}
+
+impl Gauges {
+    fn write(&mut self, time: f64, fluid: &Fluid) -> std::io::Result<()> {
+        for (i, p) in self.positions.iter().enumerate() {
+            let z = fluid.surface_height(p[0], p[1]);
+            self.csv
+                .row(&[time, i as f64, p[0], p[1], z, z - self.level])?;
+        }
+        Ok(())
+    }
+}
 
 /// Columns of a sample file.
 pub const SAMPLE_COLUMNS: [&str; 13] = [
@@ -200,6 +227,7 @@ pub struct FlowOutput {
     dir: PathBuf,
     pvd: PvdSeries,
     samples: Vec<Sample>,
+    gauges: Option<Gauges>,
     /// When an image is due (`[output] flow_interval`).
     images: Schedule,
     format: Format,
@@ -208,12 +236,12 @@ pub struct FlowOutput {
 }
 
 impl FlowOutput {
-    /// Opens `flow.pvd` and the sample files in `dir` (resuming them at the simulation's time
-    /// when `resuming`), and, for a fresh run, writes the state at t = 0. Images follow
-    /// `interval` [s], in `format` (None: no images, the samples only).
+    /// Opens `flow.pvd`, the sample files and the gauges' file in `dir` (resuming them at the
+    /// simulation's time when `resuming`), and, for a fresh run, writes the state at t = 0.
+    /// Images follow `interval` [s], in `format` (None: no images, the samples only).
     pub fn open(
         sim: &Simulation,
-        sections: &[SampleSection],
+        section: Option<&FluidSection>,
         dir: &Path,
         resuming: bool,
         interval: Option<f64>,
@@ -229,6 +257,7 @@ impl FlowOutput {
         } else {
             PvdSeries::new(&pvd_path)
         };
+        let sections = section.map_or(&[][..], |f| &f.samples[..]);
         let mut samples = Vec::new();
         for (i, s) in sections.iter().enumerate() {
             let path = dir.join(s.file_name(i));
@@ -249,6 +278,27 @@ impl FlowOutput {
                 pending: false,
             });
         }
+        let gauges = match section.and_then(|f| f.gauges.as_ref().map(|g| (f, g))) {
+            Some((f, g)) => {
+                let path = dir.join(GAUGES_FILE);
+                let csv = if resuming {
+                    CsvSeries::resume(&path, &GAUGE_COLUMNS, t0)
+                } else {
+                    CsvSeries::create(&path, &GAUGE_COLUMNS)
+                }
+                .context("cannot open the gauges' file")?;
+                let mut schedule = Schedule::new(g.interval, 0.0, true);
+                schedule.start(t0, sim.step);
+                let level = f.air.as_ref().and_then(|a| a.water_level);
+                Some(Gauges {
+                    positions: g.positions.clone(),
+                    level: level.unwrap_or(f64::NAN),
+                    csv,
+                    schedule,
+                })
+            }
+            None => None,
+        };
         // No images: a schedule that never falls due.
         let mut images = Schedule::new(interval.unwrap_or(f64::INFINITY), 0.0, true);
         images.start(t0, sim.step);
@@ -256,6 +306,7 @@ impl FlowOutput {
             dir: dir.to_path_buf(),
             pvd,
             samples,
+            gauges,
             images,
             format,
             write_images: interval.is_some(),
@@ -268,6 +319,9 @@ impl FlowOutput {
             for s in &mut out.samples {
                 s.write(t0, &fields)?;
             }
+            if let Some(g) = &mut out.gauges {
+                g.write(t0, fluid)?;
+            }
         }
         Ok(Some(out))
     }
@@ -277,6 +331,11 @@ impl FlowOutput {
         let Some(fluid) = &sim.fluid else {
             return Ok(());
         };
+        if let Some(g) = &mut self.gauges {
+            if g.schedule.due(sim.time, sim.step) {
+                g.write(sim.time, fluid)?;
+            }
+        }
         let snapshot = self.images.due(sim.time, sim.step);
         let mut any = snapshot;
         for s in &mut self.samples {

@@ -77,6 +77,7 @@ pub(in crate::scenario) fn build_fluid(
         ));
     }
     samples(src, f, lo, hi)?;
+    gauges(src, f, lo, hi)?;
     let phases = super::air::phases(src, f, density, lo, hi, !radii.is_empty())?;
     let waves = super::waves::waves(
         src,
@@ -624,6 +625,36 @@ fn driving(src: &Source, f: &FluidSection) -> Result<DrivingPressureGradient, Sc
 }
 
 /// Samples: positive intervals, points inside the box, file names that are distinct and safe.
+/// Checks `[fluid.gauges]`: air, points inside the box, a positive interval.
+fn gauges(src: &Source, f: &FluidSection, lo: Vec3, hi: Vec3) -> Result<(), ScenarioError> {
+    let Some(g) = &f.gauges else {
+        return Ok(());
+    };
+    if f.air.is_none() {
+        return Err(src.invalid(
+            "fluid.gauges",
+            "a wave gauge reads the water surface: it needs [fluid.air]",
+        ));
+    }
+    positive(src, "fluid.gauges.interval", g.interval)?;
+    if g.positions.is_empty() {
+        return Err(src.invalid("fluid.gauges.positions", "give at least one (x, y)"));
+    }
+    for (i, p) in g.positions.iter().enumerate() {
+        let inside = (0..2).all(|a| p[a].is_finite() && lo[a] <= p[a] && p[a] <= hi[a]);
+        if !inside {
+            return Err(src.invalid(
+                "fluid.gauges.positions",
+                format!(
+                    "gauge {i} at ({}, {}) lies outside the flow box's x and y ({lo} to {hi})",
+                    p[0], p[1]
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
 fn samples(src: &Source, f: &FluidSection, lo: Vec3, hi: Vec3) -> Result<(), ScenarioError> {
     let mut files: Vec<String> = Vec::new();
     for (i, s) in f.samples.iter().enumerate() {

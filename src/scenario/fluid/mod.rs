@@ -34,6 +34,10 @@
 //! absorption_length = 1.5          # wavelengths at x = max (default 1.5; 0: none)
 //! ramp_periods = 2.0               # ramp-up from rest (default 2)
 //!
+//! [fluid.gauges]                   # wave gauges to gauges.csv (with air)
+//! positions = [[2.9, 0.0], [4.4, 0.0]]   # (x, y) [m]
+//! interval = 0.01                  # s
+//!
 //! [[fluid.water]]                  # and/or boxes of water at the start (a dam break)
 //! min = [0.0, 0.0, 0.0]
 //! max = [0.057, 0.1, 0.114]
@@ -118,6 +122,19 @@ pub struct FluidSection {
     pub water: Vec<WaterSection>,
     /// A wave flume: waves generated at x = min and absorbed at x = max, with air.
     pub waves: Option<WavesSection>,
+    /// Wave gauges: the surface's height at points of the bed, to `gauges.csv`, with air.
+    pub gauges: Option<GaugesSection>,
+}
+
+/// `[fluid.gauges]`: wave gauges, the water surface over points (x, y) written to
+/// `gauges.csv` (columns time, gauge, x, y, surface_height, elevation).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GaugesSection {
+    /// The gauges' points (x, y) [m], inside the flow box.
+    pub positions: Vec<[f64; 2]>,
+    /// Simulated time between rows [s].
+    pub interval: f64,
 }
 
 /// `[fluid.air]`: water under air, with a free surface between them.
