@@ -205,6 +205,7 @@ pub(in crate::scenario) fn build_fluid(
         stirred: None,
         phases: surface,
         water_volume,
+        gauges: f.gauges.as_ref().map(|g| (g.positions.len(), g.interval)),
         waves,
     };
     Ok(Some((fluid, derived)))

@@ -53,6 +53,8 @@ pub struct FluidDerived {
     pub stirred: Option<(f64, f64)>,
     /// Air over the water, and the free-surface limit on the step at rest [s].
     pub phases: Option<(Phases, f64)>,
+    /// Wave gauges and their interval [s], with `[fluid.gauges]`.
+    pub gauges: Option<(usize, f64)>,
     /// The wave flume, with `[fluid.waves]`.
     pub waves: Option<super::Waves>,
     /// The water's volume at the start [m³] (the box's, without air).
@@ -343,6 +345,9 @@ impl FluidDerived {
         }
         if self.samples > 0 {
             let _ = writeln!(s, "fluid samples: {} (CSV)", self.samples);
+        }
+        if let Some((n, dt)) = self.gauges {
+            let _ = writeln!(s, "wave gauges: {n}, every {dt} s to gauges.csv");
         }
         for w in self.warnings() {
             let _ = writeln!(s, "warning: {w}");
