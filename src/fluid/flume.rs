@@ -77,20 +77,19 @@ impl Flume {
     }
 
     /// Blends the velocity on the faces of `regions` towards the zones' targets at `t` [s]:
-    /// u ← u + w (u_target − u_prev) with `previous` the velocity before the step's increment
-    /// (module docs), or u ← w u_target + (1 − w) u without it.
+    /// u ← u + w (u_target − u_prev), `previous` the velocity before the step's increment
+    /// (module docs).
     pub fn relax_velocity(
         &self,
         grid: &StaggeredGrid,
         regions: &[IndexBox; 3],
         u: &mut [Vec<f64>; 3],
-        previous: Option<&[Vec<f64>; 3]>,
+        previous: &[Vec<f64>; 3],
         t: f64,
     ) {
         let dz = grid.spacing.z;
         for (a, ua) in u.iter_mut().enumerate() {
             update_region(grid, &regions[a], ua, |c, old| {
-                let base = previous.map_or(old, |v| v[a][c]);
                 let p = grid.position(c, Some(a));
                 let Some((w, target)) = self.zone(p.x) else {
                     return old;
@@ -111,7 +110,7 @@ impl Flume {
                         }
                     }
                 };
-                old + w * (goal - base)
+                old + w * (goal - previous[a][c])
             });
         }
     }
@@ -204,9 +203,11 @@ mod tests {
         let f = flume();
         let regions: [IndexBox; 3] =
             std::array::from_fn(|_| std::array::from_fn(|d| 0..grid.padded()[d]));
+        // From rest with no increment of its own: u becomes w u_wave.
         let mut u = [grid.field(), grid.field(), grid.field()];
+        let rest = u.clone();
         let t = 3.0; // ω t = 6π: the crest near x = 0
-        f.relax_velocity(&grid, &regions, &mut u, None, t);
+        f.relax_velocity(&grid, &regions, &mut u, &rest, t);
         // An x-face 0.1 m below the still surface in the first column: w u_wave.
         let c = grid.cell(1, 0, 15);
         let p = grid.position(c, Some(0));

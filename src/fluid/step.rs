@@ -175,7 +175,7 @@ impl Fluid {
         // step's own increment kept (it holds the weight the pressure balances), so that the
         // projection makes the blended field divergence-free.
         if let Some(flume) = &self.flume {
-            let prev = Some(&self.flume_velocity);
+            let prev = &self.flume_velocity;
             flume.relax_velocity(&grid, &self.regions, &mut state.velocity, prev, t + dt);
         }
 

@@ -34,6 +34,16 @@ use crate::fluid::phases::Air;
 use crate::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
 use crate::math::Vec3;
 
+/// The upward zero crossings of a record (t, y) after `after` [s], each by linear
+/// interpolation between its two samples [s].
+pub fn up_crossings(record: &[(f64, f64)], after: f64) -> Vec<f64> {
+    record
+        .windows(2)
+        .filter(|w| w[0].0 > after && w[0].1 < 0.0 && w[1].1 >= 0.0)
+        .map(|w| w[0].0 + (w[1].0 - w[0].0) * (-w[0].1) / (w[1].1 - w[0].1))
+        .collect()
+}
+
 /// The free-surface cases' flow: `cells` over a box of `size` [m] from the origin, a 2D
 /// slice (periodic in y), free-slip walls along x and z, water without a subgrid model under
 /// air at 20 °C, gravity `g` [m s⁻²] down z. The water is set by the case.

@@ -625,7 +625,6 @@ fn driving(src: &Source, f: &FluidSection) -> Result<DrivingPressureGradient, Sc
     })
 }
 
-/// Samples: positive intervals, points inside the box, file names that are distinct and safe.
 /// Checks `[fluid.gauges]`: air, points inside the box, a positive interval.
 fn gauges(src: &Source, f: &FluidSection, lo: Vec3, hi: Vec3) -> Result<(), ScenarioError> {
     let Some(g) = &f.gauges else {
@@ -656,6 +655,7 @@ fn gauges(src: &Source, f: &FluidSection, lo: Vec3, hi: Vec3) -> Result<(), Scen
     Ok(())
 }
 
+/// Samples: positive intervals, points inside the box, file names that are distinct and safe.
 fn samples(src: &Source, f: &FluidSection, lo: Vec3, hi: Vec3) -> Result<(), ScenarioError> {
     let mut files: Vec<String> = Vec::new();
     for (i, s) in f.samples.iter().enumerate() {

@@ -287,7 +287,8 @@ impl FluidDerived {
         let _ = writeln!(
             s,
             "fluid velocity scale: {} m/s (initial velocity and perturbation, oscillatory U_max, \
-             boundary velocities; with air, 2 √(g H) of the water's height H)",
+             boundary velocities; with air, 2 √(g H) of the water's height H, or in a wave flume the \
+             waves' phase speed)",
             vec4(self.velocity_scale)
         );
         let cfl = if self.cfl_step.is_finite() {

@@ -149,11 +149,7 @@ pub fn run_cylinder(case: &CylinderCase) -> CylinderResult {
         }
     }
     // Upward zero crossings of the lift after the spin-up, linearly interpolated.
-    let crossings: Vec<f64> = lift
-        .windows(2)
-        .filter(|w| w[0].0 > case.spin_up && w[0].1 < 0.0 && w[1].1 >= 0.0)
-        .map(|w| w[0].0 + (w[1].0 - w[0].0) * (-w[0].1) / (w[1].1 - w[0].1))
-        .collect();
+    let crossings = super::up_crossings(&lift, case.spin_up);
     let periods = crossings.len().saturating_sub(1);
     let strouhal = if periods > 0 {
         periods as f64 / (crossings[periods] - crossings[0])

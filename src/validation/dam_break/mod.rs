@@ -182,13 +182,7 @@ pub fn slope(rows: &[(f64, f64)], range: (f64, f64)) -> f64 {
         .copied()
         .filter(|p| (range.0..=range.1 + 1e-9).contains(&p.0))
         .collect();
-    let n = r.len() as f64;
-    let (mt, mz) = r
-        .iter()
-        .fold((0.0, 0.0), |(a, b), (t, z)| (a + t / n, b + z / n));
-    let num: f64 = r.iter().map(|(t, z)| (t - mt) * (z - mz)).sum();
-    let den: f64 = r.iter().map(|(t, _)| (t - mt) * (t - mt)).sum();
-    num / den
+    super::hopper_cloud::slope(&r)
 }
 
 /// What the case checks of a run (`README.md`).

@@ -9,7 +9,7 @@ use std::f64::consts::PI;
 use crate::fluid::flume::Flume;
 use crate::fluid::waves::{Regular, RelaxationZone, Wave};
 use crate::fluid::Fluid;
-use crate::math::Vec3;
+use crate::math::{Mat3, Vec3};
 
 /// Still-water depth h [m].
 pub const DEPTH: f64 = 0.4;
@@ -79,37 +79,15 @@ pub struct Run {
 /// The first harmonic of a record at ω over [t0, t1]: (amplitude [m], phase [rad]) of
 /// a cos(ωt − φ), by least squares with a mean.
 pub fn harmonic(record: &[(f64, f64)], omega: f64, t0: f64, t1: f64) -> (f64, f64) {
-    // Normal equations of η ≈ m + c cos ωt + s sin ωt.
-    let mut a = [[0.0; 3]; 3];
-    let mut b = [0.0; 3];
+    // Normal equations (Σ f fᵀ) x = Σ f η of η ≈ m + c cos ωt + s sin ωt, f = (1, cos, sin).
+    let (mut a, mut b) = (Mat3::ZERO, Vec3::ZERO);
     for &(t, eta) in record.iter().filter(|p| (t0..=t1).contains(&p.0)) {
-        let f = [1.0, (omega * t).cos(), (omega * t).sin()];
-        for i in 0..3 {
-            for j in 0..3 {
-                a[i][j] += f[i] * f[j];
-            }
-            b[i] += f[i] * eta;
-        }
+        let f = Vec3::new(1.0, (omega * t).cos(), (omega * t).sin());
+        a += Mat3::from_cols(f * f.x, f * f.y, f * f.z);
+        b += f * eta;
     }
-    let x = solve3(a, b);
-    ((x[1] * x[1] + x[2] * x[2]).sqrt(), x[2].atan2(x[1]))
-}
-
-/// Solves the 3×3 system a x = b by Cramer's rule.
-fn solve3(a: [[f64; 3]; 3], b: [f64; 3]) -> [f64; 3] {
-    let det = |m: [[f64; 3]; 3]| {
-        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
-            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
-    };
-    let d = det(a);
-    std::array::from_fn(|c| {
-        let mut m = a;
-        for r in 0..3 {
-            m[r][c] = b[r];
-        }
-        det(m) / d
-    })
+    let x = a.inverse() * b;
+    ((x.y * x.y + x.z * x.z).sqrt(), x.z.atan2(x.y))
 }
 
 /// The flume at `res`: generating zone, test section, absorbing zone along x; a 2D slice.

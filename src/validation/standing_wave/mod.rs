@@ -39,8 +39,6 @@ pub struct Run {
     pub cells_per_length: usize,
     /// (t [s], a [m]): the first mode's amplitude after every step.
     pub mode: Vec<(f64, f64)>,
-    /// Up-crossings of zero by the mode [s].
-    pub crossings: Vec<f64>,
     /// The fastest air (α < 0.01) and water (α > 0.99, 0.1 m or more below the still surface)
     /// over the run [m s⁻¹].
     pub max_air_speed: f64,
@@ -57,11 +55,16 @@ pub struct Run {
 }
 
 impl Run {
+    /// The mode's up-crossings of zero [s].
+    pub fn crossings(&self) -> Vec<f64> {
+        super::up_crossings(&self.mode, f64::NEG_INFINITY)
+    }
+
     /// The period: the mean interval between the first and the last up-crossing [s].
     pub fn period(&self) -> Option<f64> {
-        let (first, last) = (self.crossings.first()?, self.crossings.last()?);
-        let n = self.crossings.len() - 1;
-        (n > 0).then(|| (last - first) / n as f64)
+        let c = self.crossings();
+        let n = c.len().checked_sub(1).filter(|&n| n > 0)?;
+        Some((c[n] - c[0]) / n as f64)
     }
 
     /// The mode's largest |a| over the last period simulated, over A [-].
@@ -150,15 +153,10 @@ pub fn run(n: usize) -> Run {
     let v0 = f.water_volume();
     let t_end = PERIODS * linear_period();
     let mut mode = vec![(0.0, mode_amplitude(&f))];
-    let (mut crossings, mut max_air, mut max_water) = (Vec::new(), 0.0f64, 0.0f64);
+    let (mut max_air, mut max_water) = (0.0f64, 0.0f64);
     while f.time() < t_end {
         f.step_adaptive(t_end);
-        let (t1, a1) = (f.time(), mode_amplitude(&f));
-        let (t0, a0) = *mode.last().expect("the record starts at t = 0");
-        if a0 < 0.0 && a1 >= 0.0 {
-            crossings.push(t0 + (t1 - t0) * (-a0) / (a1 - a0));
-        }
-        mode.push((t1, a1));
+        mode.push((f.time(), mode_amplitude(&f)));
         let (air, water) = speeds(&f);
         (max_air, max_water) = (max_air.max(air), max_water.max(water));
     }
@@ -166,7 +164,6 @@ pub fn run(n: usize) -> Run {
     Run {
         cells_per_length: n,
         mode,
-        crossings,
         max_air_speed: max_air,
         max_water_speed: max_water,
         volume_change: (f.water_volume() - v0) / v0,
