@@ -15,11 +15,16 @@ use riprap::fluid::phases::{box_fraction, Air};
 use riprap::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
 use riprap::math::Vec3;
 
+#[allow(dead_code)]
 fn closed_box() -> Boundaries {
+    box_with_top(Boundary::FreeSlip)
+}
+
+fn box_with_top(top: Boundary) -> Boundaries {
     Boundaries::periodic()
         .with(0, Boundary::FreeSlip, Boundary::FreeSlip)
         .with(1, Boundary::FreeSlip, Boundary::FreeSlip)
-        .with(2, Boundary::WALL, Boundary::FreeSlip)
+        .with(2, Boundary::WALL, top)
 }
 
 fn water_and_air() -> FluidParameters {
@@ -39,9 +44,19 @@ fn max_speed(f: &Fluid) -> f64 {
 
 #[test]
 fn a_still_tank_stays_still() {
+    still_tank(Boundary::FreeSlip);
+}
+
+/// A tank open to the atmosphere at the top (p = 0 there) stays as still as a closed one.
+#[test]
+fn a_still_tank_open_at_the_top_stays_still() {
+    still_tank(Boundary::Open);
+}
+
+fn still_tank(top: Boundary) {
     // 0.2 m × 0.05 m × 0.4 m, Δ = 1 cm; the surface at z = 0.2031 m, inside a cell.
     let grid = StaggeredGrid::new([20, 5, 40], Vec3::new(0.2, 0.05, 0.4), Vec3::ZERO);
-    let mut f = Fluid::new(grid, closed_box(), water_and_air()).unwrap();
+    let mut f = Fluid::new(grid, box_with_top(top), water_and_air()).unwrap();
     let level = 0.2031;
     f.set_water_fraction(|lo, hi| box_fraction(lo, hi, [-1.0; 3], [1.0, 1.0, level]))
         .unwrap();
@@ -58,7 +73,7 @@ fn a_still_tank_stays_still() {
         .iter()
         .fold((1.0f64, 0.0f64), |(l, h), &x| (l.min(x), h.max(x)));
     eprintln!(
-        "still tank, 200 steps of 2 ms: largest |u| {worst:.3e} m/s, volume change {:.2e} of \
+        "still tank (top {top:?}), 200 steps of 2 ms: largest |u| {worst:.3e} m/s, volume change {:.2e} of \
          {v0:.3e} m³, α in [{lo:e}, {hi}], clipped {:?}",
         v1 - v0,
         f.clipped()
@@ -188,6 +203,29 @@ fn air_and_water_in_a_scenario_are_checked_by_key() {
         "[fluid.ai]\n[[fluid.water]]",
         "ai",
         "unknown",
+    );
+    // Open to the atmosphere: the top only, and only with air.
+    let open = SCENARIO.replace(
+        "z_max = { kind = \"free_slip\" }",
+        "z_max = { kind = \"open\" }",
+    );
+    assert_ne!(open, SCENARIO);
+    assert!(built(&open).unwrap().boundaries().open_top());
+    refused(
+        "x_max = { kind = \"free_slip\" }",
+        "x_max = { kind = \"open\" }",
+        "fluid.boundaries.x_max",
+        "only the top (z_max)",
+    );
+    let dry = open.replace(
+        "[fluid.air]                    # air at 20 °C (the defaults)\n",
+        "",
+    );
+    assert_ne!(dry, open);
+    let e = built(&dry).expect_err("an open top without air is refused");
+    assert!(
+        e.contains("fluid.boundaries.z_max") && e.contains("needs [fluid.air]"),
+        "{e}"
     );
     // Spheres in water under air: refused until the coupling with the mixture is built.
     let wet = format!(

@@ -13,10 +13,11 @@
 //! | free slip | 0 | u_g = u_1 (zero shear) |
 //! | inflow U_in(t) | U_in · n | u_g = 2 U_in − u_1 |
 //! | outflow | convective, see [`advance_outflow`] | u_g = u_1 (zero gradient) |
+//! | open (atmosphere) | moved by the projection | u_g = u_1 (zero gradient) |
 //!
 //! Scalars (pressure, density, eddy viscosity) get a periodic copy or a zero-gradient copy,
 //! which is the homogeneous Neumann condition the pressure equation has on every non-periodic
-//! boundary.
+//! boundary but an open one, where the pressure is zero on the face ([`fill_pressure_ghosts`]).
 //!
 //! Ghosts are filled axis after axis over the whole padded plane, so edge and corner ghosts end
 //! up defined (by the last axis) and deterministic.
@@ -82,6 +83,11 @@ pub enum Boundary {
     /// corrected uniformly so that the box conserves volume; tangential velocities have zero
     /// normal gradient.
     Outflow,
+    /// Open to the atmosphere, as the top of a laboratory flume: the pressure is zero on the
+    /// face, the normal velocity is what the projection makes it (air, or water, leaves and
+    /// enters freely), tangential velocities have zero normal gradient. Only at the top
+    /// (z high), and only with air (`FluidParameters::air`).
+    Open,
 }
 
 impl Boundary {
@@ -143,6 +149,13 @@ impl Boundaries {
                             NAMES[a]
                         ))
                     }
+                    Boundary::Open if a != 2 || side != "high" => {
+                        return Err(format!(
+                            "boundary {} {side}: only the top (z high) may be open to the \
+                             atmosphere",
+                            NAMES[a]
+                        ))
+                    }
                     _ => {}
                 }
             }
@@ -153,6 +166,11 @@ impl Boundaries {
     /// True when any face is an outflow.
     pub fn has_outflow(&self) -> bool {
         self.faces.iter().flatten().any(|b| *b == Boundary::Outflow)
+    }
+
+    /// True when the top is open to the atmosphere ([`Boundary::Open`]).
+    pub fn open_top(&self) -> bool {
+        self.faces[2][HIGH] == Boundary::Open
     }
 }
 
@@ -187,6 +205,18 @@ pub fn fill_scalar_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, f: &mut [f64])
     }
 }
 
+/// Fills the ghost values of the pressure: as [`fill_scalar_ghosts`], and at an open top the
+/// ghost is −p of the cell below, so that p = 0 on the face (linear interpolation).
+pub fn fill_pressure_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, p: &mut [f64]) {
+    fill_scalar_ghosts(grid, bcs, p);
+    if bcs.open_top() {
+        let (sz, nz) = (grid.strides()[2], grid.n[2]);
+        for_each_in_plane(grid, 2, |base| {
+            p[base + (nz + 1) * sz] = -p[base + nz * sz];
+        });
+    }
+}
+
 /// Sets the normal velocity on the boundary faces (walls, free slip, inflow at time `t`; outflow
 /// faces keep their value) and fills all velocity ghosts, as in the table of the module docs.
 pub fn fill_velocity_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec<f64>; 3], t: f64) {
@@ -209,7 +239,7 @@ pub fn fill_velocity_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec
                     let normal = match bc {
                         Boundary::Wall { .. } | Boundary::FreeSlip => Some(0.0),
                         Boundary::Inflow(v) => Some(v.at(t)[a]),
-                        Boundary::Outflow | Boundary::Periodic => None,
+                        Boundary::Outflow | Boundary::Open | Boundary::Periodic => None,
                     };
                     for_each_in_plane(grid, a, |base| {
                         if side == LOW {
@@ -241,7 +271,8 @@ pub fn fill_velocity_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec
 /// Advances the normal velocity on outflow faces over `dt` [s] by the convective condition
 /// ∂u_n/∂t + U_c ∂u_n/∂n = 0 (U_c > 0: the mean speed out of the face, upwind difference),
 /// then adds one uniform correction to all outflow faces so that the net volume flux through
-/// the boundary is zero (required by the pressure equation with Neumann conditions).
+/// the boundary is zero (required by the pressure equation with Neumann conditions; not made
+/// when the top is open, where the pressure is fixed and the volume free).
 ///
 /// `u` must have its ghosts filled at the old time; boundary faces that are not outflows must
 /// already hold their values at the new time.
@@ -307,7 +338,7 @@ pub fn advance_outflow(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec<f64>
             });
         }
     }
-    if outflow_area == 0.0 {
+    if outflow_area == 0.0 || bcs.open_top() {
         return;
     }
     // Pass 2: uniform outward correction δ so that the net outward flux is zero.

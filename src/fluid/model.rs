@@ -1,7 +1,9 @@
 //! `Fluid`: the grid, the boundaries, the physical parameters, the state and the workspace of
 //! the flow solver, with its accessors. The time step itself is in [`super::step`].
 
-use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts, Boundaries};
+use super::boundary::{
+    advance_outflow, fill_pressure_ghosts, fill_scalar_ghosts, fill_velocity_ghosts, Boundaries,
+};
 use super::forcing::DrivingPressureGradient;
 use super::grid::{IndexBox, StaggeredGrid, Stencil};
 use super::interface::{Clipped, Interface};
@@ -115,6 +117,8 @@ pub struct Fluid {
     pub(super) stencil: Stencil,
     /// Faces of each component that the time step updates (not boundary faces).
     pub(super) regions: [IndexBox; 3],
+    /// Faces the projection moves: `regions`, and the top faces when the top is open.
+    pub(super) projected: [IndexBox; 3],
     /// Hⁿ [m s⁻²], this step's tendency.
     pub(super) tendency: [Vec<f64>; 3],
     /// pⁿ⁺¹ being computed [Pa].
@@ -175,6 +179,9 @@ impl Fluid {
         if !(parameters.density > 0.0 && parameters.kinematic_viscosity >= 0.0) {
             return Err("fluid density must be positive and viscosity non-negative".into());
         }
+        if boundaries.open_top() && parameters.air.is_none() {
+            return Err("a top open to the atmosphere needs air (FluidParameters::air)".into());
+        }
         if let Some(air) = parameters.air {
             if !(air.density > 0.0 && air.density < parameters.density) {
                 return Err("air must be lighter than water, and of positive density".into());
@@ -211,6 +218,11 @@ impl Fluid {
                 lo..grid.n[a] + 1
             })
         });
+        // The projection also moves the top faces when the top is open (p = 0 there).
+        let mut projected: [IndexBox; 3] = regions.clone();
+        if boundaries.open_top() {
+            projected[2][2] = 2..grid.n[2] + 2;
+        }
         let mut fluid = Fluid {
             grid,
             boundaries,
@@ -218,6 +230,7 @@ impl Fluid {
             state,
             stencil: Stencil::new(&grid),
             regions,
+            projected,
             tendency: zero3(),
             next_pressure: grid.field(),
             projection: Projection::new(&grid, &boundaries),
@@ -296,9 +309,10 @@ impl Fluid {
             &self.face_density[2],
             self.parameters.density,
             self.parameters.gravity.z,
+            self.boundaries.open_top(),
             &mut st.pressure,
         );
-        fill_scalar_ghosts(&g, &self.boundaries, &mut st.pressure);
+        fill_pressure_ghosts(&g, &self.boundaries, &mut st.pressure);
         st.previous_pressure.copy_from_slice(&st.pressure);
         Ok(())
     }
@@ -507,7 +521,7 @@ impl Fluid {
         self.projection.project(
             &self.grid,
             &self.boundaries,
-            &self.regions,
+            &self.projected,
             &mut self.state.velocity,
             PressureFields {
                 current: &zero,

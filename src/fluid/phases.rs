@@ -141,8 +141,17 @@ pub fn stress_viscosity(
 /// The pressure p̄ [Pa] of a fluid at rest under gravity g_z [m s⁻²] along z, with `rho_z`
 /// the density on the z-faces ([`face_density`]): on each z-face
 /// (p̄_k − p̄_{k−1}) / Δz = (ρ_f − ρ_w) g_z, the discrete balance the momentum equation holds
-/// at rest; p̄ = 0 in the bottom cell of each column. Columns in parallel, each summed upwards.
-pub fn hydrostatic(grid: &StaggeredGrid, rho_z: &[f64], rho_w: f64, g_z: f64, p: &mut [f64]) {
+/// at rest; p̄ = 0 in the bottom cell of each column, or, with `open_top`, on the top face
+/// (where the ghost above is −p̄ of the top cell: [`super::boundary::fill_pressure_ghosts`]).
+/// Columns in parallel, each summed upwards.
+pub fn hydrostatic(
+    grid: &StaggeredGrid,
+    rho_z: &[f64],
+    rho_w: f64,
+    g_z: f64,
+    open_top: bool,
+    p: &mut [f64],
+) {
     let [sx, sy, sz] = grid.strides();
     let (nx, ny, nz) = (grid.n[0], grid.n[1], grid.n[2]);
     let dz = grid.spacing.z;
@@ -155,6 +164,12 @@ pub fn hydrostatic(grid: &StaggeredGrid, rho_z: &[f64], rho_w: f64, g_z: f64, p:
             for k in 1..nz {
                 let hi = base + (k + 1) * sz;
                 col[k] = col[k - 1] + dz * (rho_z[hi] - rho_w) * g_z;
+            }
+            if open_top {
+                // The balance on the top face, between the top cell and its ghost −p̄:
+                // (−p̄ − p̄)/Δz = (ρ_f − ρ_w) g_z.
+                let top = col[nz - 1] + 0.5 * dz * (rho_z[base + (nz + 1) * sz] - rho_w) * g_z;
+                col.iter_mut().for_each(|v| *v -= top);
             }
             (base, col)
         })

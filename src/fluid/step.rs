@@ -25,7 +25,7 @@
 
 use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts};
 use super::forcing::body_acceleration;
-use super::grid::{shifted, update_rows};
+use super::grid::{shifted, update_region, update_rows};
 use super::model::Fluid;
 use super::phases::{face_density, set_density, stress_viscosity};
 use super::pressure::{Passes, PressureFields};
@@ -171,6 +171,22 @@ impl Fluid {
             );
         }
 
+        // An open top's faces: w* = wⁿ + Δt B, the body force alone (no stencil reaches above
+        // them); the projection then moves them with the rest.
+        if bcs.open_top() {
+            let g_z = if self.mixture_weight {
+                par.gravity[2]
+            } else {
+                0.0
+            };
+            let mut top = self.projected[2].clone();
+            top[2] = grid.n[2] + 1..grid.n[2] + 2;
+            let (rho_f, f) = (&self.face_density[2], &state.body_force[2]);
+            update_region(&grid, &top, &mut state.velocity[2], |c, w| {
+                w + dt * body_acceleration(drive[2], rho_f[c], rho_w, g_z, f[c])
+            });
+        }
+
         // A flume's zones: u* += w (u_target − uⁿ), the blend of uⁿ towards the target with the
         // step's own increment kept (it holds the weight the pressure balances), so that the
         // projection makes the blended field divergence-free.
@@ -207,7 +223,7 @@ impl Fluid {
             let solve = (self.projection).project_exact(
                 &grid,
                 &bcs,
-                &self.regions,
+                &self.projected,
                 u,
                 fields,
                 rho_f,
@@ -217,7 +233,7 @@ impl Fluid {
             self.last_solve = solve;
         } else {
             self.projection
-                .project(&grid, &bcs, &self.regions, u, fields, rho, dt, r, passes);
+                .project(&grid, &bcs, &self.projected, u, fields, rho, dt, r, passes);
         }
         self.pressure_seconds += clock.elapsed().as_secs_f64();
         fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);

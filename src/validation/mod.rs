@@ -45,13 +45,14 @@ pub fn up_crossings(record: &[(f64, f64)], after: f64) -> Vec<f64> {
 }
 
 /// The free-surface cases' flow: `cells` over a box of `size` [m] from the origin, a 2D
-/// slice (periodic in y), free-slip walls along x and z, water without a subgrid model under
-/// air at 20 °C, gravity `g` [m s⁻²] down z. The water is set by the case.
-pub fn slice_under_air(cells: [usize; 3], size: Vec3, g: f64) -> Fluid {
+/// slice (periodic in y), free-slip walls along x and at the bottom, `top` above (a free-slip
+/// lid or open to the atmosphere), water without a subgrid model under air at 20 °C, gravity
+/// `g` [m s⁻²] down z. The water is set by the case.
+pub fn slice_under_air(cells: [usize; 3], size: Vec3, g: f64, top: Boundary) -> Fluid {
     let grid = StaggeredGrid::new(cells, size, Vec3::ZERO);
     let bcs = Boundaries::periodic()
         .with(0, Boundary::FreeSlip, Boundary::FreeSlip)
-        .with(2, Boundary::FreeSlip, Boundary::FreeSlip);
+        .with(2, Boundary::FreeSlip, top);
     let mut p = FluidParameters::water();
     p.smagorinsky = None;
     p.gravity = Vec3::new(0.0, 0.0, -g);

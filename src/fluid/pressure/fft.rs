@@ -1,5 +1,6 @@
 //! Direct solver of the discrete Poisson equation by eigen-decomposition: Fourier transforms
-//! along periodic axes, cosine transforms (DCT-II / DCT-III) along axes with Neumann walls.
+//! along periodic axes, cosine transforms (DCT-II / DCT-III) along axes with Neumann walls,
+//! quarter-wave cosine transforms (DCT-IV) along an axis open at its high end.
 //!
 //! The 7-point Laplacian L = D G of the staggered grid is a sum of one-dimensional second
 //! differences, L = L_x + L_y + L_z, each acting along one axis. Along an axis of n cells of
@@ -9,7 +10,11 @@
 //!   λ_k = −(4/h²) sin²(π k / n), k = 0 … n−1;
 //! * homogeneous Neumann at both ends (the boundary face velocity is fixed, so the projection
 //!   never moves it): the eigenvectors are cos(π k (m + ½) / n) (the DCT-II basis),
-//!   eigenvalues λ_k = −(4/h²) sin²(π k / (2n)).
+//!   eigenvalues λ_k = −(4/h²) sin²(π k / (2n));
+//! * Neumann at the low end, p = 0 on the high end's face (a top open to the atmosphere,
+//!   [`super::super::boundary::Boundary::Open`]): the eigenvectors are
+//!   cos(π (k + ½)(m + ½) / n) (the DCT-IV basis), eigenvalues
+//!   λ_k = −(4/h²) sin²(π (k + ½) / (2n)), none zero.
 //!
 //! So L p = f is solved exactly (to round-off) by transforming f along x, y and z, dividing
 //! each mode by λ_x + λ_y + λ_z, and transforming back; the single zero mode (the additive
@@ -27,7 +32,7 @@
 use super::PoissonSolver;
 use crate::fluid::grid::{for_each_chunk, SERIAL_BELOW};
 use rayon::prelude::*;
-use rustdct::{DctPlanner, TransformType2And3};
+use rustdct::{DctPlanner, TransformType2And3, TransformType4};
 use rustfft::num_complex::Complex;
 use rustfft::{Fft, FftPlanner};
 use std::f64::consts::PI;
@@ -40,6 +45,9 @@ pub enum AxisKind {
     Periodic,
     /// Homogeneous Neumann at both ends: cosine transform.
     Neumann,
+    /// Homogeneous Neumann at the low end, p = 0 on the high end's face: quarter-wave cosine
+    /// transform.
+    NeumannOpen,
 }
 
 /// How one axis is transformed.
@@ -50,6 +58,8 @@ enum Transform {
     Fourier(Arc<dyn Fft<f64>>, Arc<dyn Fft<f64>>),
     /// DCT-II forward, DCT-III inverse (unnormalised; a round trip multiplies by n/2).
     Cosine(Arc<dyn TransformType2And3<f64>>),
+    /// DCT-IV both ways (unnormalised; a round trip multiplies by n/2).
+    QuarterCosine(Arc<dyn TransformType4<f64>>),
 }
 
 /// Scratch space of one task: FFT scratch, one real line, the DCT scratch, and a block of
@@ -95,7 +105,11 @@ impl SpectralPoisson {
         let mut fft_scratch = 0;
         let mut dct_scratch = 0;
         let transforms = std::array::from_fn(|a| {
-            if n[a] == 1 {
+            if kinds[a] == AxisKind::NeumannOpen {
+                let d = dct_planner.plan_dct4(n[a]);
+                dct_scratch = dct_scratch.max(d.get_scratch_len());
+                Transform::QuarterCosine(d)
+            } else if n[a] == 1 {
                 Transform::Identity
             } else if kinds[a] == AxisKind::Periodic {
                 let f = fft_planner.plan_fft_forward(n[a]);
@@ -113,14 +127,16 @@ impl SpectralPoisson {
         let mut round_trip = 1.0;
         let eigenvalues = std::array::from_fn(|a| {
             let (len, h2) = (n[a], h[a] * h[a]);
-            let (arg, factor) = match (kinds[a], len) {
-                (_, 1) => (0.0, 1.0),
-                (AxisKind::Periodic, _) => (PI / len as f64, len as f64),
-                (AxisKind::Neumann, _) => (PI / (2.0 * len as f64), 0.5 * len as f64),
+            // λ_k = −(4/h²) sin²(arg (k + shift)).
+            let (arg, shift, factor) = match (kinds[a], len) {
+                (AxisKind::NeumannOpen, _) => (PI / (2.0 * len as f64), 0.5, 0.5 * len as f64),
+                (_, 1) => (0.0, 0.0, 1.0),
+                (AxisKind::Periodic, _) => (PI / len as f64, 0.0, len as f64),
+                (AxisKind::Neumann, _) => (PI / (2.0 * len as f64), 0.0, 0.5 * len as f64),
             };
             round_trip *= factor;
             (0..len)
-                .map(|k| -4.0 * (arg * k as f64).sin().powi(2) / h2)
+                .map(|k| -4.0 * (arg * (k as f64 + shift)).sin().powi(2) / h2)
                 .collect()
         });
         let complex = (0..3).any(|a| kinds[a] == AxisKind::Periodic && n[a] > 1);
@@ -167,7 +183,7 @@ fn transform_chunk(
             let plan = if forward { f } else { i };
             plan.process_with_scratch(chunk, fft);
         }
-        Transform::Cosine(d) => {
+        Transform::Cosine(_) | Transform::QuarterCosine(_) => {
             for z_line in chunk.chunks_mut(len) {
                 let parts = if complex { 2 } else { 1 };
                 for part in 0..parts {
@@ -175,10 +191,11 @@ fn transform_chunk(
                     for (x, z) in r.iter_mut().zip(z_line.iter()) {
                         *x = if part == 0 { z.re } else { z.im };
                     }
-                    if forward {
-                        d.process_dct2_with_scratch(r, dct);
-                    } else {
-                        d.process_dct3_with_scratch(r, dct);
+                    match transform {
+                        Transform::Cosine(d) if forward => d.process_dct2_with_scratch(r, dct),
+                        Transform::Cosine(d) => d.process_dct3_with_scratch(r, dct),
+                        Transform::QuarterCosine(d) => d.process_dct4_with_scratch(r, dct),
+                        _ => unreachable!("a cosine transform"),
                     }
                     for (z, x) in z_line.iter_mut().zip(r.iter()) {
                         if part == 0 {
@@ -368,7 +385,12 @@ mod tests {
                             let mut d = c;
                             let m = c[a] as i64 + step;
                             if m < 0 || m >= n[a] as i64 {
-                                if kinds[a] == AxisKind::Neumann {
+                                if kinds[a] == AxisKind::NeumannOpen && m >= n[a] as i64 {
+                                    // p = 0 on the face: the ghost is −p.
+                                    sum -= 2.0 * p[idx(i, j, k)] / (h[a] * h[a]);
+                                    continue;
+                                }
+                                if kinds[a] != AxisKind::Periodic {
                                     continue; // zero flux through the wall
                                 }
                                 d[a] = m.rem_euclid(n[a] as i64) as usize;
@@ -387,8 +409,11 @@ mod tests {
 
     #[test]
     fn inverts_the_discrete_laplacian_for_every_axis_kind() {
-        use AxisKind::{Neumann, Periodic};
+        use AxisKind::{Neumann, NeumannOpen, Periodic};
         for (n, kinds) in [
+            ([8, 1, 6], [Neumann, Periodic, NeumannOpen]),
+            ([6, 4, 1], [Periodic, Periodic, NeumannOpen]),
+            ([5, 3, 7], [Neumann, Neumann, NeumannOpen]),
             ([8, 6, 5], [Periodic, Periodic, Periodic]),
             ([8, 6, 5], [Neumann, Neumann, Neumann]),
             ([7, 1, 6], [Neumann, Periodic, Periodic]),
@@ -414,8 +439,11 @@ mod tests {
                 .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
             // Round-off of O(N log N) operations on O(1) data: 1e-12 relative is ~10⁴ ulps.
             assert!(err < 1e-12 * scale, "{kinds:?} {n:?}: residual {err:e}");
-            let p_mean = p.iter().sum::<f64>() / total as f64;
-            assert!(p_mean.abs() < 1e-12 * scale, "solution mean {p_mean:e}");
+            // With Neumann and periodic ends only, the solution is the one of zero mean.
+            if !kinds.contains(&NeumannOpen) {
+                let p_mean = p.iter().sum::<f64>() / total as f64;
+                assert!(p_mean.abs() < 1e-12 * scale, "solution mean {p_mean:e}");
+            }
         }
     }
 }

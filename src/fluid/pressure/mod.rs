@@ -25,7 +25,7 @@
 pub mod fft;
 pub mod pcg;
 
-use super::boundary::{fill_scalar_ghosts, Boundaries};
+use super::boundary::{fill_pressure_ghosts, Boundaries};
 use super::grid::{
     for_each_chunk, reduce_chunks, shifted, update_region, update_rows, IndexBox, StaggeredGrid,
     Stencil,
@@ -73,6 +73,8 @@ impl Projection {
         let kinds = std::array::from_fn(|a| {
             if bcs.is_periodic(a) {
                 AxisKind::Periodic
+            } else if a == 2 && bcs.open_top() {
+                AxisKind::NeumannOpen
             } else {
                 AxisKind::Neumann
             }
@@ -176,7 +178,7 @@ impl Projection {
             }
             self.solver.solve(&mut self.rhs);
             grid.scatter_interior(&self.rhs, p.next);
-            fill_scalar_ghosts(grid, bcs, p.next);
+            fill_pressure_ghosts(grid, bcs, p.next);
 
             // uⁿ⁺¹ = u* − (Δt/ρ₀)(G pⁿ⁺¹ − q).
             let p_next = &*p.next;

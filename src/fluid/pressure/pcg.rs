@@ -7,7 +7,8 @@
 //! measured it). With air the projection solves instead
 //!
 //! ```text
-//! A p = D u* / Δt ,     A p = D ( (1/ρ̄_f) G p )   (Neumann on walls, periodic where periodic)
+//! A p = D u* / Δt ,     A p = D ( (1/ρ̄_f) G p )   (Neumann on walls, periodic where periodic,
+//!                                                 p = 0 on an open top)
 //! uⁿ⁺¹ = u* − Δt (1/ρ̄_f) G p
 //! ```
 //!
@@ -24,7 +25,7 @@
 
 use rayon::prelude::*;
 
-use super::super::boundary::{fill_scalar_ghosts, Boundaries};
+use super::super::boundary::{fill_pressure_ghosts, Boundaries};
 use super::super::grid::{update_region, update_rows, IndexBox, StaggeredGrid, Stencil};
 use super::super::operators::gradient;
 use super::{copy_periodic_face, DivergenceRow, PressureFields, Projection};
@@ -94,7 +95,7 @@ impl Projection {
             .par_iter_mut()
             .enumerate()
             .for_each(|(c, x)| *x = (1.0 + r) * pn[c] - r * pm[c]);
-        fill_scalar_ghosts(grid, bcs, p.next);
+        fill_pressure_ghosts(grid, bcs, p.next);
         divergence(grid, &st, [&u[0], &u[1], &u[2]], 1.0 / dt, &mut self.rhs);
         let b_norm = dot(&self.rhs, &self.rhs, plane, &mut k.partial).sqrt();
 
@@ -133,7 +134,7 @@ impl Projection {
                     break;
                 }
                 grid.scatter_interior(&k.d, &mut k.padded);
-                fill_scalar_ghosts(grid, bcs, &mut k.padded);
+                fill_pressure_ghosts(grid, bcs, &mut k.padded);
                 apply(
                     grid,
                     bcs,
@@ -162,7 +163,7 @@ impl Projection {
                 solve.iterations += 1;
             }
             grid.scatter_interior(&x, p.next);
-            fill_scalar_ghosts(grid, bcs, p.next);
+            fill_pressure_ghosts(grid, bcs, p.next);
             self.rhs = x;
         }
 

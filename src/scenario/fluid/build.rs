@@ -324,7 +324,7 @@ fn boundaries(
             out.faces[a][side] = match section {
                 None if domain.periodic[a] => Boundary::Periodic,
                 None => Boundary::WALL,
-                Some(face) => face_boundary(src, &face_key(a, side), a, face)?,
+                Some(face) => face_boundary(src, &face_key(a, side), a, face, f)?,
             };
         }
         let [lo, hi] = out.faces[a];
@@ -337,6 +337,7 @@ fn boundaries(
                 Boundary::FreeSlip => "free_slip",
                 Boundary::Inflow(_) => "inflow",
                 Boundary::Outflow => "outflow",
+                Boundary::Open => "open",
             };
             let default = |s: usize| {
                 if sections[a][s].is_none() {
@@ -412,6 +413,7 @@ fn face_boundary(
     key: &str,
     a: usize,
     face: &FaceSection,
+    f: &FluidSection,
 ) -> Result<Boundary, ScenarioError> {
     let only = |what: &str, present: bool, who: &str| {
         if present {
@@ -444,6 +446,13 @@ fn face_boundary(
         FaceKind::Periodic => Boundary::Periodic,
         FaceKind::FreeSlip => Boundary::FreeSlip,
         FaceKind::Outflow => Boundary::Outflow,
+        FaceKind::Open if (a, key.ends_with("_max")) != (2, true) => {
+            return Err(src.invalid(key, "only the top (z_max) may be open to the atmosphere"))
+        }
+        FaceKind::Open if f.air.is_none() => {
+            return Err(src.invalid(key, "an open top lets air in and out: it needs [fluid.air]"))
+        }
+        FaceKind::Open => Boundary::Open,
         FaceKind::Wall => {
             let v = velocity("velocity", face.velocity)?;
             if v[a] != 0.0 {

@@ -207,6 +207,9 @@ pub enum FaceKind {
     Inflow,
     /// Convective outflow, corrected to conserve volume.
     Outflow,
+    /// Open to the atmosphere (zero pressure on the face; air and water pass freely): the top
+    /// of a flume (`z_max` only, with `[fluid.air]`).
+    Open,
 }
 
 /// One face: `{ kind = "wall", velocity = [0.1, 0.0, 0.0] }`.

@@ -90,6 +90,7 @@ fn describe(b: Boundary) -> String {
         Boundary::Wall { velocity } if velocity == Vec3::ZERO => "wall".into(),
         Boundary::Wall { velocity } => format!("wall sliding at {} m/s", vec4(velocity)),
         Boundary::FreeSlip => "free slip".into(),
+        Boundary::Open => "open to the atmosphere (p = 0)".into(),
         Boundary::Inflow(v) if v.amplitude == Vec3::ZERO => {
             format!("inflow {} m/s", vec4(v.mean))
         }

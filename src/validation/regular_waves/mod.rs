@@ -8,7 +8,7 @@ use std::f64::consts::PI;
 
 use crate::fluid::flume::Flume;
 use crate::fluid::waves::{Regular, RelaxationZone, Wave};
-use crate::fluid::Fluid;
+use crate::fluid::{Boundary, Fluid};
 use crate::math::{Mat3, Vec3};
 
 /// Still-water depth h [m].
@@ -99,7 +99,7 @@ pub fn flume(res: Resolution) -> Fluid {
     let nz = ((DEPTH + AIR) / dz).round() as usize;
     let dx = length / nx as f64;
     let size = Vec3::new(length, dx, nz as f64 * dz);
-    let mut f = super::slice_under_air([nx, 1, nz], size, G);
+    let mut f = super::slice_under_air([nx, 1, nz], size, G, Boundary::Open);
     f.set_water_fraction(|lo, hi| ((DEPTH - lo[2]) / (hi[2] - lo[2])).clamp(0.0, 1.0))
         .expect("the flume has air");
     f.set_flume(Flume {

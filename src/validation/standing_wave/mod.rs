@@ -5,7 +5,7 @@ pub mod report;
 
 use std::f64::consts::PI;
 
-use crate::fluid::Fluid;
+use crate::fluid::{Boundary, Fluid};
 use crate::math::Vec3;
 
 /// The tank's length L [m] (half the wavelength: k = π/L).
@@ -81,7 +81,7 @@ pub fn tank(n: usize) -> Fluid {
     let dx = LENGTH / n as f64;
     let nz = (HEIGHT / dx).round() as usize;
     let size = Vec3::new(LENGTH, 2.0 * dx, nz as f64 * dx);
-    let mut f = super::slice_under_air([n, 2, nz], size, G);
+    let mut f = super::slice_under_air([n, 2, nz], size, G, Boundary::FreeSlip);
     let k = wavenumber();
     f.set_water_fraction(|lo, hi| {
         let m = 16;
