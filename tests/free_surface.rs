@@ -344,12 +344,35 @@ fn a_wave_flume_in_a_scenario_is_checked_by_key() {
 /// A progressive linear wave (H = 4 cm, T = 1 s, h = 0.4 m: L = 1.464 m, kh = 1.72) in a
 /// channel one wavelength long and periodic along x, at the flume's validated resolution
 /// (L/Δx = 40, H/Δz = 4), over five periods: its phase speed within 1 % of linear theory (the
-/// issue's criterion) and its height kept to 5 % (measured: phase speed 0.9994, height 0.976).
-/// The propagation alone, without the flume's zones and end walls: in the flume
-/// (`validation::regular_waves`) the wave grows along x, a defect still open; this test shows
-/// it is not the propagation's.
+/// issue's criterion) and its height kept to 5 % (measured: phase speed 0.9994, height 0.975).
+/// Under this lid the wave goes on losing height (0.78 after twelve periods), and open to the
+/// atmosphere it gains it (next test): the defect of `validation::regular_waves`, still open.
 #[test]
 fn a_progressive_wave_keeps_its_phase_speed_and_height() {
+    let (speed, kept) = progressive_wave(Boundary::FreeSlip, 5.0);
+    eprintln!("progressive wave: phase speed {speed:.4} of theory, height kept {kept:.3}");
+    assert!((speed - 1.0).abs() < 0.01, "{speed}");
+    assert!((0.95..=1.02).contains(&kept), "{kept}");
+}
+
+/// The defect of `validation::regular_waves` without its zones: the same wave open to the
+/// atmosphere, over twelve periods, grows by 14 % (under a lid it loses 22 %; README there).
+/// Ignored until it passes.
+#[test]
+#[ignore = "known defect (issue 28): the free surface exchanges energy between the phases"]
+fn a_progressive_wave_open_to_the_atmosphere_keeps_its_height_for_twelve_periods() {
+    let (speed, kept) = progressive_wave(Boundary::Open, 12.0);
+    eprintln!(
+        "progressive wave, open top: phase speed {speed:.4} of theory, height kept {kept:.3}"
+    );
+    assert!((speed - 1.0).abs() < 0.01, "{speed}");
+    assert!((0.97..=1.01).contains(&kept), "{kept}");
+}
+
+/// A linear wave (H = 4 cm, T = 1 s, h = 0.4 m) in a channel one wavelength long, periodic
+/// along x, 40 cells per L and 4 per H, 0.1 m of air under `top`, run for `periods`: (phase
+/// speed over theory's, the surface's first mode's height over H).
+fn progressive_wave(top: Boundary, periods: f64) -> (f64, f64) {
     use riprap::fluid::waves::{Regular, Wave};
     let (h, height, period) = (0.4, 0.04, 1.0);
     let reg = Regular::new(height, period, h, 9.81);
@@ -359,7 +382,7 @@ fn a_progressive_wave_keeps_its_phase_speed_and_height() {
     let nz = ((h + 0.1) / dz).round() as usize;
     let dx = l / nx as f64;
     let grid = StaggeredGrid::new([nx, 1, nz], Vec3::new(l, dx, nz as f64 * dz), Vec3::ZERO);
-    let bcs = Boundaries::periodic().with(2, Boundary::FreeSlip, Boundary::FreeSlip);
+    let bcs = Boundaries::periodic().with(2, Boundary::FreeSlip, top);
     let mut f = Fluid::new(grid, bcs, water_and_air()).unwrap();
     f.set_water_fraction(|lo, hi| {
         let m = 8;
@@ -393,7 +416,7 @@ fn a_progressive_wave_keeps_its_phase_speed_and_height() {
         (2.0 * (c * c + s * s).sqrt() / l, s.atan2(c))
     };
     let (mut phase, mut turned) = (mode(&f).1, 0.0);
-    let t_end = 5.0 * period;
+    let t_end = periods * period;
     while f.time() < t_end {
         f.step_adaptive(t_end);
         let p = mode(&f).1;
@@ -403,7 +426,5 @@ fn a_progressive_wave_keeps_its_phase_speed_and_height() {
     }
     let speed = turned / t_end / reg.omega;
     let kept = mode(&f).0 / (0.5 * height);
-    eprintln!("progressive wave: phase speed {speed:.4} of theory, height kept {kept:.3}");
-    assert!((speed - 1.0).abs() < 0.01, "{speed}");
-    assert!((0.95..=1.02).contains(&kept), "{kept}");
+    (speed, kept)
 }
