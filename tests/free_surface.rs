@@ -15,11 +15,6 @@ use riprap::fluid::phases::{box_fraction, Air};
 use riprap::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
 use riprap::math::Vec3;
 
-#[allow(dead_code)]
-fn closed_box() -> Boundaries {
-    box_with_top(Boundary::FreeSlip)
-}
-
 fn box_with_top(top: Boundary) -> Boundaries {
     Boundaries::periodic()
         .with(0, Boundary::FreeSlip, Boundary::FreeSlip)

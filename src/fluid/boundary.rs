@@ -222,9 +222,6 @@ pub fn fill_pressure_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, p: &mut [f64
 /// faces keep their value) and fills all velocity ghosts, as in the table of the module docs.
 pub fn fill_velocity_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec<f64>; 3], t: f64) {
     for (a, &sa) in grid.strides().iter().enumerate() {
-        if a == 2 && bcs.open_top() {
-            open_top_ghosts(grid, u);
-        }
         let na = grid.n[a];
         for (m, f) in u.iter_mut().enumerate() {
             if bcs.is_periodic(a) {
@@ -258,7 +255,7 @@ pub fn fill_velocity_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec
                         }
                     });
                 } else if bc == Boundary::Open {
-                    // Inlet-outlet, by `open_top_ghosts` (it needs the normal component).
+                    // Inlet-outlet, below (it needs the normal component).
                     continue;
                 } else {
                     let (factor, wall) = match bc {
@@ -272,6 +269,10 @@ pub fn fill_velocity_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec
                 }
             }
         }
+    }
+    // z is the last axis: the open top's tangential ghosts, with its normal faces known.
+    if bcs.open_top() {
+        open_top_ghosts(grid, u);
     }
 }
 

@@ -31,6 +31,7 @@ use super::phases::{face_density, set_density, stress_viscosity};
 use super::pressure::{Passes, PressureFields};
 use super::sgs::eddy_viscosity;
 use super::tendency::{tendency_row, Inertia};
+use crate::math::Vec3;
 
 /// Most passes of the variable-density projection on the first step: the error shrinks by
 /// 1 − ρ₀/ρ̄_max per pass, 0.62 for quartz in water, so 100 passes reach 1e-13 below
@@ -126,19 +127,20 @@ impl Fluid {
             .driving_pressure_gradient
             .force_density(t + 0.5 * dt, rho_w);
         let (c_now, c_old) = (1.0 + 0.5 * r, -0.5 * r);
+        // Without the mixture's weight (coupled spheres carry their own) only the drive and F
+        // remain.
+        let g = if self.mixture_weight {
+            par.gravity
+        } else {
+            Vec3::ZERO
+        };
         for a in 0..3 {
             let (h, h_old, f) = (
                 &self.tendency[a],
                 &state.previous_tendency[a],
                 &state.body_force[a],
             );
-            // Without the mixture's weight (coupled spheres carry their own) only the drive
-            // and F remain.
-            let g_a = if self.mixture_weight {
-                par.gravity[a]
-            } else {
-                0.0
-            };
+            let g_a = g[a];
             let sa = st.s[a] as isize;
             update_rows(
                 &grid,
@@ -174,16 +176,11 @@ impl Fluid {
         // An open top's faces: w* = wⁿ + Δt B, the body force alone (no stencil reaches above
         // them); the projection then moves them with the rest.
         if bcs.open_top() {
-            let g_z = if self.mixture_weight {
-                par.gravity[2]
-            } else {
-                0.0
-            };
             let mut top = self.projected[2].clone();
             top[2] = grid.n[2] + 1..grid.n[2] + 2;
             let (rho_f, f) = (&self.face_density[2], &state.body_force[2]);
             update_region(&grid, &top, &mut state.velocity[2], |c, w| {
-                w + dt * body_acceleration(drive[2], rho_f[c], rho_w, g_z, f[c])
+                w + dt * body_acceleration(drive[2], rho_f[c], rho_w, g[2], f[c])
             });
         }
 
