@@ -52,6 +52,7 @@ pub mod interface;
 pub mod model;
 pub mod operators;
 pub mod phases;
+pub mod plic;
 pub mod pressure;
 pub mod sgs;
 pub mod step;

@@ -236,7 +236,9 @@ impl Fluid {
             projection: Projection::new(&grid, &boundaries),
             pressure_seconds: 0.0,
             mixture_weight: true,
-            interface: parameters.air.map(|_| Interface::new(grid, boundaries)),
+            interface: parameters
+                .air
+                .map(|a| Interface::with(grid, boundaries, a.reconstruction)),
             stress_viscosity: if parameters.air.is_some() {
                 grid.field()
             } else {

@@ -32,6 +32,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::boundary::fill_scalar_ghosts;
+use super::interface::Reconstruction;
 use super::{Boundaries, StaggeredGrid};
 
 /// The lighter fluid above the water.
@@ -41,6 +42,9 @@ pub struct Air {
     pub density: f64,
     /// Dynamic viscosity μ_a [Pa s].
     pub dynamic_viscosity: f64,
+    /// How the surface is placed in a cell when α is carried ([`super::interface`]).
+    #[serde(default)]
+    pub reconstruction: Reconstruction,
 }
 
 impl Default for Air {
@@ -49,6 +53,7 @@ impl Default for Air {
         Air {
             density: 1.204,
             dynamic_viscosity: 1.813e-5,
+            reconstruction: Reconstruction::Thinc,
         }
     }
 }

@@ -30,6 +30,7 @@ pub mod wet_rebound;
 
 pub use report::{run_validation, run_validation_cases, CASES};
 
+use crate::fluid::interface::Reconstruction;
 use crate::fluid::phases::Air;
 use crate::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
 use crate::math::Vec3;
@@ -46,9 +47,16 @@ pub fn up_crossings(record: &[(f64, f64)], after: f64) -> Vec<f64> {
 
 /// The free-surface cases' flow: `cells` over a box of `size` [m] from the origin, a 2D
 /// slice (periodic in y), free-slip walls along x and at the bottom, `top` above (a free-slip
-/// lid or open to the atmosphere), water without a subgrid model under air at 20 °C, gravity
-/// `g` [m s⁻²] down z. The water is set by the case.
-pub fn slice_under_air(cells: [usize; 3], size: Vec3, g: f64, top: Boundary) -> Fluid {
+/// lid or open to the atmosphere), water without a subgrid model under air at 20 °C whose
+/// surface is carried with `reconstruction`, gravity `g` [m s⁻²] down z. The water is set by
+/// the case.
+pub fn slice_under_air(
+    cells: [usize; 3],
+    size: Vec3,
+    g: f64,
+    top: Boundary,
+    reconstruction: Reconstruction,
+) -> Fluid {
     let grid = StaggeredGrid::new(cells, size, Vec3::ZERO);
     let bcs = Boundaries::periodic()
         .with(0, Boundary::FreeSlip, Boundary::FreeSlip)
@@ -56,6 +64,9 @@ pub fn slice_under_air(cells: [usize; 3], size: Vec3, g: f64, top: Boundary) -> 
     let mut p = FluidParameters::water();
     p.smagorinsky = None;
     p.gravity = Vec3::new(0.0, 0.0, -g);
-    p.air = Some(Air::default());
+    p.air = Some(Air {
+        reconstruction,
+        ..Air::default()
+    });
     Fluid::new(grid, bcs, p).expect("the slice is a valid fluid")
 }

@@ -1,6 +1,7 @@
 //! `[fluid.air]` and `[[fluid.water]]`: water under air, checked, and the water of t = 0.
 
 use super::FluidSection;
+use crate::fluid::interface::Reconstruction;
 use crate::fluid::phases::{box_fraction, Air};
 use crate::fluid::Fluid;
 use crate::math::Vec3;
@@ -132,6 +133,12 @@ pub(super) fn phases(
         air: Air {
             density,
             dynamic_viscosity: mu,
+            // A flume's waves keep their energy with planes (`fluid::interface`).
+            reconstruction: a.interface.unwrap_or(if f.waves.is_some() {
+                Reconstruction::Plane
+            } else {
+                Reconstruction::Thinc
+            }),
         },
         level: a.water_level,
         boxes,

@@ -25,6 +25,7 @@
 //! [fluid.air]                      # water under air, a free surface (default: no air)
 //! water_level = 0.3                # m, water below it at the start
 //! density = 1.204                  # kg/m3 (default); dynamic_viscosity = 1.813e-5 Pa s
+//! interface = "thinc"              # or "plane" (PLIC; the default with [fluid.waves])
 //!
 //! [fluid.waves]                    # a wave flume along x (needs water_level; x faces walls)
 //! theory = "linear"                # "linear", "stokes2" or "cnoidal"
@@ -147,6 +148,9 @@ pub struct AirSection {
     pub dynamic_viscosity: Option<f64>,
     /// Water fills the box below this height at the start [m].
     pub water_level: Option<f64>,
+    /// How α's transport places the surface in a cell: "thinc" (default) or "plane" (default
+    /// with `[fluid.waves]`).
+    pub interface: Option<crate::fluid::interface::Reconstruction>,
 }
 
 /// `[[fluid.water]]`: a box of water at the start (e.g. the column of a dam break).

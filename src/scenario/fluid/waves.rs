@@ -244,12 +244,13 @@ impl Waves {
                  validation case regular_waves was run (src/validation/regular_waves/README.md)"
             );
         }
-        // What regular_waves measured (README there): the height grows along the flume, less
-        // on finer grids; no resolution run so far meets its 3 % criterion.
+        // What regular_waves measured (README there): the height grows along the flume; no
+        // resolution run so far meets its 3 % criterion.
         let _ = writeln!(
             s,
-            "warning: waves grow along the flume (a known defect): in regular_waves by 26 % over \
-             5 L at 4 cells per H and 16 % at 8 (40 per L); not yet for design figures"
+            "warning: waves grow along the flume (a known defect): in regular_waves by 10 % over \
+             5 L at 4 cells per H and 40 per L with the surface carried by planes (a flume's \
+             default; 26 % with interface = \"thinc\"); not yet for design figures"
         );
         s
     }

@@ -7,6 +7,7 @@ pub mod report;
 use std::f64::consts::PI;
 
 use crate::fluid::flume::Flume;
+use crate::fluid::interface::Reconstruction;
 use crate::fluid::waves::{Regular, RelaxationZone, Wave};
 use crate::fluid::{Boundary, Fluid};
 use crate::math::{Mat3, Vec3};
@@ -99,7 +100,9 @@ pub fn flume(res: Resolution) -> Fluid {
     let nz = ((DEPTH + AIR) / dz).round() as usize;
     let dx = length / nx as f64;
     let size = Vec3::new(length, dx, nz as f64 * dz);
-    let mut f = super::slice_under_air([nx, 1, nz], size, G, Boundary::Open);
+    // Planes: THINC's profile feeds the waves energy (`fluid::interface`).
+    let planes = Reconstruction::Plane;
+    let mut f = super::slice_under_air([nx, 1, nz], size, G, Boundary::Open, planes);
     f.set_water_fraction(|lo, hi| ((DEPTH - lo[2]) / (hi[2] - lo[2])).clamp(0.0, 1.0))
         .expect("the flume has air");
     f.set_flume(Flume {

@@ -5,6 +5,7 @@ pub mod report;
 
 use std::f64::consts::PI;
 
+use crate::fluid::interface::Reconstruction;
 use crate::fluid::{Boundary, Fluid};
 use crate::math::Vec3;
 
@@ -81,7 +82,8 @@ pub fn tank(n: usize) -> Fluid {
     let dx = LENGTH / n as f64;
     let nz = (HEIGHT / dx).round() as usize;
     let size = Vec3::new(LENGTH, 2.0 * dx, nz as f64 * dx);
-    let mut f = super::slice_under_air([n, 2, nz], size, G, Boundary::FreeSlip);
+    let thinc = Reconstruction::Thinc;
+    let mut f = super::slice_under_air([n, 2, nz], size, G, Boundary::FreeSlip, thinc);
     let k = wavenumber();
     f.set_water_fraction(|lo, hi| {
         let m = 16;
