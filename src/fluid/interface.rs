@@ -321,8 +321,8 @@ mod tests {
                 }
             }
         }
-        // Water downstream: the jump sits at the downstream end, so less water leaves than
-        // the uniform α C; water upstream: more.
+        // Water downstream: the donor's water lies against the face it leaves by, so more
+        // leaves than the uniform α C; water upstream: less.
         assert!(thinc_flux(0.0, 0.5, 1.0, 0.2) > 0.5 * 0.2);
         assert!(thinc_flux(1.0, 0.5, 0.0, 0.2) < 0.5 * 0.2);
     }
