@@ -249,8 +249,9 @@ impl Waves {
         let _ = writeln!(
             s,
             "warning: waves grow along the flume (a known defect): in regular_waves by 10 % over \
-             5 L at 4 cells per H and 40 per L with the surface carried by planes (a flume's \
-             default; 26 % with interface = \"thinc\"); not yet for design figures"
+             5 L at 4 cells per H and 40 per L, 7.5 % at 8 and 80, with the surface carried by \
+             planes (a flume's default; 26 % with interface = \"thinc\"); not yet for design \
+             figures"
         );
         s
     }
