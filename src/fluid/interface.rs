@@ -31,8 +31,9 @@
 //! **Which.** Both are conservative and bounded with this splitting, and THINC needs neither a
 //! normal nor a plane. But its one-dimensional profile gives a face one water fraction from the
 //! cell below and another from the cell above. The flux takes the donor's, upwind, while
-//! gravity's work uses the face's density. The difference is energy the flow never paid for. Measured with a progressive wave, periodic, open to the atmosphere (L/Δx = 40,
-//! H/Δz = 4, `tests/free_surface.rs`), after 12 periods:
+//! gravity's work uses the face's density. The difference is energy the flow never paid for.
+//! Measured with a progressive wave, periodic, open to the atmosphere (L/Δx = 40, H/Δz = 4,
+//! `tests/free_surface.rs`), after 12 periods:
 //!
 //! | reconstruction | energy | height |
 //! |---|---:|---:|
@@ -111,6 +112,16 @@ pub enum Reconstruction {
     Thinc,
     /// A plane with Youngs' normal (`plic`): what wave flumes take (module docs).
     Plane,
+}
+
+impl Reconstruction {
+    /// What `check` says of it.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Reconstruction::Thinc => "THINC's profile",
+            Reconstruction::Plane => "a plane (PLIC)",
+        }
+    }
 }
 
 /// The water [-] a split sweep along `axis` moves out of the donor cell at storage index `c`
@@ -232,22 +243,18 @@ impl Interface {
         let courant = dt / g.spacing[axis];
         let plane = s[2];
         let thinc = self.reconstruction == Reconstruction::Thinc;
-        // α at position m (−1 ..= n, ghosts at the ends) of the line through the storage
-        // index `base` of its position 0; two cells beyond the ghosts: wrapped when periodic,
-        // the ghost otherwise (zero gradient).
-        let at = |base: usize, m: i64| -> f64 {
+        // The storage index of the cell at position m (−1 ..= n, ghosts at the ends) of the
+        // line through the storage index `base` of its position 0, and α there; two cells
+        // beyond the ghosts: wrapped when periodic, the ghost otherwise (zero gradient).
+        let cell = |base: usize, m: i64| -> usize {
             let m = if periodic {
                 m.rem_euclid(n as i64)
             } else {
                 m.clamp(-1, n as i64)
             };
-            alpha[(base as i64 + m * s[axis] as i64) as usize]
-        };
-        // The storage index of the cell at position m (0 ..= n − 1, or −1 wrapped) of the line.
-        let donor = |base: usize, m: i64| -> usize {
-            let m = if periodic { m.rem_euclid(n as i64) } else { m };
             (base as i64 + m * s[axis] as i64) as usize
         };
+        let at = |base: usize, m: i64| alpha[cell(base, m)];
         // Interior lines only (1 ..= n across the axis), every storage slot along it; the
         // faces f = 0 ..= n sit at slots 1 ..= n + 1.
         let span = |b: usize| {
@@ -282,14 +289,14 @@ impl Interface {
                             } else if thinc {
                                 thinc_flux(at(base, f - 2), at(base, f - 1), at(base, f), cf)
                             } else {
-                                plane_flux(alpha, donor(base, f - 1), s, axis, 1.0 - cf, cf)
+                                plane_flux(alpha, cell(base, f - 1), s, axis, 1.0 - cf, cf)
                             }
                         } else if !periodic && f == n as i64 {
                             at(base, n as i64) * cf
                         } else if thinc {
                             -thinc_flux(at(base, f + 1), at(base, f), at(base, f - 1), -cf)
                         } else {
-                            -plane_flux(alpha, donor(base, f), s, axis, 0.0, -cf)
+                            -plane_flux(alpha, cell(base, f), s, axis, 0.0, -cf)
                         };
                     }
                 }

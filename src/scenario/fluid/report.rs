@@ -245,10 +245,7 @@ impl FluidDerived {
                 p.density / a.density,
                 start.join(" and "),
                 self.water_volume,
-                match a.reconstruction {
-                    crate::fluid::interface::Reconstruction::Plane => "a plane (PLIC)",
-                    crate::fluid::interface::Reconstruction::Thinc => "THINC's profile",
-                }
+                a.reconstruction.describe()
             );
             // Surface tension is not modelled: it shapes features of a few capillary lengths
             // √(σ/(ρ g)) (2.7 mm for clean water), which the grid resolves when Δ is small.
