@@ -54,6 +54,7 @@ pub mod operators;
 pub mod phases;
 pub mod plic;
 pub mod pressure;
+pub mod reflection;
 pub mod sgs;
 pub mod step;
 pub mod tendency;

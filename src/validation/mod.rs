@@ -15,12 +15,14 @@
 //!   surface; [`regular_waves`] (a wave generated, carried five wavelengths and absorbed),
 //!   the wave flume.
 
+pub mod absorption;
 pub mod block_settling;
 pub mod cavity;
 pub mod channel180;
 pub mod cylinder_strouhal;
 pub mod dam_break;
 pub mod hopper_cloud;
+pub mod linear_flume;
 pub mod regular_waves;
 pub mod report;
 pub mod sheet_flow;

@@ -4,7 +4,7 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use super::{run, verdict, wavelength, Resolution, Run, DEPTH, HEIGHT, PERIOD};
+use super::{verdict, LinearFlume, Resolution, Run, DEPTH, FLUME, HEIGHT, PERIOD};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
 
 /// The resolutions: quick L/Δx = 40, H/Δz = 4; full also 80 and 8 (`README.md`).
@@ -23,34 +23,44 @@ pub fn levels(quick: bool) -> Vec<Resolution> {
 /// Runs the levels, appends the section to `md`, writes the plot into `out`; returns whether
 /// every level passed.
 pub fn section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool> {
-    let runs: Vec<Run> = levels(quick).into_iter().map(run).collect();
+    let runs: Vec<Run> = levels(quick).into_iter().map(|r| FLUME.run(r)).collect();
     md.push_str("\n## Wave flume: a regular wave along a flat bed\n\n");
     let _ = writeln!(
         md,
         "Set-up, reference and criteria: `src/validation/regular_waves/README.md`. A linear \
          wave H = {HEIGHT} m, T = {PERIOD} s in h = {DEPTH} m (L = {:.3} m, kh = {:.2}), \
-         generated and absorbed in relaxation zones; gauges 1 to 5 wavelengths from the \
-         generating zone.\n",
-        wavelength(),
-        super::wave().k * DEPTH
+         generated and absorbed in relaxation zones; arrays of three gauges 1 to 5 \
+         wavelengths from the generating zone, each separating the incident and the reflected \
+         wave (Mansard & Funke 1980).\n",
+        FLUME.wavelength(),
+        FLUME.wave().k * DEPTH
     );
     md.push_str(
-        "| L/Δx | H/Δz | cells | steps | H/H₀ at 1, 2, 3, 4, 5 L | phase speed / theory | time | \
-         verdict |\n|---:|---:|---:|---:|---|---:|---:|---|\n",
+        "| L/Δx | H/Δz | cells | steps | incident H/H₀ at 1, 2, 3, 4, 5 L | reflection \
+         coefficient | phase speed / theory | time | verdict |\n\
+         |---:|---:|---:|---:|---|---|---:|---:|---|\n",
     );
     let mut all = true;
     for r in &runs {
+        let res = r.resolution;
+        let name = format!(
+            "regular_waves_{}_{}.csv",
+            res.per_wavelength, res.per_height
+        );
+        LinearFlume::write_records(r, &out.join(name))?;
         let v = verdict(r);
         let ok = v.passes();
         all &= ok;
         let heights: Vec<String> = v.heights.iter().map(|h| format!("{h:.3}")).collect();
+        let reflection: Vec<String> = v.reflection.iter().map(|r| format!("{r:.3}")).collect();
         let line = format!(
-            "| {} | {} | {} | {} | {} | {:.4} | {:.0} s | {} |",
+            "| {} | {} | {} | {} | {} | {} | {:.4} | {:.0} s | {} |",
             r.resolution.per_wavelength,
             r.resolution.per_height,
             r.cells,
             r.steps,
             heights.join(", "),
+            reflection.join(", "),
             v.phase_speed,
             r.seconds,
             if ok { "pass" } else { "FAIL" }
@@ -69,11 +79,11 @@ fn plot(out: &Path, runs: &[Run]) -> anyhow::Result<()> {
     let records: Vec<Vec<(f64, f64)>> = runs
         .iter()
         .map(|r| {
-            let g = r.records.last().expect("five gauges");
+            let g = &r.records[r.records.len() - 3];
             g.iter().map(|&(t, e)| (t, 1e3 * e)).collect()
         })
         .collect();
-    let t_end = super::duration();
+    let t_end = FLUME.duration();
     let bound = |s: f64| vec![(0.0, s * 500.0 * HEIGHT), (t_end, s * 500.0 * HEIGHT)];
     let (top, bottom) = (bound(1.0), bound(-1.0));
     let names: Vec<String> = runs
