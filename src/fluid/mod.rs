@@ -15,8 +15,9 @@
 //! conservative and bounded (THINC with Weymouth & Yue's splitting): the first piece of the
 //! free surface, which the step does not use yet; [`waves`] gives the elevation and velocity
 //! of the wave theories a wave flume imposes (linear, Stokes second order, solitary, JONSWAP
-//! seas), also not yet used. The longer verification cases (the lid-driven cavity
-//! against Ghia et al. 1982, turbulent channel flow) are in `riprap::validation`.
+//! seas, cnoidal, and stream-function waves from [`stream_function`]), also not yet used.
+//! The longer verification cases (the lid-driven cavity against Ghia et al. 1982, turbulent
+//! channel flow) are in `riprap::validation`.
 //!
 //! In use:
 //!
@@ -57,6 +58,7 @@ pub mod pressure;
 pub mod reflection;
 pub mod sgs;
 pub mod step;
+pub mod stream_function;
 pub mod tendency;
 pub mod timestep;
 pub mod waves;

@@ -23,13 +23,18 @@
 //! ([`components_from_record`]).
 //!
 //! * [`Wave::Cnoidal`] ([`Cnoidal`]), first order, for long waves in shallow water.
+//! * [`Wave::StreamFunction`] ([`StreamFunction`], [`super::stream_function`]): the steady
+//!   wave of any height short of breaking, solved numerically (Rienecker & Fenton 1981;
+//!   Fenton 1988), with no net mass transport as in a closed flume.
 //!
-//! Still open for the flume: Stokes fifth order (Fenton 1985), stream-function waves
-//! (Rienecker & Fenton 1981), higher-order cnoidal theory, a current.
+//! Still open for the flume: Stokes fifth order (Fenton 1985), higher-order cnoidal theory, a
+//! current (the stream-function solver takes one; the flume does not yet).
 
 use std::f64::consts::PI;
 
 use crate::math::Rng;
+
+pub use super::stream_function::StreamFunction;
 
 /// The wavenumber k [m⁻¹] of angular frequency `omega` [s⁻¹] in water `h` [m] deep under
 /// gravity `g` [m s⁻²]: the root of ω² = g k tanh(kh), from Fenton & McKee's (1990)
@@ -73,6 +78,8 @@ pub enum Wave {
     Irregular(Vec<Component>),
     /// A cnoidal wave (first order), from [`Cnoidal::new`].
     Cnoidal(Cnoidal),
+    /// A stream-function wave, from [`StreamFunction::new`].
+    StreamFunction(StreamFunction),
 }
 
 /// A regular wave: height, period, depth, and its ω and k, solved once.
@@ -161,6 +168,7 @@ impl Wave {
             Wave::Solitary { .. } => self.solitary(x, t).0,
             Wave::Irregular(c) => c.iter().map(|c| c.elevation(x, t)).sum(),
             Wave::Cnoidal(c) => c.shallow(x, t).0,
+            Wave::StreamFunction(s) => s.elevation(x, t),
         }
     }
 
@@ -198,6 +206,7 @@ impl Wave {
                 let (_, u, du_dx) = c.shallow(x, t);
                 (u, -(z + c.depth) * du_dx)
             }
+            Wave::StreamFunction(s) => s.velocity(x, z, t),
         }
     }
 

@@ -28,7 +28,8 @@
 //! interface = "thinc"              # or "plane" (PLIC; the default with [fluid.waves])
 //!
 //! [fluid.waves]                    # a wave flume along x (needs water_level; x faces walls)
-//! theory = "linear"                # "linear", "stokes2" or "cnoidal"
+//! theory = "linear"                # "linear", "stokes2", "cnoidal" or "stream_function"
+//! # order = 32                     # Fourier terms of "stream_function" (2 to 48; default 32)
 //! height = 0.04                    # m
 //! period = 1.0                     # s
 //! generation_length = 1.0          # wavelengths at x = min (default 1)

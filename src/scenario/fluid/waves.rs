@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 
 use super::FluidSection;
 use crate::fluid::flume::Flume;
+use crate::fluid::stream_function::{self, StreamFunction};
 use crate::fluid::waves::{miche_limit, ursell, Cnoidal, Regular, RelaxationZone, Wave};
 use crate::fluid::{Boundaries, StaggeredGrid};
 use crate::math::Vec3;
@@ -17,8 +18,11 @@ use crate::scenario::{ScenarioError, Source};
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct WavesSection {
-    /// The wave theory: "linear", "stokes2" or "cnoidal".
+    /// The wave theory: "linear", "stokes2", "cnoidal" or "stream_function".
     pub theory: Theory,
+    /// The number of Fourier terms N of a stream-function wave (default 32,
+    /// [`stream_function::DEFAULT_ORDER`]; from 2 to 48).
+    pub order: Option<usize>,
     /// Wave height H [m].
     pub height: f64,
     /// Wave period T [s].
@@ -41,6 +45,8 @@ pub enum Theory {
     Stokes2,
     /// Cnoidal, first order.
     Cnoidal,
+    /// Stream-function (Fourier approximation, Rienecker & Fenton 1981), solved numerically.
+    StreamFunction,
 }
 
 /// The checked flume and the figures `check` prints.
@@ -92,6 +98,12 @@ pub(super) fn waves(
     let height = positive(src, "fluid.waves.height", w.height)?;
     let period = positive(src, "fluid.waves.period", w.period)?;
     let regular = Regular::new(height, period, h, g);
+    if w.order.is_some() && w.theory != Theory::StreamFunction {
+        return Err(src.invalid(
+            "fluid.waves.order",
+            "the number of Fourier terms is for theory = \"stream_function\" only",
+        ));
+    }
     let (wave, wavelength) = match w.theory {
         Theory::Linear => (
             Wave::Linear(regular),
@@ -110,6 +122,23 @@ pub(super) fn waves(
                 )
             })?;
             (Wave::Cnoidal(c), c.wavelength)
+        }
+        Theory::StreamFunction => {
+            let order = w.order.unwrap_or(stream_function::DEFAULT_ORDER);
+            if !stream_function::ORDERS.contains(&order) {
+                return Err(src.invalid(
+                    "fluid.waves.order",
+                    format!(
+                        "must be from {} to {} (Fourier terms), got {order}",
+                        stream_function::ORDERS.start(),
+                        stream_function::ORDERS.end()
+                    ),
+                ));
+            }
+            let s = StreamFunction::new(height, period, h, g, order)
+                .map_err(|e| src.invalid("fluid.waves.height", e.to_string()))?;
+            let l = s.wavelength;
+            (Wave::StreamFunction(s), l)
         }
     };
     let k = 2.0 * std::f64::consts::PI / wavelength;
@@ -220,6 +249,7 @@ impl Waves {
                 Theory::Linear => "linear",
                 Theory::Stokes2 => "Stokes second-order",
                 Theory::Cnoidal => "cnoidal",
+                Theory::StreamFunction => "stream-function",
             },
             self.period,
             big_h / l,
@@ -254,5 +284,84 @@ impl Waves {
              figures"
         );
         s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::fluid::waves::Wave;
+    use crate::scenario::{build, Source};
+
+    /// The example flume (H = 4 cm, T = 1 s, h = 0.4 m) with `theory = "stream_function"`:
+    /// accepted, its wave a stream-function wave a little longer than the linear one (L =
+    /// 1.4637 m; nonlinear waves are longer), `order` taken; a wave at 0.95 of the highest
+    /// accepted, one beyond breaking (0.22 m, the highest of that length being about 0.200 m;
+    /// 0.3 m, which the linear check would also refuse) refused at `fluid.waves.height` with
+    /// the reason, and `order` out of range or with another theory refused at
+    /// `fluid.waves.order`.
+    #[test]
+    fn a_stream_function_flume_is_checked_by_key() {
+        let example = include_str!("../../../examples/wave_flume.toml");
+        let dir = std::env::temp_dir();
+        let built = |text: &str| -> Result<Wave, String> {
+            let src =
+                Source::from_str(text, "case.toml", dir.clone()).map_err(|e| e.to_string())?;
+            let b = build(&src).map_err(|e| e.to_string())?;
+            let fluid = b.simulation.fluid.expect("a fluid");
+            Ok(fluid.flume().expect("a flume").wave.clone())
+        };
+        let sf = example.replace("theory = \"linear\"", "theory = \"stream_function\"");
+        assert_ne!(sf, example);
+        let Wave::StreamFunction(s) = built(&sf).unwrap() else {
+            panic!("not a stream-function wave");
+        };
+        println!("L = {} m, c_E = {} m/s", s.wavelength, s.eulerian_current);
+        assert_eq!(s.order, crate::fluid::stream_function::DEFAULT_ORDER);
+        assert!(
+            s.wavelength > 1.4637 && s.wavelength < 1.4637 * 1.01,
+            "{}",
+            s.wavelength
+        );
+        let with_order = sf.replace("period = 1.0 ", "period = 1.0\norder = 12 ");
+        let Wave::StreamFunction(s) = built(&with_order).unwrap() else {
+            panic!("not a stream-function wave");
+        };
+        assert_eq!(s.order, 12);
+        let refused = |text: &str, key: &str, words: &str| {
+            let e = built(text).expect_err("refused");
+            println!("{e}");
+            assert!(e.contains(key) && e.contains(words), "{e}");
+        };
+        // A taller box, so that the crest check does not come first.
+        let tall = sf.replace("max = [11.71, 0.0366, 0.5]", "max = [11.71, 0.0366, 0.8]");
+        assert_ne!(tall, sf);
+        // 0.19 m is 0.95 of the highest wave of its length (L = 1.585 m; Williams, by
+        // Fenton's fit), accepted; 0.22 m is beyond it.
+        let Wave::StreamFunction(s) =
+            built(&tall.replace("height = 0.04 ", "height = 0.19 ")).unwrap()
+        else {
+            panic!("not a stream-function wave");
+        };
+        assert!((s.wavelength - 1.585).abs() < 1e-3, "{}", s.wavelength);
+        refused(
+            &tall.replace("height = 0.04 ", "height = 0.22 "),
+            "fluid.waves.height",
+            "beyond breaking",
+        );
+        refused(
+            &sf.replace("height = 0.04 ", "height = 0.3 "),
+            "fluid.waves.height",
+            "beyond breaking",
+        );
+        refused(
+            &sf.replace("period = 1.0 ", "period = 1.0\norder = 1 "),
+            "fluid.waves.order",
+            "from 2 to 48",
+        );
+        refused(
+            &example.replace("period = 1.0 ", "period = 1.0\norder = 12 "),
+            "fluid.waves.order",
+            "stream_function",
+        );
     }
 }
