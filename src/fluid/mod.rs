@@ -15,7 +15,8 @@
 //! conservative and bounded (THINC with Weymouth & Yue's splitting): the first piece of the
 //! free surface, which the step does not use yet; [`waves`] gives the elevation and velocity
 //! of the wave theories a wave flume imposes (linear, Stokes second order, solitary, JONSWAP
-//! seas), also not yet used. The longer verification cases (the lid-driven cavity
+//! seas), also not yet used. [`porous`] adds the Darcy-Forchheimer resistance of porous zones
+//! (breakwater cores, filters, rubble beds; beyond the source). The longer verification cases (the lid-driven cavity
 //! against Ghia et al. 1982, turbulent channel flow) are in `riprap::validation`.
 //!
 //! In use:
@@ -53,6 +54,7 @@ pub mod model;
 pub mod operators;
 pub mod phases;
 pub mod plic;
+pub mod porous;
 pub mod pressure;
 pub mod sgs;
 pub mod step;
@@ -64,5 +66,6 @@ pub use boundary::{Boundaries, Boundary, InflowVelocity};
 pub use forcing::DrivingPressureGradient;
 pub use grid::StaggeredGrid;
 pub use model::{CellFields, Fluid, FluidParameters, FluidState};
+pub use porous::PorousZone;
 pub use sgs::Smagorinsky;
 pub use timestep::TimeStepLimits;
