@@ -11,13 +11,15 @@
 //! Each face of the box is periodic, a no-slip wall (fixed or moving), free slip, an inflow
 //! (steady or oscillating) or an outflow ([`boundary`]). The time step adapts to CFL and
 //! viscous limits ([`timestep`]). [`diagnostics`] gives whole-flow numbers (kinetic energy,
-//! largest speed, a memory estimate). [`interface`] carries a water fraction α with the flow,
-//! conservative and bounded (THINC with Weymouth & Yue's splitting): the first piece of the
-//! free surface, which the step does not use yet; [`waves`] gives the elevation and velocity
-//! of the wave theories a wave flume imposes (linear, Stokes second order, solitary, JONSWAP
-//! seas, cnoidal, and stream-function waves from [`stream_function`]), also not yet used.
-//! The longer verification cases (the lid-driven cavity against Ghia et al. 1982, turbulent
-//! channel flow) are in `riprap::validation`.
+//! largest speed, a memory estimate). With air ([`phases`]) the step carries the water
+//! fraction α ([`interface`]: conservative and bounded, THINC or planes ([`plic`]) with Weymouth
+//! & Yue's splitting) and takes ρ and μ from it. A wave flume ([`flume`]) generates and absorbs
+//! the waves of [`waves`] (linear, Stokes second order, cnoidal, solitary, JONSWAP seas, and
+//! stream-function waves from [`stream_function`]) in relaxation zones; [`reflection`]
+//! separates the incident and the reflected wave of gauge records. [`porous`] adds the
+//! Darcy-Forchheimer resistance of porous zones (breakwater cores, filters, rubble beds; beyond
+//! the source). The longer verification cases (the lid-driven cavity against Ghia et al. 1982,
+//! turbulent channel flow, the free-surface cases) are in `riprap::validation`.
 //!
 //! In use:
 //!
@@ -54,6 +56,7 @@ pub mod model;
 pub mod operators;
 pub mod phases;
 pub mod plic;
+pub mod porous;
 pub mod pressure;
 pub mod reflection;
 pub mod sgs;
@@ -67,5 +70,6 @@ pub use boundary::{Boundaries, Boundary, InflowVelocity};
 pub use forcing::DrivingPressureGradient;
 pub use grid::StaggeredGrid;
 pub use model::{CellFields, Fluid, FluidParameters, FluidState};
+pub use porous::PorousZone;
 pub use sgs::Smagorinsky;
 pub use timestep::TimeStepLimits;

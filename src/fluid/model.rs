@@ -9,6 +9,7 @@ use super::grid::{IndexBox, StaggeredGrid, Stencil};
 use super::interface::{Clipped, Interface};
 use super::operators::{cell_velocity, cell_vorticity, divergence};
 use super::phases::{self, Air};
+use super::porous::{Porosity, PorousZone};
 use super::pressure::pcg::Solve;
 use super::pressure::{Passes, PressureFields, Projection};
 use super::sgs::Smagorinsky;
@@ -146,6 +147,8 @@ pub struct Fluid {
     pub(super) clipped: Clipped,
     /// The last exact projection's iterations and residual, with air.
     pub(super) last_solve: Solve,
+    /// Porous zones and their faces' resistance ([`Fluid::set_porous`]); `None` without.
+    pub(super) porosity: Option<Porosity>,
 }
 
 /// Cell-centred copies of the fields for output (compact, nx·ny·nz, i fastest: the order of
@@ -166,6 +169,21 @@ pub struct CellFields {
     pub divergence: Vec<f64>,
     /// Water fraction α [-] (empty without air).
     pub water_fraction: Vec<f64>,
+}
+
+/// The faces of each component that the time step updates on `grid` with `boundaries`: all
+/// but the boundary faces normal to a non-periodic axis (padded index boxes).
+pub fn updated_faces(grid: &StaggeredGrid, boundaries: &Boundaries) -> [IndexBox; 3] {
+    std::array::from_fn(|m| {
+        std::array::from_fn(|a| {
+            let lo = if a == m && !boundaries.is_periodic(a) {
+                2
+            } else {
+                1
+            };
+            lo..grid.n[a] + 1
+        })
+    })
 }
 
 impl Fluid {
@@ -208,16 +226,7 @@ impl Fluid {
                 Vec::new()
             },
         };
-        let regions = std::array::from_fn(|m| {
-            std::array::from_fn(|a| {
-                let lo = if a == m && !boundaries.is_periodic(a) {
-                    2
-                } else {
-                    1
-                };
-                lo..grid.n[a] + 1
-            })
-        });
+        let regions = updated_faces(&grid, &boundaries);
         // The projection also moves the top faces when the top is open (p = 0 there).
         let mut projected: [IndexBox; 3] = regions.clone();
         if boundaries.open_top() {
@@ -253,6 +262,7 @@ impl Fluid {
             },
             clipped: Clipped::default(),
             last_solve: Solve::default(),
+            porosity: None,
         };
         fluid.fill_ghosts();
         Ok(fluid)
@@ -329,6 +339,25 @@ impl Fluid {
         let g = self.grid;
         self.flume_velocity = [g.field(), g.field(), g.field()];
         Ok(())
+    }
+
+    /// Gives the flow porous zones with a Darcy-Forchheimer resistance ([`super::porous`];
+    /// beyond the source); an empty list removes them. Zones are configuration, not state: a
+    /// restart rebuilds them (from the scenario) and [`FluidState`] does not hold them. Fails on
+    /// an invalid zone or one that holds no face of the grid.
+    pub fn set_porous(&mut self, zones: Vec<PorousZone>) -> Result<(), String> {
+        self.porosity = if zones.is_empty() {
+            None
+        } else {
+            let nu = self.parameters.kinematic_viscosity;
+            Some(Porosity::new(&self.grid, &self.regions, zones, nu)?)
+        };
+        Ok(())
+    }
+
+    /// The porous zones and their faces, if any.
+    pub fn porosity(&self) -> Option<&Porosity> {
+        self.porosity.as_ref()
     }
 
     /// The flume, if the flow is one.

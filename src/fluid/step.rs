@@ -8,6 +8,8 @@
 //! B    = ( −∂P/∂x_a(tⁿ + Δt/2) + (ρ̄_f − ρ_w) g_a + F_a ) / ρ̄_f                [51]
 //!        (the weight term only with `Fluid::set_mixture_weight(true)`, the default)
 //! u*   = uⁿ + Δt [ (1 + r/2) Hⁿ − (r/2) Hⁿ⁻¹ ] + Δt B ,   r = Δtⁿ / Δtⁿ⁻¹       (AB2)
+//! u*  ← (u* − Δt G pⁿ/ρ̄_f) / (1 + Δt (a + b |uⁿ|)) + Δt G pⁿ/ρ̄_f   in porous zones only
+//!        (Darcy-Forchheimer, implicit; beyond the source: `super::porous`)
 //! uⁿ⁺¹ = u* − Δt (1/ρ̄_f) G pⁿ⁺¹   with D uⁿ⁺¹ = 0                            (projection)
 //! ```
 //!
@@ -28,6 +30,7 @@ use super::forcing::body_acceleration;
 use super::grid::{shifted, update_region, update_rows};
 use super::model::Fluid;
 use super::phases::{face_density, set_density, stress_viscosity};
+use super::porous::FaceDensity;
 use super::pressure::{Passes, PressureFields};
 use super::sgs::eddy_viscosity;
 use super::tendency::{tendency_row, Inertia};
@@ -115,6 +118,12 @@ impl Fluid {
             }
         }
 
+        // Porous zones keep |uⁿ| on their faces for the resistance (`porous`).
+        if let Some(porosity) = &mut self.porosity {
+            let v = &state.velocity;
+            porosity.measure(&st, [&v[0], &v[1], &v[2]]);
+        }
+
         // A flume keeps uⁿ for its zones' blend.
         if self.flume.is_some() {
             for (keep, u) in self.flume_velocity.iter_mut().zip(&state.velocity) {
@@ -182,6 +191,17 @@ impl Fluid {
             update_region(&grid, &top, &mut state.velocity[2], |c, w| {
                 w + dt * body_acceleration(drive[2], rho_f[c], rho_w, g[2], f[c])
             });
+        }
+
+        // Porous zones: the implicit Darcy-Forchheimer resistance on u* less the last pressure
+        // gradient, before the projection so that it leaves the flow divergence-free
+        // (`porous`); before a flume's blend, which has the last word in its zones.
+        if let Some(porosity) = &self.porosity {
+            let density = match par.air {
+                Some(_) => FaceDensity::Faces(&self.face_density),
+                None => FaceDensity::Cells(&state.mixture_density),
+            };
+            porosity.resist(&st, &mut state.velocity, &state.pressure, density, dt);
         }
 
         // A flume's zones: u* += w (u_target − uⁿ), the blend of uⁿ towards the target with the

@@ -78,6 +78,7 @@ pub(in crate::scenario) fn build_fluid(
     }
     samples(src, f, lo, hi)?;
     gauges(src, f, lo, hi)?;
+    let porous = super::porous::zones(src, f, &grid, &boundaries)?;
     let phases = super::air::phases(src, f, density, lo, hi, !radii.is_empty())?;
     let waves = super::waves::waves(
         src,
@@ -113,6 +114,9 @@ pub(in crate::scenario) fn build_fluid(
                 .set_flume(w.flume.clone())
                 .map_err(|e| src.invalid("fluid.waves", e))?;
         }
+        fluid
+            .set_porous(porous.clone())
+            .map_err(|e| src.invalid("fluid.porous", e))?;
         let open = boundaries
             .faces
             .iter()
@@ -207,6 +211,7 @@ pub(in crate::scenario) fn build_fluid(
         water_volume,
         gauges: f.gauges.as_ref().map(|g| (g.positions.len(), g.interval)),
         waves,
+        porous,
     };
     Ok(Some((fluid, derived)))
 }

@@ -44,6 +44,12 @@
 //! min = [0.0, 0.0, 0.0]
 //! max = [0.057, 0.1, 0.114]
 //!
+//! [[fluid.porous]]                 # a porous zone: Darcy-Forchheimer resistance (`porous`)
+//! min = [2.0, 0.0, 0.0]            # m, the zone's box
+//! max = [3.0, 0.5, 0.4]
+//! porosity = 0.4                   # n [-]
+//! grain_diameter = 0.05            # D50 [m]; alpha = 1000, beta = 1.1 unless given
+//!
 //! [[fluid.sample]]                 # cell values along a line (or on a plane) to CSV
 //! name = "profile"
 //! kind = "line"
@@ -57,11 +63,13 @@
 
 mod air;
 mod build;
+mod porous;
 mod report;
 mod waves;
 
 pub use air::Phases;
 pub(super) use build::build_fluid;
+pub use porous::PorousSection;
 pub use report::{note_coupling, FluidDerived, CELLS_PER_DIAMETER};
 pub use waves::{Theory, Waves, WavesSection};
 
@@ -126,6 +134,11 @@ pub struct FluidSection {
     pub waves: Option<WavesSection>,
     /// Wave gauges: the surface's height at points of the bed, to `gauges.csv`, with air.
     pub gauges: Option<GaugesSection>,
+    /// Porous zones with a Darcy-Forchheimer resistance (beyond the source). Not serialized
+    /// when empty, so that the fingerprint of a scenario without zones, and the checkpoints
+    /// written before they existed, stay as they were (`run::fingerprint`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub porous: Vec<PorousSection>,
 }
 
 /// `[fluid.gauges]`: wave gauges, the water surface over points (x, y) written to

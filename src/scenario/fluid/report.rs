@@ -59,6 +59,8 @@ pub struct FluidDerived {
     pub waves: Option<super::Waves>,
     /// The water's volume at the start [m³] (the box's, without air).
     pub water_volume: f64,
+    /// Porous zones (`[[fluid.porous]]`).
+    pub porous: Vec<crate::fluid::PorousZone>,
 }
 
 /// Tells the flow's report about coupled spheres: which the grid resolves, and the fluid step
@@ -266,6 +268,12 @@ impl FluidDerived {
         if let Some(w) = &self.waves {
             s.push_str(&w.describe(g, self.fluid_step));
         }
+        s.push_str(&super::porous::describe(
+            &self.porous,
+            p.kinematic_viscosity,
+            self.fluid_step,
+            self.velocity_scale.length(),
+        ));
         let _ = match (p.driving_pressure_gradient, self.oscillatory_peak) {
             (
                 DrivingPressureGradient::Oscillatory {
