@@ -5,8 +5,9 @@
 pub mod report;
 
 use crate::fluid::reflection::{unwrapped_phase, Separation};
+use crate::fluid::stream_function::{MeanCurrent, StreamFunction};
 
-pub use super::linear_flume::{LinearFlume, Resolution, Run};
+pub use super::linear_flume::{LinearFlume, Resolution, Run, G};
 
 /// Still-water depth h [m].
 pub const DEPTH: f64 = 0.4;
@@ -39,17 +40,19 @@ pub struct Verdict {
     pub heights: Vec<f64>,
     /// Per station, the reflection coefficient [-].
     pub reflection: Vec<f64>,
-    /// The incident wave's phase speed between the first and the last station over theory's
-    /// [-].
+    /// The incident wave's phase speed between the first and the last station over linear
+    /// theory's [-].
     pub phase_speed: f64,
+    /// The same over the speed of the steady wave of this height ([`nonlinear_speed`]) [-].
+    pub nonlinear_phase_speed: f64,
 }
 
 impl Verdict {
     /// The criteria of `README.md`: the incident height at 5 wavelengths within 3 %, the phase
-    /// speed within 1 %.
+    /// speed within 1 % of the steady wave's of this height.
     pub fn passes(&self) -> bool {
         let last = self.heights.last().copied().unwrap_or(f64::NAN);
-        (last - 1.0).abs() <= 0.03 && (self.phase_speed - 1.0).abs() <= 0.01
+        (last - 1.0).abs() <= 0.03 && (self.nonlinear_phase_speed - 1.0).abs() <= 0.01
     }
 }
 
@@ -77,11 +80,25 @@ pub fn verdict(run: &Run) -> Verdict {
         k,
         dx,
     );
+    let phase_speed = k * dx / kdx;
     Verdict {
         heights,
         reflection,
-        phase_speed: k * dx / kdx,
+        phase_speed,
+        nonlinear_phase_speed: phase_speed / nonlinear_speed(),
     }
+}
+
+/// The phase speed of the steady wave of height H and period T in h, over linear theory's
+/// [-]: a stream-function wave (32 terms) with no mean Eulerian current, c_E = 0. A wave this
+/// steep (H/L = 0.027) runs 0.69 % faster than linear theory says (0.33 % with c_S = 0, no
+/// net mass transport). In the flume the water carries the Stokes transport through the test
+/// section (measured, `README.md`), which is c_E = 0.
+pub fn nonlinear_speed() -> f64 {
+    let w = FLUME.wave();
+    let s = StreamFunction::with_current(HEIGHT, PERIOD, DEPTH, G, 32, MeanCurrent::Eulerian(0.0))
+        .expect("a moderate wave has a stream-function solution");
+    s.celerity * w.k / w.omega
 }
 
 #[cfg(test)]
@@ -98,6 +115,16 @@ mod tests {
         }
         // The last array ends inside the test section.
         assert!(FLUME.station_gauges(5.0)[2] < (FLUME.generation + FLUME.section) * l);
+    }
+
+    #[test]
+    fn the_steady_wave_of_this_height_runs_faster_than_linear_theory() {
+        // Stokes' third-order amplitude dispersion at fixed period, c_E = 0: k falls by
+        // (ka)² D / (c_g/c) with D = (8 cosh⁴ − 8 cosh² + 9)/(16 sinh⁴) = 0.579 at kh = 1.717,
+        // (ka)² = 0.00737 and c_g/c = 0.611: +0.70 %. The stream-function wave agrees to the
+        // next order, (ka)⁴ ≈ 5e-5.
+        let c = nonlinear_speed();
+        assert!((c - 1.0070).abs() < 3e-4, "{c}");
     }
 
     #[test]
