@@ -1043,20 +1043,7 @@ mod tests {
         assert!(flux.abs() < 1e-10 * s.celerity * h, "{flux:e}");
         assert!(s.eulerian_current < 0.0);
         let wave = Wave::StreamFunction(s32.clone());
-        let e = 1e-5;
-        for (x, z, t) in [(0.3, -0.2, 0.1), (1.7, -0.7, 1.3), (-0.4, -0.05, 0.7)] {
-            let (u_xp, w_xp) = wave.velocity(x + e, z, t);
-            let (u_xm, w_xm) = wave.velocity(x - e, z, t);
-            let (u_zp, w_zp) = wave.velocity(x, z + e, t);
-            let (u_zm, w_zm) = wave.velocity(x, z - e, t);
-            let div = (u_xp - u_xm + w_zp - w_zm) / (2.0 * e);
-            let curl = (u_zp - u_zm - (w_xp - w_xm)) / (2.0 * e);
-            let scale = s.omega * big_h;
-            assert!(
-                div.abs() < 1e-6 * scale && curl.abs() < 1e-6 * scale,
-                "{div:e} {curl:e}"
-            );
-        }
+        crate::fluid::waves::tests::assert_potential_flow(&wave, s.omega * big_h);
         // The crest-to-trough height is H, at x = 0 and L/2.
         let ht = wave.elevation(0.0, 0.0) - wave.elevation(0.5 * s.wavelength, 0.0);
         assert!((ht - big_h).abs() < 1e-12, "{ht}");

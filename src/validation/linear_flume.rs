@@ -207,7 +207,6 @@ impl LinearFlume {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::fluid::reflection::spacing_problem;
 
     #[test]
     fn a_period_for_kh_gives_that_kh_back() {
@@ -216,24 +215,5 @@ mod tests {
             let w = Regular::new(0.02, t, 0.4, G);
             assert!((w.k * 0.4 - kh).abs() < 1e-10, "{kh}");
         }
-    }
-
-    #[test]
-    fn the_arrays_keep_mansard_and_funkes_spacing() {
-        let f = LinearFlume {
-            height: 0.04,
-            period: 1.0,
-            depth: 0.4,
-            air: 0.1,
-            generation: 1.0,
-            section: 2.0,
-            absorption: 1.5,
-            ramp: 2.0,
-            window: 3.0,
-            stations: &[0.75],
-        };
-        let l = f.wavelength();
-        let x = f.station_gauges(0.75);
-        assert_eq!(spacing_problem(x[1] - x[0], x[2] - x[0], l), None);
     }
 }

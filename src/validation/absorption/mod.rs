@@ -74,3 +74,24 @@ pub fn measure(kh: f64, res: Resolution) -> Measured {
         run,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fluid::reflection::spacing_problem;
+
+    #[test]
+    fn every_flume_keeps_mansard_and_funkes_spacing() {
+        for (kh, _) in levels(false) {
+            let f = flume(kh);
+            let l = f.wavelength();
+            let x = f.station_gauges(f.stations[0]);
+            assert_eq!(
+                spacing_problem(x[1] - x[0], x[2] - x[0], l),
+                None,
+                "kh {kh}"
+            );
+            assert!(x[2] < (f.generation + f.section) * l, "kh {kh}");
+        }
+    }
+}
