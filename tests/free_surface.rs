@@ -502,3 +502,76 @@ fn an_absorbing_zone_reflects_less_than_five_percent() {
     assert!(m.reflection < LIMIT, "{}", m.reflection);
     assert!((m.incident - 1.0).abs() < 0.1, "{}", m.incident);
 }
+
+/// The example flume (H = 4 cm, T = 1 s, h = 0.4 m) with `theory = "stream_function"`:
+/// accepted, its wave a stream-function wave a little longer than the linear one (L =
+/// 1.4637 m; nonlinear waves are longer), `order` taken; a wave at 0.95 of the highest
+/// accepted, one beyond breaking (0.22 m, the highest of that length being about 0.200 m;
+/// 0.3 m, which the linear check would also refuse) refused at `fluid.waves.height` with
+/// the reason, and `order` out of range or with another theory refused at
+/// `fluid.waves.order`.
+#[test]
+fn a_stream_function_flume_is_checked_by_key() {
+    use riprap::fluid::waves::Wave;
+    use riprap::scenario::{build, Source};
+    let example = include_str!("../examples/wave_flume.toml");
+    let dir = std::env::temp_dir();
+    let built = |text: &str| -> Result<Wave, String> {
+        let src = Source::from_str(text, "case.toml", dir.clone()).map_err(|e| e.to_string())?;
+        let b = build(&src).map_err(|e| e.to_string())?;
+        let fluid = b.simulation.fluid.expect("a fluid");
+        Ok(fluid.flume().expect("a flume").wave.clone())
+    };
+    let sf = example.replace("theory = \"linear\"", "theory = \"stream_function\"");
+    assert_ne!(sf, example);
+    let Wave::StreamFunction(s) = built(&sf).unwrap() else {
+        panic!("not a stream-function wave");
+    };
+    println!("L = {} m, c_E = {} m/s", s.wavelength, s.eulerian_current);
+    assert_eq!(s.order, riprap::fluid::stream_function::DEFAULT_ORDER);
+    assert!(
+        s.wavelength > 1.4637 && s.wavelength < 1.4637 * 1.01,
+        "{}",
+        s.wavelength
+    );
+    let with_order = sf.replace("period = 1.0 ", "period = 1.0\norder = 12 ");
+    let Wave::StreamFunction(s) = built(&with_order).unwrap() else {
+        panic!("not a stream-function wave");
+    };
+    assert_eq!(s.order, 12);
+    let refused = |text: &str, key: &str, words: &str| {
+        let e = built(text).expect_err("refused");
+        println!("{e}");
+        assert!(e.contains(key) && e.contains(words), "{e}");
+    };
+    // A taller box, so that the crest check does not come first.
+    let tall = sf.replace("max = [11.71, 0.0366, 0.5]", "max = [11.71, 0.0366, 0.8]");
+    assert_ne!(tall, sf);
+    // 0.19 m is 0.95 of the highest wave of its length (L = 1.585 m; Williams, by
+    // Fenton's fit), accepted; 0.22 m is beyond it.
+    let Wave::StreamFunction(s) = built(&tall.replace("height = 0.04 ", "height = 0.19 ")).unwrap()
+    else {
+        panic!("not a stream-function wave");
+    };
+    assert!((s.wavelength - 1.585).abs() < 1e-3, "{}", s.wavelength);
+    refused(
+        &tall.replace("height = 0.04 ", "height = 0.22 "),
+        "fluid.waves.height",
+        "beyond breaking",
+    );
+    refused(
+        &sf.replace("height = 0.04 ", "height = 0.3 "),
+        "fluid.waves.height",
+        "beyond breaking",
+    );
+    refused(
+        &sf.replace("period = 1.0 ", "period = 1.0\norder = 1 "),
+        "fluid.waves.order",
+        "from 2 to 48",
+    );
+    refused(
+        &example.replace("period = 1.0 ", "period = 1.0\norder = 12 "),
+        "fluid.waves.order",
+        "stream_function",
+    );
+}

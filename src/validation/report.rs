@@ -149,8 +149,7 @@ pub fn run_validation_cases(
     if only == Some("regular_waves") {
         all &= super::regular_waves::report::section(out, quick, &mut md)?;
     }
-    // Not yet judged (src/validation/absorption/README.md): only when named.
-    if only == Some("absorption") {
+    if run("absorption") {
         all &= super::absorption::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
