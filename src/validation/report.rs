@@ -144,9 +144,7 @@ pub fn run_validation_cases(
     if run("standing_wave") {
         all &= super::standing_wave::report::section(out, quick, &mut md)?;
     }
-    // Known to fail (src/validation/regular_waves/README.md) and five minutes at its quick
-    // level: only when named, until it passes.
-    if only == Some("regular_waves") {
+    if run("regular_waves") {
         all &= super::regular_waves::report::section(out, quick, &mut md)?;
     }
     if run("absorption") {
