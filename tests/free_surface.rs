@@ -315,6 +315,14 @@ fn a_wave_flume_in_a_scenario_is_checked_by_key() {
         "fluid.waves.height",
         "breaking limit",
     );
+    // A long wave (T = 4.11 s: L = 8 m = 20 h) of 0.8 h: under Miche's 0.86 h but above the
+    // highest steady wave of that length, 0.77 h (Williams 1981).
+    let long = example.replace("period = 1.0 ", "period = 4.11 ");
+    let e = built(&long.replace("height = 0.04 ", "height = 0.32 ")).unwrap_err();
+    assert!(
+        e.contains("fluid.waves.height") && e.contains("highest steady wave"),
+        "{e}"
+    );
     refused(
         "absorption_length = 1.5 ",
         "absorption_length = 7.5 ",

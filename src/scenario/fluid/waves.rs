@@ -144,12 +144,20 @@ pub(super) fn waves(
         }
     };
     let k = 2.0 * std::f64::consts::PI / wavelength;
-    let breaking = miche_limit(k, h);
+    // Miche's limit, or in shallow water, where Miche's 0.89 h is above what a steady wave
+    // reaches, the highest wave of Williams' (1981) solutions (Fenton's 1990 fit).
+    let miche = miche_limit(k, h);
+    let highest = stream_function::highest_wave(wavelength / h) * h;
+    let (breaking, by) = if highest < miche {
+        (highest, "the highest steady wave, Williams 1981")
+    } else {
+        (miche, "Miche")
+    };
     if height >= breaking {
         return Err(src.invalid(
             "fluid.waves.height",
             format!(
-                "{height} m is at or above the breaking limit of this wave (Miche: {breaking:.4} \
+                "{height} m is at or above the breaking limit of this wave ({by}: {breaking:.4} \
                  m for L = {wavelength:.4} m in h = {h} m)"
             ),
         ));
