@@ -37,7 +37,7 @@ pub fn section(out: &Path, quick: bool, md: &mut String) -> anyhow::Result<bool>
     );
     md.push_str(
         "| L/Δx | H/Δz | cells | steps | incident H/H₀ at 1, 2, 3, 4, 5 L | reflection \
-         coefficient | phase speed / linear | / steady wave (c_E = 0) | time | verdict |\n\
+         coefficient | phase speed / linear | / steady wave (c_S = 0) | time | verdict |\n\
          |---:|---:|---:|---:|---|---|---:|---:|---:|---|\n",
     );
     let mut all = true;
