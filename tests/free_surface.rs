@@ -490,34 +490,6 @@ fn progressive_wave(top: Boundary, periods: f64) -> (f64, f64, f64) {
     (speed, kept, energy(&f) / e_start)
 }
 
-/// The wave flume's absorbing zone, 1.5 wavelengths long, at kh = 2 on a coarse grid (L/Δx =
-/// 20, H/Δz = 2; the validation case `absorption` runs kh = 0.5 to 3 at 40 and 4): the
-/// reflection coefficient from three gauges (Mansard & Funke) below the 5 %, and the
-/// incident wave within 10 % of the generated height (the coarse grid damps it a little on
-/// its way; the case's own grid keeps it within 1 %).
-#[test]
-fn an_absorbing_zone_reflects_less_than_five_percent() {
-    use riprap::validation::absorption::{measure, Resolution, LIMIT};
-    let res = Resolution {
-        per_wavelength: 20,
-        per_height: 2,
-    };
-    let m = measure(2.0, res);
-    eprintln!(
-        "absorption, kh = 2, L/Δx = 20, H/Δz = 2: K_r {:.4}, incident H/H0 {:.3}, {} steps",
-        m.reflection, m.incident, m.run.steps
-    );
-    assert!(m.reflection < LIMIT, "{}", m.reflection);
-    assert!((m.incident - 1.0).abs() < 0.1, "{}", m.incident);
-}
-
-/// The example flume (H = 4 cm, T = 1 s, h = 0.4 m) with `theory = "stream_function"`:
-/// accepted, its wave a stream-function wave a little longer than the linear one (L =
-/// 1.4637 m; nonlinear waves are longer), `order` taken; a wave at 0.95 of the highest
-/// accepted, one beyond breaking (0.22 m, the highest of that length being about 0.200 m;
-/// 0.3 m, which the linear check would also refuse) refused at `fluid.waves.height` with
-/// the reason, and `order` out of range or with another theory refused at
-/// `fluid.waves.order`.
 #[test]
 fn a_stream_function_flume_is_checked_by_key() {
     use riprap::fluid::waves::Wave;
