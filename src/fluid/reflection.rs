@@ -19,25 +19,22 @@ use std::f64::consts::PI;
 
 use rustfft::num_complex::Complex64;
 
+use crate::math::{Mat3, Vec3};
+
 /// The complex amplitude B [m] of the record's harmonic at ω [s⁻¹] over [t0, t1] [s]:
 /// η ≈ m + Re(B e^{iωt}) by least squares with a mean m. Over whole periods of evenly spaced
 /// samples the mean and the other harmonics are orthogonal to it, so it is exact for them.
 pub fn harmonic(record: &[(f64, f64)], omega: f64, t0: f64, t1: f64) -> Complex64 {
     // Normal equations (Σ f fᵀ) x = Σ f η of η ≈ m + c cos ωt + s sin ωt, f = (1, cos, sin);
     // then B = c − i s.
-    let mut a = [[0.0_f64; 3]; 3];
-    let mut b = [0.0_f64; 3];
+    let (mut a, mut b) = (Mat3::ZERO, Vec3::ZERO);
     for &(t, eta) in record.iter().filter(|p| (t0..=t1).contains(&p.0)) {
-        let f = [1.0, (omega * t).cos(), (omega * t).sin()];
-        for i in 0..3 {
-            for j in 0..3 {
-                a[i][j] += f[i] * f[j];
-            }
-            b[i] += f[i] * eta;
-        }
+        let f = Vec3::new(1.0, (omega * t).cos(), (omega * t).sin());
+        a += Mat3::from_cols(f * f.x, f * f.y, f * f.z);
+        b += f * eta;
     }
-    let x = solve3(a, b);
-    Complex64::new(x[1], -x[2])
+    let x = a.inverse() * b;
+    Complex64::new(x.y, -x.z)
 }
 
 /// The incident and the reflected wave at one frequency.
@@ -124,23 +121,6 @@ pub fn spacing_problem(x12: f64, x13: f64, wavelength: f64) -> Option<String> {
 /// middle of Mansard & Funke's allowed range for x₁₃).
 pub fn gauge_array(x1: f64, wavelength: f64) -> [f64; 3] {
     [x1, x1 + 0.1 * wavelength, x1 + 0.25 * wavelength]
-}
-
-/// x of A x = b for a symmetric positive-definite 3×3 A (Cramer's rule).
-fn solve3(a: [[f64; 3]; 3], b: [f64; 3]) -> [f64; 3] {
-    let det = |m: [[f64; 3]; 3]| {
-        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
-            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
-    };
-    let d = det(a);
-    std::array::from_fn(|c| {
-        let mut m = a;
-        for r in 0..3 {
-            m[r][c] = b[r];
-        }
-        det(m) / d
-    })
 }
 
 /// The phase difference k Δx [rad] from phases φ₁, φ₂ [rad] measured Δx apart, unwrapped
