@@ -12,6 +12,7 @@
 //! | no-slip wall, velocity U_w | 0 | u_g = 2 U_w − u_1 (fixed wall: U_w = 0) |
 //! | free slip | 0 | u_g = u_1 (zero shear) |
 //! | inflow U_in(t) | U_in · n | u_g = 2 U_in − u_1 |
+//! | wavemaker paddle (x low) | U(z, t) of [`super::wavemaker`] | u_g = u_1 (free slip) |
 //! | outflow | convective, see [`advance_outflow`] | u_g = u_1 (zero gradient) |
 //! | open (atmosphere) | moved by the projection | u_g = u_1 out, −u_1 in (inlet-outlet) |
 //!
@@ -23,6 +24,7 @@
 //! up defined (by the last axis) and deterministic.
 
 use super::grid::StaggeredGrid;
+use super::wavemaker::Paddle;
 use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
@@ -79,6 +81,10 @@ pub enum Boundary {
     FreeSlip,
     /// Prescribed velocity, steady or oscillating in time.
     Inflow(InflowVelocity),
+    /// A wavemaker paddle ([`super::wavemaker`]): the normal velocity U(z, t) of a piston or
+    /// a flap, free slip along it. Only at x low, and only with an open top, through which the
+    /// volume the paddle sweeps leaves and comes back.
+    Wavemaker(Paddle),
     /// Convective outflow: the normal velocity is carried out by the mean outflow speed, then
     /// corrected uniformly so that the box conserves volume; tangential velocities have zero
     /// normal gradient.
@@ -149,6 +155,20 @@ impl Boundaries {
                             "boundary {} {side}: inflow period must be positive",
                             NAMES[a]
                         ))
+                    }
+                    Boundary::Wavemaker(_) if a != 0 || side != "low" => {
+                        return Err(format!(
+                            "boundary {} {side}: only x low may be a wavemaker",
+                            NAMES[a]
+                        ))
+                    }
+                    Boundary::Wavemaker(_) if self.faces[2][HIGH] != Boundary::Open => {
+                        return Err("a wavemaker needs an open top (z high), through which the \
+                                    volume it sweeps leaves and comes back"
+                            .into())
+                    }
+                    Boundary::Wavemaker(p) if !(p.period > 0.0 && p.depth > 0.0) => {
+                        return Err("a wavemaker's period and depth must be positive".into())
                     }
                     Boundary::Open if a != 2 || side != "high" => {
                         return Err(format!(
@@ -241,8 +261,18 @@ pub fn fill_velocity_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec
                         Boundary::Wall { .. } | Boundary::FreeSlip => Some(0.0),
                         Boundary::Inflow(v) => Some(v.at(t)[a]),
                         Boundary::Outflow | Boundary::Open | Boundary::Periodic => None,
+                        // Per point of the face, below.
+                        Boundary::Wavemaker(_) => None,
+                    };
+                    let paddle = match bc {
+                        Boundary::Wavemaker(p) => Some(p),
+                        _ => None,
                     };
                     for_each_in_plane(grid, a, |base| {
+                        if let Some(p) = &paddle {
+                            let z = grid.position(base + sa, Some(a)).z;
+                            f[base + sa] = p.velocity(z, t);
+                        }
                         if side == LOW {
                             // Face 0 is slot 1; face −1 (slot 0) is never read by an update
                             // of a non-periodic axis and gets the mirror of face 1.

@@ -64,6 +64,7 @@ pub mod step;
 pub mod stream_function;
 pub mod tendency;
 pub mod timestep;
+pub mod wavemaker;
 pub mod waves;
 
 pub use boundary::{Boundaries, Boundary, InflowVelocity};

@@ -44,25 +44,33 @@ pub fn tendency_row(
     start: usize,
     out: &mut [f64],
 ) {
-    match (a, sgs) {
-        (0, false) => row::<0, false>(st, u, mu_t, rho, mu, start, out),
-        (1, false) => row::<1, false>(st, u, mu_t, rho, mu, start, out),
-        (2, false) => row::<2, false>(st, u, mu_t, rho, mu, start, out),
-        (0, true) => row::<0, true>(st, u, mu_t, rho, mu, start, out),
-        (1, true) => row::<1, true>(st, u, mu_t, rho, mu, start, out),
-        (2, true) => row::<2, true>(st, u, mu_t, rho, mu, start, out),
+    let weighted = matches!(rho, Inertia::Faces(_));
+    match (a, sgs, weighted) {
+        (0, false, false) => row::<0, false, false>(st, u, mu_t, rho, mu, start, out),
+        (1, false, false) => row::<1, false, false>(st, u, mu_t, rho, mu, start, out),
+        (2, false, false) => row::<2, false, false>(st, u, mu_t, rho, mu, start, out),
+        (0, true, false) => row::<0, true, false>(st, u, mu_t, rho, mu, start, out),
+        (1, true, false) => row::<1, true, false>(st, u, mu_t, rho, mu, start, out),
+        (2, true, false) => row::<2, true, false>(st, u, mu_t, rho, mu, start, out),
+        (0, false, true) => row::<0, false, true>(st, u, mu_t, rho, mu, start, out),
+        (1, false, true) => row::<1, false, true>(st, u, mu_t, rho, mu, start, out),
+        (2, false, true) => row::<2, false, true>(st, u, mu_t, rho, mu, start, out),
+        (0, true, true) => row::<0, true, true>(st, u, mu_t, rho, mu, start, out),
+        (1, true, true) => row::<1, true, true>(st, u, mu_t, rho, mu, start, out),
+        (2, true, true) => row::<2, true, true>(st, u, mu_t, rho, mu, start, out),
         _ => panic!("velocity component {a} does not exist"),
     }
 }
 
-/// [`tendency_row`] for component `A`, with the subgrid term when `SGS`.
+/// [`tendency_row`] for component `A`, with the subgrid term when `SGS`, and the transported
+/// velocity weighted by the face densities when `W` (water and air).
 ///
 /// Names of the shifted rows: `u0` = u_a[c], `up[b]`/`um[b]` = u_a[c ± s_b]; for b ≠ a
 /// `vb0[b]` = u_b[c], `vbma[b]` = u_b[c − s_a], `vbp[b]` = u_b[c + s_b],
 /// `vbpma[b]` = u_b[c + s_b − s_a]; μ_SGS: `m0` at c, `mma` at c − s_a, `mmb[b]` at c − s_b,
 /// `mmamb[b]` at c − s_a − s_b, `mpb[b]` at c + s_b, `mpbma[b]` at c + s_b − s_a.
 #[inline(always)]
-fn row<const A: usize, const SGS: bool>(
+fn row<const A: usize, const SGS: bool, const W: bool>(
     st: &Stencil,
     u: Velocity,
     mu_t: &[f64],
@@ -93,6 +101,12 @@ fn row<const A: usize, const SGS: bool>(
         Inertia::Cells(r) => (at(r, 0), at(r, -sa)),
         Inertia::Faces(f) => (at(f, 0), at(f, 0)),
     };
+    // With `W`, the a-face densities either side along each b (for the transported velocity).
+    let rf = match rho {
+        Inertia::Cells(r) | Inertia::Faces(r) => r,
+    };
+    let rp: [&[f64]; 3] = std::array::from_fn(|b| at(rf, s[b]));
+    let rm: [&[f64]; 3] = std::array::from_fn(|b| at(rf, -s[b]));
     // μ_SGS rows; without the model they are never read (any in-bounds row will do).
     let m = if SGS { mu_t } else { u[A] };
     let (m0, mma) = (at(m, 0), at(m, -sa));
@@ -131,7 +145,16 @@ fn row<const A: usize, const SGS: bool>(
         // edges of c + s_b and c (b ≠ a).
         let mut adv = 0.0;
         for b in 0..3 {
-            if b == A {
+            if W && b != A {
+                // Across the faces parallel to u_a the transported u_a is the density-weighted
+                // mean of the two faces (advection::advection_weighted).
+                let q = r0[i];
+                let m_hi = (q * c + rp[b][i] * up[b][i]) / (q + rp[b][i]);
+                let m_lo = (rm[b][i] * um[b][i] + q * c) / (rm[b][i] + q);
+                let t_hi = 0.5 * (vbp[b][i] + vbpma[b][i]);
+                let t_lo = 0.5 * (vb0[b][i] + vbma[b][i]);
+                adv += (t_hi * m_hi - t_lo * m_lo) * inv_d[b];
+            } else if b == A {
                 let hi = 0.5 * (c + up[A][i]);
                 let lo = 0.5 * (um[A][i] + c);
                 adv += (hi * hi - lo * lo) * inv_a;
@@ -149,7 +172,7 @@ fn row<const A: usize, const SGS: bool>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::fluid::advection::advection;
+    use crate::fluid::advection::{advection, advection_weighted};
     use crate::fluid::diffusion::{molecular, subgrid};
     use crate::fluid::grid::StaggeredGrid;
     use crate::fluid::operators::interp_to_face;
@@ -199,9 +222,99 @@ mod tests {
                             let expected = -advection(&st, u, a, c) + viscous / rho_f;
                             assert_eq!(h.to_bits(), expected.to_bits(), "a {a} sgs {sgs} c {c}");
                         }
+                        // With air: face densities, and the weighted advection.
+                        tendency_row(
+                            &st,
+                            a,
+                            sgs,
+                            u,
+                            &mu_t,
+                            Inertia::Faces(&rho),
+                            mu,
+                            start,
+                            &mut out,
+                        );
+                        for (i, h) in out.iter().enumerate() {
+                            let c = start + i;
+                            let mut viscous = molecular(&st, mu, u[a], c);
+                            if sgs {
+                                viscous += subgrid(&st, u, &mu_t, a, c);
+                            }
+                            let rho_f = 0.5 * (rho[c] + rho[c]);
+                            let expected =
+                                -advection_weighted(&st, u, &rho, a, c) + viscous / rho_f;
+                            assert_eq!(
+                                h.to_bits(),
+                                expected.to_bits(),
+                                "air: a {a} sgs {sgs} c {c}"
+                            );
+                        }
                     }
                 }
             }
         }
+    }
+
+    /// Uniform density: the weighted advection is the plain one (to round-off), and on a
+    /// field with a density jump the water face does not see the air face's velocity.
+    #[test]
+    fn weighted_advection_is_plain_at_uniform_density_and_keeps_the_air_out_of_the_water() {
+        let grid = StaggeredGrid::new([6, 5, 7], Vec3::new(0.6, 0.5, 0.7), Vec3::ZERO);
+        let st = Stencil::new(&grid);
+        let field = |seed: usize| -> Vec<f64> {
+            (0..grid.len())
+                .map(|m| (((m * 7919 + seed * 104729) % 1009) as f64 / 1009.0 - 0.5) * 0.3)
+                .collect()
+        };
+        let (u0, u1, u2) = (field(1), field(2), field(3));
+        let u = [&u0[..], &u1[..], &u2[..]];
+        let rho = vec![998.0; grid.len()];
+        for a in 0..3 {
+            for k in 2..grid.n[2] {
+                for j in 2..grid.n[1] {
+                    for i in 2..grid.n[0] {
+                        let c = grid.index(i, j, k);
+                        let (p, w) = (
+                            advection(&st, u, a, c),
+                            advection_weighted(&st, u, &rho, a, c),
+                        );
+                        assert!((p - w).abs() < 1e-13, "a {a} c {c}: {p} {w}");
+                    }
+                }
+            }
+        }
+        // Water (u = 0.1 m/s) up to row ks, air above running faster (0.2 + 0.1 k m/s), a
+        // uniform w = 0.01 m/s: divergence-free, uniform along x. On the top water face the
+        // vertical flux carries out the mean of the water's and the air's u_x, so the plain
+        // mean decelerates the water by w (u_air − u_w)/(2 Δz) (0.03 m/s²); the weighted mean
+        // by that times 2 ρ_a/(ρ_w + ρ_a) = 0.0024.
+        let sz = grid.strides()[2];
+        let ks = 4;
+        let (mut ux, uz) = (vec![0.0; grid.len()], vec![0.01; grid.len()]);
+        let mut rho_x = vec![0.0; grid.len()];
+        for (c, (u, r)) in ux.iter_mut().zip(rho_x.iter_mut()).enumerate() {
+            let k = c / sz;
+            (*u, *r) = if k <= ks {
+                (0.1, 998.0)
+            } else {
+                (0.2 + 0.1 * k as f64, 1.2)
+            };
+        }
+        let zero = vec![0.0; grid.len()];
+        let u = [&ux[..], &zero[..], &uz[..]];
+        let c = grid.index(3, 3, ks);
+        let plain = advection(&st, u, 0, c);
+        let weighted = advection_weighted(&st, u, &rho_x, 0, c);
+        let u_air = 0.2 + 0.1 * (ks + 1) as f64;
+        let expected = 0.01 * (u_air - 0.1) / (2.0 * grid.spacing.z);
+        assert!(
+            (plain - expected).abs() < 1e-12,
+            "{plain} against {expected}"
+        );
+        let ratio = 2.0 * 1.2 / (998.0 + 1.2);
+        assert!(
+            (weighted / plain - ratio).abs() < 1e-12,
+            "{weighted} against {plain}"
+        );
     }
 }

@@ -8,6 +8,7 @@ use std::f64::consts::PI;
 use crate::fluid::flume::Flume;
 use crate::fluid::interface::Reconstruction;
 use crate::fluid::reflection::{gauge_array, harmonic, separate, Separation};
+use crate::fluid::wavemaker::{Paddle, PaddleKind};
 use crate::fluid::waves::{Regular, RelaxationZone, Wave};
 use crate::fluid::{Boundary, Fluid};
 use crate::math::Vec3;
@@ -38,6 +39,9 @@ pub struct LinearFlume {
     pub window: f64,
     /// The arrays' first gauges, from the generating zone's inner edge [L].
     pub stations: &'static [f64],
+    /// A wavemaker paddle at x = 0 instead of the generating zone (then `generation` is 0),
+    /// driven with the stroke of its transfer function (`fluid::wavemaker`).
+    pub paddle: Option<PaddleKind>,
 }
 
 /// The resolution of a run: cells per wavelength along x, and per wave height along z.
@@ -96,14 +100,23 @@ impl LinearFlume {
         let size = Vec3::new(length, dx, nz as f64 * dz);
         // Planes: THINC's profile feeds the waves energy (`fluid::interface`).
         let planes = Reconstruction::Plane;
-        let mut f = super::slice_under_air([nx, 1, nz], size, G, Boundary::Open, planes);
         let h = self.depth;
+        let w = self.wave();
+        let start = match self.paddle {
+            Some(kind) => {
+                let ramp = self.ramp * self.period;
+                let p = Paddle::for_wave(kind, self.height, self.period, w.k, 0.0, h, ramp);
+                Boundary::Wavemaker(p)
+            }
+            None => Boundary::FreeSlip,
+        };
+        let mut f = super::slice_under_air([nx, 1, nz], size, G, start, Boundary::Open, planes);
         f.set_water_fraction(|lo, hi| ((h - lo[2]) / (hi[2] - lo[2])).clamp(0.0, 1.0))
             .expect("the flume has air");
         f.set_flume(Flume {
             wave: Wave::Linear(self.wave()),
             still_water_level: h,
-            generation: Some(RelaxationZone {
+            generation: self.paddle.is_none().then_some(RelaxationZone {
                 inner: self.generation * l,
                 outer: 0.0,
             }),

@@ -13,8 +13,8 @@
 //!   [`dam_break`] (a water column collapsing under air, against Martin & Moyce 1952) and
 //!   [`standing_wave`] (the first sloshing mode of a tank, against linear theory), the free
 //!   surface; [`regular_waves`] (a wave generated, carried five wavelengths and absorbed)
-//!   and [`absorption`] (the absorbing zone's reflection, kh 0.5 to 3), the wave flume, both
-//!   on [`linear_flume`].
+//!   and [`absorption`] (the absorbing zone's reflection, kh 0.5 to 3), the wave flume, and
+//!   [`wavemaker`] (the height a piston or a flap makes), all on [`linear_flume`].
 
 pub mod absorption;
 pub mod block_settling;
@@ -29,6 +29,7 @@ pub mod report;
 pub mod sheet_flow;
 pub mod sphere_drag;
 pub mod standing_wave;
+pub mod wavemaker;
 pub mod wet_rebound;
 
 pub use report::{run_validation, run_validation_cases, CASES};
@@ -49,7 +50,8 @@ pub fn up_crossings(record: &[(f64, f64)], after: f64) -> Vec<f64> {
 }
 
 /// The free-surface cases' flow: `cells` over a box of `size` [m] from the origin, a 2D
-/// slice (periodic in y), free-slip walls along x and at the bottom, `top` above (a free-slip
+/// slice (periodic in y), `start` at x = 0 (free slip, or a wavemaker), free-slip walls at x
+/// = max and at the bottom, `top` above (a free-slip
 /// lid or open to the atmosphere), water without a subgrid model under air at 20 °C whose
 /// surface is carried with `reconstruction`, gravity `g` [m s⁻²] down z. The water is set by
 /// the case.
@@ -57,12 +59,13 @@ pub fn slice_under_air(
     cells: [usize; 3],
     size: Vec3,
     g: f64,
+    start: Boundary,
     top: Boundary,
     reconstruction: Reconstruction,
 ) -> Fluid {
     let grid = StaggeredGrid::new(cells, size, Vec3::ZERO);
     let bcs = Boundaries::periodic()
-        .with(0, Boundary::FreeSlip, Boundary::FreeSlip)
+        .with(0, start, Boundary::FreeSlip)
         .with(2, Boundary::FreeSlip, top);
     let mut p = FluidParameters::water();
     p.smagorinsky = None;

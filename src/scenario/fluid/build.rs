@@ -89,6 +89,10 @@ pub(in crate::scenario) fn build_fluid(
         hi,
         gravity.length(),
     )?;
+    let boundaries = match waves.as_ref().and_then(|w| w.paddle) {
+        Some(p) => super::waves::with_wavemaker(src, boundaries, p)?,
+        None => boundaries,
+    };
 
     let parameters = FluidParameters {
         density,
@@ -343,6 +347,7 @@ fn boundaries(
                 Boundary::Inflow(_) => "inflow",
                 Boundary::Outflow => "outflow",
                 Boundary::Open => "open",
+                Boundary::Wavemaker(_) => "wavemaker",
             };
             let default = |s: usize| {
                 if sections[a][s].is_none() {

@@ -103,6 +103,15 @@ fn describe(b: Boundary) -> String {
             sig4(v.period)
         ),
         Boundary::Outflow => "outflow".into(),
+        Boundary::Wavemaker(p) => format!(
+            "wavemaker: a {} of stroke {} m, period {} s",
+            match p.kind {
+                crate::fluid::wavemaker::PaddleKind::Piston => "piston",
+                crate::fluid::wavemaker::PaddleKind::Flap => "flap hinged at the bed",
+            },
+            sig4(p.stroke),
+            sig4(p.period)
+        ),
     }
 }
 

@@ -8,8 +8,9 @@ use serde::{Deserialize, Serialize};
 use super::FluidSection;
 use crate::fluid::flume::Flume;
 use crate::fluid::stream_function::{self, StreamFunction};
+use crate::fluid::wavemaker::{transfer, Paddle, PaddleKind};
 use crate::fluid::waves::{miche_limit, ursell, Cnoidal, Regular, RelaxationZone, Wave};
-use crate::fluid::{Boundaries, StaggeredGrid};
+use crate::fluid::{Boundaries, Boundary, StaggeredGrid};
 use crate::math::Vec3;
 use crate::scenario::checks::positive;
 use crate::scenario::{ScenarioError, Source};
@@ -35,6 +36,10 @@ pub struct WavesSection {
     pub absorption_length: Option<f64>,
     /// The ramp-up from rest [periods] (default 2).
     pub ramp_periods: Option<f64>,
+    /// A wavemaker paddle at x = min, "piston" or "flap" (hinged at the bed), instead of the
+    /// generating zone (`fluid::wavemaker`; linear theory only). Not hashed when absent.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub wavemaker: Option<PaddleKind>,
 }
 
 /// The theories a scenario can name.
@@ -66,8 +71,10 @@ pub struct Waves {
     pub depth: f64,
     /// See [`Waves::height`].
     pub wavelength: f64,
-    /// Zone lengths [wavelengths].
+    /// Zone lengths [wavelengths] (the generating one 0 with a wavemaker).
     pub zones: (f64, f64),
+    /// The wavemaker, if the waves are made by a paddle.
+    pub paddle: Option<Paddle>,
 }
 
 /// Checks `[fluid.waves]` for the flow box [lo, hi] with still water at `level` [m].
@@ -171,9 +178,24 @@ pub(super) fn waves(
             ),
         ));
     }
-    let generation = w.generation_length.unwrap_or(1.0);
+    if w.wavemaker.is_some() && w.theory != Theory::Linear {
+        return Err(src.invalid(
+            "fluid.waves.wavemaker",
+            "a wavemaker is driven by first-order theory: give theory = \"linear\"",
+        ));
+    }
+    if w.wavemaker.is_some() && w.generation_length.is_some() {
+        return Err(src.invalid(
+            "fluid.waves.generation_length",
+            "a wavemaker makes the waves: there is no generating zone to size",
+        ));
+    }
+    let generation = match w.wavemaker {
+        Some(_) => 0.0,
+        None => w.generation_length.unwrap_or(1.0),
+    };
     let absorption = w.absorption_length.unwrap_or(1.5);
-    if !(generation.is_finite() && generation > 0.0) {
+    if w.wavemaker.is_none() && !(generation.is_finite() && generation > 0.0) {
         return Err(src.invalid(
             "fluid.waves.generation_length",
             format!("must be positive (wavelengths), got {generation}"),
@@ -202,10 +224,13 @@ pub(super) fn waves(
             format!("must be zero or positive, got {ramp}"),
         ));
     }
+    let paddle = w
+        .wavemaker
+        .map(|kind| Paddle::for_wave(kind, height, period, k, lo.z, h, ramp * period));
     let flume = Flume {
         wave,
         still_water_level: level,
-        generation: Some(RelaxationZone {
+        generation: paddle.is_none().then_some(RelaxationZone {
             inner: lo.x + generation * wavelength,
             outer: lo.x,
         }),
@@ -223,7 +248,34 @@ pub(super) fn waves(
         depth: h,
         wavelength,
         zones: (generation, absorption),
+        paddle,
     }))
+}
+
+/// The flow's boundaries with the wavemaker `paddle` at x = min, which must be a wall (or free
+/// slip) in the scenario, under an open top.
+pub(super) fn with_wavemaker(
+    src: &Source,
+    mut bcs: Boundaries,
+    paddle: Paddle,
+) -> Result<Boundaries, ScenarioError> {
+    if !matches!(bcs.faces[0][0], Boundary::Wall { .. } | Boundary::FreeSlip) {
+        return Err(src.invalid(
+            "fluid.boundaries.x_min",
+            "the wavemaker is the x = min face: leave it a wall (\"wall\" or \"free_slip\")",
+        ));
+    }
+    if !bcs.open_top() {
+        return Err(src.invalid(
+            "fluid.waves.wavemaker",
+            "a wavemaker needs a top open to the atmosphere (fluid.boundaries.z_max kind = \
+             \"open\"), through which the volume it sweeps leaves and comes back",
+        ));
+    }
+    bcs.faces[0][0] = Boundary::Wavemaker(paddle);
+    bcs.validate()
+        .map_err(|e| src.invalid("fluid.waves.wavemaker", e))?;
+    Ok(bcs)
 }
 
 /// Where a wave of these figures lies on Le Méhauté's (1976) diagram, roughly: which theory
@@ -276,6 +328,21 @@ impl Waves {
             self.zones.1,
             self.flume.ramp_time
         );
+        if let Some(p) = &self.paddle {
+            let _ = writeln!(
+                s,
+                "waves: made by a {} at x = min with a stroke of {:.4} m (H/S = {:.4}, \
+                 first-order transfer function; `fluid::wavemaker`); the evanescent modes die out \
+                 within about 3 h = {:.2} m of it; no active absorption: keep an absorbing zone",
+                match p.kind {
+                    PaddleKind::Piston => "piston",
+                    PaddleKind::Flap => "flap hinged at the bed",
+                },
+                p.stroke,
+                transfer(p.kind, kh),
+                3.0 * h
+            );
+        }
         // (A hair under: the cell counts are rounded from the box.)
         if per_h < 3.99 || per_l < 39.9 {
             let _ = writeln!(

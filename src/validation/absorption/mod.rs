@@ -28,6 +28,7 @@ pub fn flume(kh: f64) -> LinearFlume {
         ramp: 2.0,
         window: 3.0,
         stations: &[0.75],
+        paddle: None,
     }
 }
 

@@ -31,6 +31,7 @@ pub const FLUME: LinearFlume = LinearFlume {
     ramp: 2.0,
     window: 3.0,
     stations: &[1.0, 2.0, 3.0, 4.0, 5.0],
+    paddle: None,
 };
 
 /// What the case checks of a run (`README.md`).

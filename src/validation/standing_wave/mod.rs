@@ -83,7 +83,14 @@ pub fn tank(n: usize) -> Fluid {
     let nz = (HEIGHT / dx).round() as usize;
     let size = Vec3::new(LENGTH, 2.0 * dx, nz as f64 * dx);
     let thinc = Reconstruction::Thinc;
-    let mut f = super::slice_under_air([n, 2, nz], size, G, Boundary::FreeSlip, thinc);
+    let mut f = super::slice_under_air(
+        [n, 2, nz],
+        size,
+        G,
+        Boundary::FreeSlip,
+        Boundary::FreeSlip,
+        thinc,
+    );
     let k = wavenumber();
     f.set_water_fraction(|lo, hi| {
         let m = 16;
