@@ -27,13 +27,25 @@
 //!   wave of any height short of breaking, solved numerically (Rienecker & Fenton 1981;
 //!   Fenton 1988), with no net mass transport as in a closed flume.
 //!
-//! Still open for the flume: Stokes fifth order (Fenton 1985), higher-order cnoidal theory, a
-//! current (the stream-function solver takes one; the flume does not yet).
+//! * [`Wave::Stokes5`] ([`Stokes5`], [`super::stokes5`]): Fenton's (1985) fifth-order
+//!   Stokes wave, explicit, for deep and intermediate water.
+//!
+//! A uniform current U [m s⁻¹] along x ([`Regular::with_current`]): the linear and the
+//! second-order wave ride on it with the Doppler-shifted dispersion relation
+//! ω = k U + σ, σ = √(g k tanh kh) ([`doppler_wavenumber`]); their η is unchanged, and their
+//! velocity is U plus the wave's of intrinsic frequency σ (the wave as seen moving with the
+//! current). The fifth-order and the stream-function waves take U as their mean Eulerian
+//! current c_E (Fenton's first definition of the wave speed), which for a low wave is the
+//! same dispersion relation. The flume does not yet carry a current
+//! (`scenario::fluid::waves`).
+//!
+//! Still open for the flume: higher-order cnoidal theory.
 
 use std::f64::consts::PI;
 
 use crate::math::Rng;
 
+pub use super::stokes5::Stokes5;
 pub use super::stream_function::StreamFunction;
 
 /// The wavenumber k [m⁻¹] of angular frequency `omega` [s⁻¹] in water `h` [m] deep under
@@ -54,6 +66,57 @@ pub fn wavenumber(omega: f64, h: f64, g: f64) -> f64 {
         }
     }
     k
+}
+
+/// The wavenumber k [m⁻¹] of a linear wave of angular frequency `omega` [s⁻¹] (at a fixed
+/// point) riding on a uniform current `current` U [m s⁻¹] (positive along the waves' way) in
+/// water `h` [m] deep under gravity `g` [m s⁻²]: the root of the Doppler-shifted dispersion
+/// relation
+///
+/// ```text
+/// ω = k U + σ(k),   σ(k) = √(g k tanh kh)   (σ the frequency in the frame of the current)
+/// ```
+///
+/// connected to U = 0 (the smallest root), by bisection to round-off; [`wavenumber`] when
+/// U = 0. `None` where a current against the waves blocks them: ω − k U − σ(k) is convex in
+/// k and stays positive where U < 0 is stronger than the waves' group velocity allows.
+pub fn doppler_wavenumber(omega: f64, h: f64, g: f64, current: f64) -> Option<f64> {
+    let k0 = wavenumber(omega, h, g);
+    if current == 0.0 {
+        return Some(k0);
+    }
+    let f = |k: f64| omega - k * current - (g * k * (k * h).tanh()).sqrt();
+    // With the current, f(0) = ω > 0 and f(k0) = −k0 U < 0: the root is below k0. Against
+    // it, f(k0) > 0: walk up until f changes sign, or turns up (blocked).
+    let (mut lo, mut hi) = (0.0, k0);
+    if current < 0.0 {
+        let mut last = f(k0);
+        lo = k0;
+        loop {
+            let next = hi * 1.01;
+            let v = f(next);
+            if v <= 0.0 {
+                hi = next;
+                break;
+            }
+            if v >= last || next > 1e6 * k0 {
+                return None;
+            }
+            (lo, hi, last) = (next, next, v);
+        }
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if f(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+        if hi - lo <= 1e-16 * hi {
+            break;
+        }
+    }
+    Some(0.5 * (lo + hi))
 }
 
 /// A wave to impose.
@@ -80,6 +143,8 @@ pub enum Wave {
     Cnoidal(Cnoidal),
     /// A stream-function wave, from [`StreamFunction::new`].
     StreamFunction(StreamFunction),
+    /// A fifth-order Stokes wave, from [`Stokes5::new`].
+    Stokes5(Stokes5),
 }
 
 /// A regular wave: height, period, depth, and its ω and k, solved once.
@@ -95,6 +160,8 @@ pub struct Regular {
     pub omega: f64,
     /// k [m⁻¹] from the dispersion relation.
     pub k: f64,
+    /// U [m s⁻¹], the uniform current the wave rides on (0: none).
+    pub current: f64,
 }
 
 impl Regular {
@@ -108,7 +175,29 @@ impl Regular {
             depth,
             omega,
             k: wavenumber(omega, depth, g),
+            current: 0.0,
         }
+    }
+
+    /// As [`Regular::new`], on a uniform current `current` U [m s⁻¹] along x: k from
+    /// ω = k U + √(g k tanh kh) ([`doppler_wavenumber`]); `None` where the current blocks the
+    /// wave.
+    pub fn with_current(
+        height: f64,
+        period: f64,
+        depth: f64,
+        g: f64,
+        current: f64,
+    ) -> Option<Regular> {
+        let omega = 2.0 * PI / period;
+        Some(Regular {
+            height,
+            period,
+            depth,
+            omega,
+            k: doppler_wavenumber(omega, depth, g, current)?,
+            current,
+        })
     }
 
     /// ω [s⁻¹] and k [m⁻¹].
@@ -169,6 +258,7 @@ impl Wave {
             Wave::Irregular(c) => c.iter().map(|c| c.elevation(x, t)).sum(),
             Wave::Cnoidal(c) => c.shallow(x, t).0,
             Wave::StreamFunction(s) => s.elevation(x, t),
+            Wave::Stokes5(s) => s.elevation(x, t),
         }
     }
 
@@ -178,6 +268,9 @@ impl Wave {
             Wave::Linear(r) | Wave::Stokes2(r) => {
                 let (omega, k) = r.omega_k();
                 let h = r.depth;
+                if r.current != 0.0 {
+                    return self.velocity_on_current(r, x, z, t);
+                }
                 let first = Component {
                     amplitude: 0.5 * r.height,
                     omega,
@@ -207,7 +300,26 @@ impl Wave {
                 (u, -(z + c.depth) * du_dx)
             }
             Wave::StreamFunction(s) => s.velocity(x, z, t),
+            Wave::Stokes5(s) => s.velocity(x, z, t),
         }
+    }
+
+    /// The velocity of a linear or second-order wave on its current U: U plus the wave's,
+    /// its amplitudes those of the intrinsic frequency σ = ω − k U (module docs).
+    fn velocity_on_current(&self, r: &Regular, x: f64, z: f64, t: f64) -> (f64, f64) {
+        let (omega, k) = r.omega_k();
+        let h = r.depth;
+        let sigma = omega - k * r.current;
+        let th = k * x - omega * t;
+        let a = 0.5 * r.height * sigma / (k * h).sinh();
+        let mut u = r.current + a * (k * (z + h)).cosh() * th.cos();
+        let mut w = a * (k * (z + h)).sinh() * th.sin();
+        if let Wave::Stokes2(_) = self {
+            let c = 3.0 / 16.0 * sigma * k * r.height * r.height / (k * h).sinh().powi(4);
+            u += c * (2.0 * k * (z + h)).cosh() * (2.0 * th).cos();
+            w += c * (2.0 * k * (z + h)).sinh() * (2.0 * th).sin();
+        }
+        (u, w)
     }
 
     /// The solitary wave's η, u and ∂u/∂x at (x, t).
