@@ -147,6 +147,17 @@ pub enum Wave {
     Stokes5(Stokes5),
 }
 
+/// A solitary wave with the figures a flume needs ([`Wave::solitary_wave`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SolitaryWave {
+    /// The wave.
+    pub wave: Wave,
+    /// Its speed c [m s⁻¹].
+    pub celerity: f64,
+    /// K [m⁻¹]: η = H sech² K(x − c t − x₀) (the profile's decay, at first order).
+    pub decay: f64,
+}
+
 /// A regular wave: height, period, depth, and its ω and k, solved once.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Regular {
@@ -320,6 +331,23 @@ impl Wave {
             w += c * (2.0 * k * (z + h)).sinh() * (2.0 * th).sin();
         }
         (u, w)
+    }
+
+    /// The solitary wave of `theory = "solitary"` in a scenario: height `height` [m] in water
+    /// `depth` [m] deep under gravity `g` [m s⁻²], its crest at `crest` [m] at t = 0 (today
+    /// [`Wave::Solitary`], Boussinesq's first order; the one place a higher-order solitary
+    /// wave would take over).
+    pub fn solitary_wave(height: f64, depth: f64, crest: f64, g: f64) -> SolitaryWave {
+        SolitaryWave {
+            wave: Wave::Solitary {
+                height,
+                depth,
+                crest,
+                gravity: g,
+            },
+            celerity: (g * (depth + height)).sqrt(),
+            decay: (3.0 * height / (4.0 * depth * depth * depth)).sqrt(),
+        }
     }
 
     /// The solitary wave's η, u and ∂u/∂x at (x, t).
@@ -597,12 +625,30 @@ impl Spectrum {
         f.powi(-5) * (-1.25 * (fp / f).powi(4)).exp() * self.peak_enhancement.powf(r)
     }
 
+    /// The frequency range [Hz] of [`Spectrum::components`]: 0.5 f_p to 3 f_p.
+    pub fn default_range(&self) -> (f64, f64) {
+        let fp = 1.0 / self.peak_period;
+        (0.5 * fp, 3.0 * fp)
+    }
+
     /// `n` components with equal frequency steps from 0.5 f_p to 3 f_p (midpoints), amplitudes
     /// a_i = √(2 S(f_i) Δf) scaled so that Σ a_i²/2 = H_s²/16 exactly, phases uniform from
     /// `seed`, in water `depth` [m] under gravity `g`.
     pub fn components(&self, n: usize, seed: u64, depth: f64, g: f64) -> Vec<Component> {
-        let fp = 1.0 / self.peak_period;
-        let (f0, f1) = (0.5 * fp, 3.0 * fp);
+        self.components_between(n, seed, self.default_range(), depth, g)
+    }
+
+    /// As [`Spectrum::components`], over the frequencies `range` = (f₀, f₁) [Hz]; the sea
+    /// repeats after 1/Δf = n/(f₁ − f₀) [s].
+    pub fn components_between(
+        &self,
+        n: usize,
+        seed: u64,
+        range: (f64, f64),
+        depth: f64,
+        g: f64,
+    ) -> Vec<Component> {
+        let (f0, f1) = range;
         let df = (f1 - f0) / n as f64;
         let freq = |i: usize| f0 + (i as f64 + 0.5) * df;
         let m0: f64 = (0..n).map(|i| self.shape(freq(i)) * df).sum();
@@ -797,6 +843,56 @@ pub(crate) mod tests {
         println!("kinematic residual / (ω k H²): Stokes 2 {stokes:.2e}, linear {linear:.2e}");
         assert!(stokes < 0.02, "{stokes}");
         assert!(linear > 5.0 * stokes, "{linear}");
+    }
+
+    /// A linear and a second-order wave on a current U = 0.3 m/s (T = 2 s, h = 0.8 m): k
+    /// solves ω = k U + √(g k tanh kh) to round-off and is shorter than without (the current
+    /// carries the wave), the flow is U plus a potential flow of intrinsic frequency σ
+    /// (divergence-free and irrotational) whose mean is U, and the linearised kinematic
+    /// surface condition η_t + U η_x = w at z = 0 holds to round-off for the linear one;
+    /// U = 0 gives [`Regular::new`] exactly.
+    #[test]
+    fn a_regular_wave_rides_on_its_current() {
+        let u = 0.3;
+        let r = Regular::with_current(0.05, 2.0, 0.8, G, u).unwrap();
+        let residual = r.omega - r.k * u - (G * r.k * (r.k * 0.8).tanh()).sqrt();
+        assert!(residual.abs() < 1e-14 * r.omega, "{residual:e}");
+        assert!(r.k < Regular::new(0.05, 2.0, 0.8, G).k);
+        assert_eq!(
+            Regular::with_current(0.05, 2.0, 0.8, G, 0.0),
+            Some(Regular::new(0.05, 2.0, 0.8, G))
+        );
+        for wave in [Wave::Linear(r), Wave::Stokes2(r)] {
+            assert_potential_flow(&wave, r.omega * r.height);
+            // The mean over four phases a quarter wavelength apart: U.
+            let mean = (0..4)
+                .map(|q| wave.velocity(q as f64 * 0.5 * PI / r.k, -0.4, 0.0).0)
+                .sum::<f64>()
+                / 4.0;
+            assert!((mean - u).abs() < 1e-12, "{mean}");
+        }
+        let lin = Wave::Linear(r);
+        let e = 1e-6;
+        for (x, t) in [(0.37, 0.41), (1.3, 0.9)] {
+            let eta_t = (lin.elevation(x, t + e) - lin.elevation(x, t - e)) / (2.0 * e);
+            let eta_x = (lin.elevation(x + e, t) - lin.elevation(x - e, t)) / (2.0 * e);
+            let w = lin.velocity(x, 0.0, t).1;
+            assert!((eta_t + u * eta_x - w).abs() < 1e-8, "{x} {t}");
+        }
+    }
+
+    /// The components over the default range are [`Spectrum::components`]'s, bit for bit.
+    #[test]
+    fn a_spectrum_over_its_default_range_is_unchanged() {
+        let s = Spectrum {
+            significant_height: 0.1,
+            peak_period: 1.4,
+            peak_enhancement: 3.3,
+        };
+        assert_eq!(
+            s.components(30, 5, 0.5, G),
+            s.components_between(30, 5, s.default_range(), 0.5, G)
+        );
     }
 
     /// Miche's limit is 0.142 L in deep water and tends to 0.142 · 2π h ≈ 0.89 h in shallow
