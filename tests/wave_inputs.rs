@@ -76,7 +76,10 @@ fn a_fifth_order_stokes_flume() {
         panic!("not a stream-function wave");
     };
     let rel = s.wavelength / r.wavelength - 1.0;
-    println!("L = {} m, stream function {} m ({rel:.1e})", s.wavelength, r.wavelength);
+    println!(
+        "L = {} m, stream function {} m ({rel:.1e})",
+        s.wavelength, r.wavelength
+    );
     assert!(rel.abs() < 1e-5);
     assert!(s.mass_transport.abs() < 1e-12);
     let report = report_of(&text, &std::env::temp_dir()).unwrap();
@@ -109,7 +112,10 @@ fn a_solitary_wave_flume() {
     let keys = format!("theory = \"solitary\"\nheight = 0.04\n{zones}");
     let f = fluid_of(&flume_with(&keys)).unwrap();
     let flume = f.flume().unwrap();
-    let (kk, c) = ((3.0f64 * 0.04 / (4.0 * 0.064)).sqrt(), (9.81f64 * 0.44).sqrt());
+    let (kk, c) = (
+        (3.0f64 * 0.04 / (4.0 * 0.064)).sqrt(),
+        (9.81f64 * 0.44).sqrt(),
+    );
     let Wave::Solitary { crest, height, .. } = flume.wave else {
         panic!("not a solitary wave");
     };
@@ -130,10 +136,26 @@ fn a_solitary_wave_flume() {
     let extra = inside.water_volume() - still;
     println!("the wave's volume {extra:.5e} m³ against 2H/K × width {wave:.5e} m³");
     assert!((extra / wave - 1.0).abs() < 0.02, "{extra}");
-    let report = report_of(&flume_with(&format!("{keys}crest_position = 5.0\n")), &std::env::temp_dir()).unwrap();
-    assert!(report.contains("solitary") && report.contains("starts with it"), "{report}");
-    refused(&flume_with(&format!("{keys}period = 2.0\n")), "fluid.waves.period", "does not apply");
-    refused(&flume_with(&format!("{keys}ramp_periods = 1.0\n")), "fluid.waves.ramp_periods", "does not apply");
+    let report = report_of(
+        &flume_with(&format!("{keys}crest_position = 5.0\n")),
+        &std::env::temp_dir(),
+    )
+    .unwrap();
+    println!("{report}");
+    assert!(
+        report.contains("solitary") && report.contains("starts with it"),
+        "{report}"
+    );
+    refused(
+        &flume_with(&format!("{keys}period = 2.0\n")),
+        "fluid.waves.period",
+        "does not apply",
+    );
+    refused(
+        &flume_with(&format!("{keys}ramp_periods = 1.0\n")),
+        "fluid.waves.ramp_periods",
+        "does not apply",
+    );
     refused(
         &flume_with(&format!("{keys}crest_time = 1.0\ncrest_position = 2.0\n")),
         "fluid.waves.crest_time",
@@ -144,8 +166,16 @@ fn a_solitary_wave_flume() {
         "fluid.waves.height",
         "highest solitary wave",
     );
-    refused(&flume_with(&format!("theory = \"solitary\"\n{zones}")), "fluid.waves.height", "needs");
-    refused(&flume_with(&format!("{keys}crest_position = 10.0\n")), "fluid.waves.crest_position", "absorbing zone");
+    refused(
+        &flume_with(&format!("theory = \"solitary\"\n{zones}")),
+        "fluid.waves.height",
+        "needs",
+    );
+    refused(
+        &flume_with(&format!("{keys}crest_position = 10.0\n")),
+        "fluid.waves.crest_position",
+        "absorbing zone",
+    );
 }
 
 /// `theory = "irregular"`: a JONSWAP sea (H_s = 3 cm, T_p = 1.2 s, γ = 3.3) of 50
@@ -177,18 +207,29 @@ fn an_irregular_sea_flume() {
     assert_ne!(pm.flume(), f.flume());
     let report = report_of(&flume_with(keys), &std::env::temp_dir()).unwrap();
     println!("{report}");
-    for words in ["JONSWAP spectrum, γ = 3.3", "H_s = 0.0300 m", "T_p = 1.2000 s", "50 components", "repeats after 24.0 s"] {
+    for words in [
+        "JONSWAP spectrum, γ = 3.3",
+        "H_s = 0.0300 m",
+        "T_p = 1.2000 s",
+        "50 components",
+        "repeats after 24.0 s",
+    ] {
         assert!(report.contains(words), "{words}");
     }
     let short = flume_with(&keys.replace("components = 50", "components = 10"));
-    assert!(report_of(&short, &std::env::temp_dir()).unwrap().contains("the same waves come again"));
+    assert!(report_of(&short, &std::env::temp_dir())
+        .unwrap()
+        .contains("the same waves come again"));
     refused(
         &flume_with(&keys.replace("significant_height = 0.03\n", "")),
         "fluid.waves.significant_height",
         "needs",
     );
     refused(
-        &flume_with(&format!("{}gamma = 2.0\n", keys.replace("jonswap", "pierson_moskowitz"))),
+        &flume_with(&format!(
+            "{}gamma = 2.0\n",
+            keys.replace("jonswap", "pierson_moskowitz")
+        )),
         "fluid.waves.gamma",
         "Pierson-Moskowitz",
     );
@@ -197,8 +238,16 @@ fn an_irregular_sea_flume() {
         "fluid.waves.frequency_range",
         "peak frequency",
     );
-    refused(&flume_with(&keys.replace("components = 50", "components = 0")), "fluid.waves.components", "from 1");
-    refused(&flume_with(&format!("{keys}height = 0.03\n")), "fluid.waves.height", "does not apply");
+    refused(
+        &flume_with(&keys.replace("components = 50", "components = 0")),
+        "fluid.waves.components",
+        "from 1",
+    );
+    refused(
+        &flume_with(&format!("{keys}height = 0.03\n")),
+        "fluid.waves.height",
+        "does not apply",
+    );
     refused(
         &flume_with(&keys.replace("significant_height = 0.03", "significant_height = 0.3")),
         "fluid.waves.significant_height",
@@ -242,36 +291,77 @@ fn a_measured_record_flume() {
     }
     let report = report_of(&flume_with(keys), &dir).unwrap();
     println!("{report}");
-    for words in ["`gauge.csv`, 400 samples every 0.0400 s (16.00 s", "mean 2.0000e-3 m", "T_p = 1.6000 s"] {
+    for words in [
+        "`gauge.csv`, 400 samples every 0.0400 s (16.00 s",
+        "mean 2.0000e-3 m",
+        "T_p = 1.6000 s",
+    ] {
         assert!(report.contains(words), "{words}");
     }
     let hm0 = 4.0 * (waves.iter().map(|w| 0.5 * w.0 * w.0).sum::<f64>()).sqrt();
     assert!(report.contains(&format!("H_s = {hm0:.4} m")), "{hm0}");
-    let kept = fluid_in(&flume_with(&format!("{keys}frequency_range = [0.5, 1.2]\n")), &dir).unwrap();
+    let kept = fluid_in(
+        &flume_with(&format!("{keys}frequency_range = [0.5, 1.2]\n")),
+        &dir,
+    )
+    .unwrap();
     let Wave::Irregular(cs) = &kept.flume().unwrap().wave else {
         panic!()
     };
-    assert!(cs.iter().all(|c| (0.5..=1.2).contains(&(c.omega / (2.0 * PI)))));
+    assert!(cs
+        .iter()
+        .all(|c| (0.5..=1.2).contains(&(c.omega / (2.0 * PI)))));
     assert_eq!(cs.iter().filter(|c| c.amplitude > 1e-9).count(), 2);
     let bad = |edit: &dyn Fn(&str) -> String, words: &str| {
         std::fs::write(dir.join("bad.csv"), edit(&csv)).unwrap();
-        let e = fluid_in(&flume_with("theory = \"record\"\nfile = \"bad.csv\"\n"), &dir)
-            .map(|_| ())
-            .expect_err("refused");
+        let e = fluid_in(
+            &flume_with("theory = \"record\"\nfile = \"bad.csv\"\n"),
+            &dir,
+        )
+        .map(|_| ())
+        .expect_err("refused");
         println!("{e}");
         assert!(e.contains("fluid.waves.file") && e.contains(words), "{e}");
     };
-    bad(&|c| c.replacen("0.08,", "0.08,x", 1), "bad.csv:4: column 2 (`elevation`) is not a finite number");
-    bad(&|c| c.replacen("0.08,", "0.08,1,", 1), "bad.csv:4: expected 2 columns");
-    bad(&|c| c.replacen("0.08,", "0.02,", 1), "bad.csv:4: the time 0.02 s does not come after");
-    bad(&|c| c.replacen("0.08,", "0.0805,", 1), "bad.csv:4: the record must be sampled at a uniform interval");
-    bad(&|c| c.lines().take(12).collect::<Vec<_>>().join("\n"), "at least 16");
-    bad(&|c| c.lines().take(30).collect::<Vec<_>>().join("\n"), "fewer than 4 peak periods");
-    let e = fluid_in(&flume_with("theory = \"record\"\nfile = \"none.csv\"\n"), &dir)
-        .map(|_| ())
-        .unwrap_err();
-    assert!(e.contains("fluid.waves.file") && e.contains("cannot read"), "{e}");
-    refused(&flume_with("theory = \"record\"\n"), "fluid.waves.file", "needs");
+    bad(
+        &|c| c.replacen("0.08,", "0.08,x", 1),
+        "bad.csv:4: column 2 (`elevation`) is not a finite number",
+    );
+    bad(
+        &|c| c.replacen("0.08,", "0.08,1,", 1),
+        "bad.csv:4: expected 2 columns",
+    );
+    bad(
+        &|c| c.replacen("0.08,", "0.02,", 1),
+        "bad.csv:4: the time 0.02 s does not come after",
+    );
+    bad(
+        &|c| c.replacen("0.08,", "0.0805,", 1),
+        "bad.csv:4: the record must be sampled at a uniform interval",
+    );
+    bad(
+        &|c| c.lines().take(12).collect::<Vec<_>>().join("\n"),
+        "at least 16",
+    );
+    bad(
+        &|c| c.lines().take(30).collect::<Vec<_>>().join("\n"),
+        "fewer than 4 peak periods",
+    );
+    let e = fluid_in(
+        &flume_with("theory = \"record\"\nfile = \"none.csv\"\n"),
+        &dir,
+    )
+    .map(|_| ())
+    .unwrap_err();
+    assert!(
+        e.contains("fluid.waves.file") && e.contains("cannot read"),
+        "{e}"
+    );
+    refused(
+        &flume_with("theory = \"record\"\n"),
+        "fluid.waves.file",
+        "needs",
+    );
 }
 
 /// `current = 0.2` on the example's linear wave: `check` accepts it and prints the wave on
@@ -297,12 +387,21 @@ fn a_current_is_checked_but_not_yet_run() {
     refused(&text, "fluid.waves.current", "not yet");
     for theory in ["stokes5", "stream_function"] {
         let t = text.replace("\"linear\"", &format!("\"{theory}\""));
-        assert!(report_of(&t, &std::env::temp_dir()).unwrap().contains("Eulerian mean current"));
+        assert!(report_of(&t, &std::env::temp_dir())
+            .unwrap()
+            .contains("Eulerian mean current"));
     }
-    refused(&text.replace("\"linear\"", "\"cnoidal\""), "fluid.waves.current", "does not apply");
+    refused(
+        &text.replace("\"linear\"", "\"cnoidal\""),
+        "fluid.waves.current",
+        "does not apply",
+    );
     let blocked = EXAMPLE.replace("period = 1.0 ", "period = 1.0\ncurrent = -0.9 ");
     let e = report_of(&blocked, &std::env::temp_dir()).unwrap_err();
-    assert!(e.contains("fluid.waves.current") && e.contains("blocks"), "{e}");
+    assert!(
+        e.contains("fluid.waves.current") && e.contains("blocks"),
+        "{e}"
+    );
 }
 
 /// A small flume under an irregular sea, run: JONSWAP, H_s = 3 cm, T_p = 1 s (L_p = 1.46 m

@@ -268,10 +268,7 @@ fn a_closed_flume_wave_carries_no_mass_and_is_a_potential_flow() {
     );
     assert!(rel.abs() < 1e-5 && rel / rel2 > 40.0, "{rel:e} {rel2:e}");
     assert!(s.mass_transport.abs() < 1e-12 && s.eulerian_current < 0.0);
-    crate::fluid::waves::tests::assert_potential_flow(
-        &Wave::Stokes5(s),
-        2.0 * PI / period * big_h,
-    );
+    crate::fluid::waves::tests::assert_potential_flow(&Wave::Stokes5(s), 2.0 * PI / period * big_h);
 }
 
 /// On an Eulerian current (Fenton's first definition, c_E = U): a very low wave (H/L =
@@ -292,7 +289,10 @@ fn a_wave_on_a_current_is_doppler_shifted() {
         assert!(residual.abs() < 1e-12 * omega, "{residual:e}");
         let rel = s.k / k - 1.0;
         let eps = 0.5 * s.k * big_h;
-        println!("U = {u}: k/k_Doppler − 1 = {rel:.2e} (ε² {:.1e})", eps * eps);
+        println!(
+            "U = {u}: k/k_Doppler − 1 = {rel:.2e} (ε² {:.1e})",
+            eps * eps
+        );
         assert!(rel.abs() < 1e-8, "{rel:e}");
         assert_eq!(s.eulerian_current, u);
         let deep = s.velocity(0.25 * s.wavelength, -h, 0.0).0;

@@ -85,10 +85,18 @@ pub struct WavesSection {
     pub order: Option<usize>,
     /// Wave height H [m] (regular and solitary waves). Hashed as the bare number it was when
     /// every flume needed it, so that their checkpoints still restart; not when absent.
-    #[serde(default, skip_serializing_if = "Option::is_none", serialize_with = "bare")]
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "bare"
+    )]
     pub height: Option<f64>,
     /// Wave period T [s] (regular waves); hashed as `height` is.
-    #[serde(default, skip_serializing_if = "Option::is_none", serialize_with = "bare")]
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "bare"
+    )]
     pub period: Option<f64>,
     /// The generating zone's length at x = min [wavelengths] (default 1).
     pub generation_length: Option<f64>,
@@ -318,10 +326,7 @@ fn needed<T: Copy>(
         src.invalid_at(
             &format!("fluid.waves.{key}"),
             "fluid.waves.theory",
-            format!(
-                "theory = \"{}\" needs {what} `{key}`",
-                w.theory.name()
-            ),
+            format!("theory = \"{}\" needs {what} `{key}`", w.theory.name()),
         )
     })
 }
@@ -446,10 +451,9 @@ pub(super) fn waves(
                     ))
                 }
                 (_, Some(t)) => {
-                    return Err(src.invalid(
-                        "fluid.waves.crest_time",
-                        format!("must be finite, got {t}"),
-                    ))
+                    return Err(
+                        src.invalid("fluid.waves.crest_time", format!("must be finite, got {t}"))
+                    )
                 }
             };
             if x0 >= end {
@@ -691,7 +695,10 @@ mod tests {
             (Theory::Cnoidal, "cnoidal"),
             (Theory::StreamFunction, "stream_function"),
         ] {
-            for extra in ["", "order = 12\ngeneration_length = 1.2\nramp_periods = 3.0\n"] {
+            for extra in [
+                "",
+                "order = 12\ngeneration_length = 1.2\nramp_periods = 3.0\n",
+            ] {
                 let text = format!("theory = \"{name}\"\nheight = 0.04\nperiod = 1.1\n{extra}");
                 let now: WavesSection = toml::from_str(&text).unwrap();
                 let then = Before {
