@@ -25,6 +25,7 @@
 
 use super::grid::{update_region, IndexBox, StaggeredGrid};
 use super::waves::{RelaxationZone, Wave};
+use crate::math::Vec3;
 
 /// A numerical wave flume: the wave, where the water is at rest, and the zones.
 #[derive(Clone, Debug, PartialEq)]
@@ -115,6 +116,22 @@ impl Flume {
         }
     }
 
+    /// The velocity [m s⁻¹] at t = 0 of a flume that starts with its wave in it, on a face at
+    /// `p` of a grid of cell height `dz` [m]: the generating zone's target there (the wave's
+    /// velocity on the part of the face below η, at min(z, η); zero in the air). Each face
+    /// takes its own component.
+    pub fn start_velocity(&self, p: Vec3, dz: f64) -> Vec3 {
+        let eta = self.surface(&Target::Wave, p.x, 0.0);
+        let wet = ((eta - (p.z - 0.5 * dz)) / dz).clamp(0.0, 1.0);
+        if wet == 0.0 {
+            return Vec3::ZERO;
+        }
+        let z = p.z.min(eta) - self.still_water_level;
+        let (u, w) = self.wave.velocity(p.x, z, 0.0);
+        let r = self.ramp(0.0);
+        Vec3::new(wet * r * u, 0.0, wet * r * w)
+    }
+
     /// Blends the water fraction of the interior cells towards the zones' targets at `t` [s].
     pub fn relax_water_fraction(&self, grid: &StaggeredGrid, alpha: &mut [f64], t: f64) {
         let (dx, dz) = (grid.spacing.x, grid.spacing.z);
@@ -141,7 +158,6 @@ impl Flume {
 mod tests {
     use super::*;
     use crate::fluid::waves::Regular;
-    use crate::math::Vec3;
 
     fn flume() -> Flume {
         Flume {
@@ -195,6 +211,21 @@ mod tests {
         let wa = f.absorption.unwrap().weight(grid.cell_centre(79, 0, 0).x);
         assert!((alpha[grid.cell(79, 0, 5)] - wa).abs() < 1e-15);
         assert_eq!(alpha[grid.cell(79, 0, 25)], 0.0);
+    }
+
+    /// A flume that starts with its wave in it (no ramp): a face below the surface gets the
+    /// wave's velocity, one in the air none, each its own component.
+    #[test]
+    fn a_flume_can_start_with_its_wave() {
+        let f = Flume {
+            ramp_time: 0.0,
+            ..flume()
+        };
+        let dz = 0.02;
+        let p = Vec3::new(2.1, 0.0, 0.3);
+        let (u, w) = f.wave.velocity(2.1, 0.3 - 0.4, 0.0);
+        assert_eq!(f.start_velocity(p, dz), Vec3::new(u, 0.0, w));
+        assert_eq!(f.start_velocity(Vec3::new(2.1, 0.0, 0.55), dz), Vec3::ZERO);
     }
 
     #[test]

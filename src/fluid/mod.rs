@@ -61,6 +61,7 @@ pub mod pressure;
 pub mod reflection;
 pub mod sgs;
 pub mod step;
+pub mod stokes5;
 pub mod stream_function;
 pub mod tendency;
 pub mod timestep;

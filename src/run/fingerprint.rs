@@ -3,8 +3,9 @@
 //!
 //! Covered: the time step, the run's settings that shape the state (skin, reference velocity),
 //! the domain, contact law, materials, walls (with their STL files), sphere sets and feeders,
-//! block templates, blocks with their wires and bonds, the fluid and the coupling, and the
-//! spheres the scenario creates at the start (so an edited sphere file counts as well). Not covered, so that a run can be extended or
+//! block templates, blocks with their wires and bonds, the fluid (with a wave record's file)
+//! and the coupling, and the spheres the scenario creates at the start (so an edited sphere
+//! file counts as well). Not covered, so that a run can be extended or
 //! its output changed between restarts: the run's name and end time, `max_speed` and
 //! `max_overlap_ratio` (checks, not state), `[output]` and the fluid's samples.
 
@@ -38,6 +39,20 @@ pub fn fingerprint(src: &Source, sim: &Simulation) -> Fingerprint {
         f.gauges = None;
         f
     });
+    let mut fluid_hash = hash(&fluid);
+    // A wave record is in its file: an edited record changes the flume as an edited key does.
+    // (Flumes without one hash as before.)
+    if let Some(file) = fluid
+        .as_ref()
+        .and_then(|f| f.waves.as_ref())
+        .and_then(|w| w.file.as_ref())
+    {
+        if let Ok(bytes) = std::fs::read(src.dir.join(file)) {
+            let mut h = crc32fast::Hasher::new_with_initial(fluid_hash);
+            h.update(&bytes);
+            fluid_hash = h.finalize();
+        }
+    }
 
     [
         ("time step", hash(&sim.dem.dt.to_bits())),
@@ -60,7 +75,7 @@ pub fn fingerprint(src: &Source, sim: &Simulation) -> Fingerprint {
             "blocks, wires and bonds",
             hash(&(&sc.blocks, &sc.wires, &sc.bonds)),
         ),
-        ("fluid", hash(&fluid)),
+        ("fluid", fluid_hash),
         ("coupling", hash(&sc.coupling)),
     ]
     .into_iter()

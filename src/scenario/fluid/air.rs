@@ -33,6 +33,31 @@ impl Phases {
         below + self.boxes.iter().map(|(a, b)| vol(*a, *b)).sum::<f64>()
     }
 
+    /// As [`Phases::fill`], with the water below the height `surface(x)` [m] instead of
+    /// below the level: a flume that starts with its wave in it. Each cell's fraction below
+    /// the surface is the mean over four points across it, as the flume's zones sample it.
+    pub fn fill_under(
+        &self,
+        fluid: &mut Fluid,
+        surface: impl Fn(f64) -> f64,
+    ) -> Result<(), String> {
+        fluid.set_water_fraction(|lo, hi| {
+            let below = (0..4)
+                .map(|q| {
+                    let x = lo[0] + (q as f64 + 0.5) / 4.0 * (hi[0] - lo[0]);
+                    ((surface(x) - lo[2]) / (hi[2] - lo[2])).clamp(0.0, 1.0)
+                })
+                .sum::<f64>()
+                / 4.0;
+            let boxes: f64 = self
+                .boxes
+                .iter()
+                .map(|(a, b)| box_fraction(lo, hi, *a, *b))
+                .sum();
+            (below + boxes).min(1.0)
+        })
+    }
+
     /// Sets the water fraction of every cell of `fluid` (below the level or in a box).
     pub fn fill(&self, fluid: &mut Fluid) -> Result<(), String> {
         let level = self.level;

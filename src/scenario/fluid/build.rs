@@ -114,9 +114,31 @@ pub(in crate::scenario) fn build_fluid(
                 .map_err(|e| src.invalid("fluid.air", e))?;
         }
         if let Some(w) = &waves {
+            if w.current.is_some() {
+                return Err(src.invalid(
+                    "fluid.waves.current",
+                    "not yet: the flow does not carry a current through a flume (it needs \
+                     ends that let the water through and zones that relax towards the \
+                     current); `riprap check` reports the wave on it",
+                ));
+            }
             fluid
                 .set_flume(w.flume.clone())
                 .map_err(|e| src.invalid("fluid.waves", e))?;
+            if w.starts_in_flume {
+                // The wave in the flume at t = 0: its water, and its velocity over the start's.
+                let (fl, dz) = (&w.flume, grid.spacing.z);
+                if let Some(p) = &phases {
+                    p.fill_under(&mut fluid, |x| {
+                        fl.still_water_level + fl.wave.elevation(x, 0.0)
+                    })
+                    .map_err(|e| src.invalid("fluid.waves", e))?;
+                }
+                fluid.set_velocity(|x| {
+                    u0 + amplitude * perturbation(seed, x) + fl.start_velocity(x, dz)
+                });
+                fluid.project();
+            }
         }
         fluid
             .set_porous(porous.clone())

@@ -28,7 +28,8 @@
 //! interface = "thinc"              # or "plane" (PLIC; the default with [fluid.waves])
 //!
 //! [fluid.waves]                    # a wave flume along x (needs water_level; x faces walls)
-//! theory = "linear"                # "linear", "stokes2", "cnoidal" or "stream_function"
+//! theory = "linear"                # "linear", "stokes2", "stokes5", "cnoidal", "stream_function";
+//!                                  # "solitary", "irregular", "record": their keys in `waves`
 //! # order = 32                     # Fourier terms of "stream_function" (2 to 48; default 32)
 //! height = 0.04                    # m
 //! period = 1.0                     # s

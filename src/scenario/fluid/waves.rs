@@ -1,48 +1,161 @@
 //! `[fluid.waves]`: a wave flume along x, checked, its flume for the flow, and what `check`
 //! prints about the wave.
+//!
+//! ```toml
+//! [fluid.waves]                      # regular waves
+//! theory = "stokes5"                 # "linear", "stokes2", "stokes5", "cnoidal", "stream_function"
+//! height = 0.04                      # H [m]
+//! period = 1.0                       # T [s]
+//! # order = 32                       # Fourier terms, "stream_function" only
+//! # current = 0.1                    # U [m/s]: `check` only, the flow refuses it (below)
+//!
+//! [fluid.waves]                      # one solitary wave
+//! theory = "solitary"
+//! height = 0.05                      # H [m]; the depth is the still water's
+//! # crest_time = 3.0                 # s: the crest passes the generating zone's inner edge
+//! # crest_position = 2.0             # m: or the crest's x at t = 0 (in the flume: it starts there)
+//!
+//! [fluid.waves]                      # an irregular sea
+//! theory = "irregular"
+//! spectrum = "jonswap"               # or "pierson_moskowitz"
+//! significant_height = 0.04          # H_s = H_m0 [m]
+//! peak_period = 1.2                  # T_p [s]
+//! # gamma = 3.3                      # JONSWAP's peak enhancement (default 3.3)
+//! # components = 100                 # default 100
+//! # seed = 0                         # of the random phases (default 0)
+//! # frequency_range = [0.42, 2.5]    # Hz (default 0.5 f_p to 3 f_p)
+//!
+//! [fluid.waves]                      # a measured surface elevation record
+//! theory = "record"
+//! file = "gauge.csv"                 # time [s], elevation [m] rows; relative to this file
+//! # frequency_range = [0.2, 3.0]     # Hz: the components kept (default all)
+//!
+//! generation_length = 1.0            # wavelengths at x = min (default 1)
+//! absorption_length = 1.5            # wavelengths at x = max (default 1.5; 0: none)
+//! ramp_periods = 2.0                 # ramp-up from rest (default 2; not for "solitary")
+//! ```
+//!
+//! A key that does not apply to the theory named is refused, as is a missing one it needs.
+//! "Wavelength" and "period" mean the wave's own for regular waves; for a sea the peak's
+//! (T_p and its linear L_p); for a solitary wave its effective length 2π/K (η = H sech² K(x −
+//! ct), K = √(3H/(4h³)), so that its Ursell number H L²/h³ = 16π²/3) and L/c.
+//!
+//! The solitary wave starts behind the flume's start (at x = min − 4.15/K, where it is below
+//! 1e-3 H everywhere in the flume at t = 0) unless `crest_time` or `crest_position` place it;
+//! where it is in the flume at t = 0 (above 1e-3 H anywhere) the flow starts with it: the
+//! water fraction and velocity of the wave, projected ([`Waves::starts_in_flume`]). It has no
+//! ramp. A sea's components are phased so that the record, or the random sea, is the one at
+//! the generating zone's inner edge, where the computed flow begins.
+//!
+//! A current `current` = U [m s⁻¹] along x gives the regular theories their Doppler-shifted
+//! wave (`fluid::waves` module docs; U is the Eulerian mean current c_E of the fifth-order
+//! and stream-function waves; without it they carry no mass, c_S = 0). A flume on a current
+//! needs the generating zone to impose the wave plus U, the absorbing zone to relax towards
+//! U in the water (not to rest), and ends that let water through (inflow and outflow in the
+//! water, not walls); the flow has neither yet, so `riprap check` prints the wave on its
+//! current and `riprap run` refuses it ([`Waves::current`]).
 
-use std::fmt::Write as _;
+mod describe;
+mod sea;
 
-use serde::{Deserialize, Serialize};
+use serde::{Deserialize, Serialize, Serializer};
 
 use super::FluidSection;
 use crate::fluid::flume::Flume;
-use crate::fluid::stream_function::{self, StreamFunction};
-use crate::fluid::wavemaker::{transfer, Paddle, PaddleKind};
-use crate::fluid::waves::{miche_limit, ursell, Cnoidal, Regular, RelaxationZone, Wave};
-use crate::fluid::{Boundaries, Boundary, StaggeredGrid};
+use crate::fluid::stokes5::{Stokes5, Stokes5Error};
+use crate::fluid::stream_function::{self, MeanCurrent, StreamFunction};
+use crate::fluid::waves::{miche_limit, Cnoidal, Regular, RelaxationZone, Wave};
+use crate::fluid::wavemaker::{Paddle, PaddleKind};
+use crate::fluid::{Boundaries, Boundary};
 use crate::math::Vec3;
 use crate::scenario::checks::positive;
 use crate::scenario::{ScenarioError, Source};
+
+pub use sea::{Sea, SeaSource};
 
 /// `[fluid.waves]`: waves generated at x = min and absorbed at x = max.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct WavesSection {
-    /// The wave theory: "linear", "stokes2", "cnoidal" or "stream_function".
+    /// The wave theory (module docs).
     pub theory: Theory,
     /// The number of Fourier terms N of a stream-function wave (default 32,
     /// [`stream_function::DEFAULT_ORDER`]; from 2 to 48). Not hashed when absent, so that the
     /// checkpoints of flumes written before it existed still restart (`run::fingerprint`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub order: Option<usize>,
-    /// Wave height H [m].
-    pub height: f64,
-    /// Wave period T [s].
-    pub period: f64,
+    /// Wave height H [m] (regular and solitary waves). Hashed as the bare number it was when
+    /// every flume needed it, so that their checkpoints still restart; not when absent.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "bare"
+    )]
+    pub height: Option<f64>,
+    /// Wave period T [s] (regular waves); hashed as `height` is.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "bare"
+    )]
+    pub period: Option<f64>,
     /// The generating zone's length at x = min [wavelengths] (default 1).
     pub generation_length: Option<f64>,
     /// The absorbing zone's length at x = max [wavelengths] (default 1.5; 0: none, a wall).
     pub absorption_length: Option<f64>,
     /// The ramp-up from rest [periods] (default 2).
     pub ramp_periods: Option<f64>,
+    // The keys below came later: none is hashed when absent (`run::fingerprint`).
+    /// A uniform current U [m s⁻¹] along x (regular waves; `check` only, module docs).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub current: Option<f64>,
+    /// The solitary wave's crest at t = 0 [m] (x).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub crest_position: Option<f64>,
+    /// The time the solitary wave's crest passes the generating zone's inner edge [s].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub crest_time: Option<f64>,
+    /// The sea's spectrum.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spectrum: Option<SpectrumKind>,
+    /// H_s = H_m0 = 4 √m₀ [m].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub significant_height: Option<f64>,
+    /// T_p [s].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub peak_period: Option<f64>,
+    /// JONSWAP's peak enhancement γ [-] (default 3.3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gamma: Option<f64>,
+    /// The number of components of the sea (default 100).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub components: Option<usize>,
+    /// The seed of the sea's random phases (default 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seed: Option<u64>,
+    /// The frequencies [f₀, f₁] [Hz] of the components (a sea: default 0.5 f_p to 3 f_p; a
+    /// record: default all).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub frequency_range: Option<[f64; 2]>,
+    /// The record's CSV file (time [s], elevation [m]), relative to the scenario file.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub file: Option<String>,
     /// A wavemaker paddle at x = min, "piston" or "flap" (hinged at the bed), instead of the
     /// generating zone (`fluid::wavemaker`; linear theory only). Not hashed when absent.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub wavemaker: Option<PaddleKind>,
 }
 
-/// The theories a scenario can name.
+/// Serializes a present number as the number itself (as a required key was).
+fn bare<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
+    match v {
+        Some(x) => s.serialize_f64(*x),
+        None => s.serialize_none(),
+    }
+}
+
+/// The theories a scenario can name. New ones go at the end: the checkpoints' fingerprints
+/// hash a theory by its place.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Theory {
@@ -54,6 +167,52 @@ pub enum Theory {
     Cnoidal,
     /// Stream-function (Fourier approximation, Rienecker & Fenton 1981), solved numerically.
     StreamFunction,
+    /// Stokes, fifth order (Fenton 1985).
+    Stokes5,
+    /// One solitary wave.
+    Solitary,
+    /// An irregular sea from a spectrum.
+    Irregular,
+    /// A measured surface elevation record.
+    Record,
+}
+
+impl Theory {
+    /// The name as the scenario writes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Theory::Linear => "linear",
+            Theory::Stokes2 => "stokes2",
+            Theory::Cnoidal => "cnoidal",
+            Theory::StreamFunction => "stream_function",
+            Theory::Stokes5 => "stokes5",
+            Theory::Solitary => "solitary",
+            Theory::Irregular => "irregular",
+            Theory::Record => "record",
+        }
+    }
+
+    /// A regular (periodic) wave of height and period.
+    fn regular(self) -> bool {
+        matches!(
+            self,
+            Theory::Linear
+                | Theory::Stokes2
+                | Theory::Stokes5
+                | Theory::Cnoidal
+                | Theory::StreamFunction
+        )
+    }
+}
+
+/// JONSWAP or Pierson-Moskowitz.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SpectrumKind {
+    /// JONSWAP (Hasselmann et al. 1973), peak enhancement γ.
+    Jonswap,
+    /// Pierson-Moskowitz (1964): JONSWAP with γ = 1.
+    PiersonMoskowitz,
 }
 
 /// The checked flume and the figures `check` prints.
@@ -63,18 +222,134 @@ pub struct Waves {
     pub flume: Flume,
     /// The theory named.
     pub theory: Theory,
-    /// H [m], T [s], h [m], L [m], k [m⁻¹].
+    /// H [m] (a sea: H_s).
     pub height: f64,
-    /// See [`Waves::height`].
+    /// T [s] (a sea: T_p; a solitary wave: L/c).
     pub period: f64,
-    /// See [`Waves::height`].
+    /// h [m].
     pub depth: f64,
-    /// See [`Waves::height`].
+    /// L [m] (a sea: L_p; a solitary wave: 2π/K).
     pub wavelength: f64,
-    /// Zone lengths [wavelengths] (the generating one 0 with a wavemaker).
+    /// Zone lengths [wavelengths].
     pub zones: (f64, f64),
+    /// The current U [m s⁻¹], if given: the flow does not carry it yet, and `riprap run`
+    /// refuses the scenario (module docs).
+    pub current: Option<f64>,
+    /// The solitary wave's crest at t = 0 [m] and when it passes the generating zone's inner
+    /// edge [s].
+    pub crest: Option<(f64, f64)>,
+    /// Whether the wave is in the flume at t = 0, so that the flow starts with it (a solitary
+    /// wave placed there).
+    pub starts_in_flume: bool,
+    /// A sea's figures.
+    pub sea: Option<Sea>,
     /// The wavemaker, if the waves are made by a paddle.
     pub paddle: Option<Paddle>,
+}
+
+/// sech² s = 1e-3 at s = 4.147: beyond, a solitary wave is below a thousandth of its height.
+const SOLITARY_REACH: f64 = 4.147;
+
+/// The keys each theory takes (besides `theory` and the zones').
+fn applies(key: &str, t: Theory) -> bool {
+    match key {
+        "order" => t == Theory::StreamFunction,
+        "height" => t.regular() || t == Theory::Solitary,
+        "period" => t.regular(),
+        "current" => t.regular() && t != Theory::Cnoidal,
+        "ramp_periods" => t != Theory::Solitary,
+        "crest_position" | "crest_time" => t == Theory::Solitary,
+        "spectrum" | "significant_height" | "peak_period" | "gamma" | "components" | "seed" => {
+            t == Theory::Irregular
+        }
+        "frequency_range" => matches!(t, Theory::Irregular | Theory::Record),
+        "file" => t == Theory::Record,
+        _ => true,
+    }
+}
+
+/// The keys given, by name.
+fn given(w: &WavesSection) -> [(&'static str, bool); 15] {
+    [
+        ("order", w.order.is_some()),
+        ("height", w.height.is_some()),
+        ("period", w.period.is_some()),
+        ("current", w.current.is_some()),
+        ("ramp_periods", w.ramp_periods.is_some()),
+        ("crest_position", w.crest_position.is_some()),
+        ("crest_time", w.crest_time.is_some()),
+        ("spectrum", w.spectrum.is_some()),
+        ("significant_height", w.significant_height.is_some()),
+        ("peak_period", w.peak_period.is_some()),
+        ("gamma", w.gamma.is_some()),
+        ("components", w.components.is_some()),
+        ("seed", w.seed.is_some()),
+        ("frequency_range", w.frequency_range.is_some()),
+        ("file", w.file.is_some()),
+    ]
+}
+
+/// Refuses a key given that the theory does not take.
+fn check_keys(src: &Source, w: &WavesSection) -> Result<(), ScenarioError> {
+    let all = [
+        Theory::Linear,
+        Theory::Stokes2,
+        Theory::Stokes5,
+        Theory::Cnoidal,
+        Theory::StreamFunction,
+        Theory::Solitary,
+        Theory::Irregular,
+        Theory::Record,
+    ];
+    for (key, present) in given(w) {
+        if present && !applies(key, w.theory) {
+            let takers: Vec<String> = all
+                .iter()
+                .filter(|t| applies(key, **t))
+                .map(|t| format!("\"{}\"", t.name()))
+                .collect();
+            return Err(src.invalid(
+                &format!("fluid.waves.{key}"),
+                format!(
+                    "does not apply to theory = \"{}\": it is for theory = {} only",
+                    w.theory.name(),
+                    takers.join(", ")
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The value of a key the theory needs, or an error at the theory's line.
+fn needed<T: Copy>(
+    src: &Source,
+    w: &WavesSection,
+    key: &str,
+    v: Option<T>,
+    what: &str,
+) -> Result<T, ScenarioError> {
+    v.ok_or_else(|| {
+        src.invalid_at(
+            &format!("fluid.waves.{key}"),
+            "fluid.waves.theory",
+            format!("theory = \"{}\" needs {what} `{key}`", w.theory.name()),
+        )
+    })
+}
+
+/// What a theory gives before the zones are placed.
+struct Incoming {
+    /// The wave (a sea's phases at x = 0; `None` for a solitary wave, placed later).
+    wave: Option<Wave>,
+    height: f64,
+    period: f64,
+    wavelength: f64,
+    /// The highest crest above the still level [m].
+    crest: f64,
+    sea: Option<Sea>,
+    /// A solitary wave's speed [m s⁻¹] and K [m⁻¹].
+    solitary: Option<(f64, f64)>,
 }
 
 /// Checks `[fluid.waves]` for the flow box [lo, hi] with still water at `level` [m].
@@ -103,78 +378,29 @@ pub(super) fn waves(
              x_min and x_max a kind of \"free_slip\" or \"wall\")",
         ));
     }
+    check_keys(src, w)?;
     let h = level - lo.z;
-    let height = positive(src, "fluid.waves.height", w.height)?;
-    let period = positive(src, "fluid.waves.period", w.period)?;
-    let regular = Regular::new(height, period, h, g);
-    if w.order.is_some() && w.theory != Theory::StreamFunction {
-        return Err(src.invalid(
-            "fluid.waves.order",
-            "the number of Fourier terms is for theory = \"stream_function\" only",
-        ));
-    }
-    let (wave, wavelength) = match w.theory {
-        Theory::Linear => (
-            Wave::Linear(regular),
-            2.0 * std::f64::consts::PI / regular.k,
-        ),
-        Theory::Stokes2 => (
-            Wave::Stokes2(regular),
-            2.0 * std::f64::consts::PI / regular.k,
-        ),
-        Theory::Cnoidal => {
-            let c = Cnoidal::new(height, period, h, g).ok_or_else(|| {
-                src.invalid(
-                    "fluid.waves.theory",
-                    "the cnoidal theory has no solution for this wave (too short or too low \
-                     for it): use \"stokes2\" or \"linear\"",
-                )
-            })?;
-            (Wave::Cnoidal(c), c.wavelength)
-        }
-        Theory::StreamFunction => {
-            let order = w.order.unwrap_or(stream_function::DEFAULT_ORDER);
-            if !stream_function::ORDERS.contains(&order) {
-                return Err(src.invalid(
-                    "fluid.waves.order",
-                    format!(
-                        "must be from {} to {} (Fourier terms), got {order}",
-                        stream_function::ORDERS.start(),
-                        stream_function::ORDERS.end()
-                    ),
-                ));
-            }
-            let s = StreamFunction::new(height, period, h, g, order)
-                .map_err(|e| src.invalid("fluid.waves.height", e.to_string()))?;
-            let l = s.wavelength;
-            (Wave::StreamFunction(s), l)
-        }
+    let mut inc = match w.theory {
+        Theory::Solitary => solitary(src, w, h, g)?,
+        Theory::Irregular => sea::irregular(src, w, h, g)?,
+        Theory::Record => sea::record(src, w, h, g)?,
+        _ => regular(src, w, h, g)?,
     };
-    let k = 2.0 * std::f64::consts::PI / wavelength;
-    // Miche's limit, or in shallow water, where Miche's 0.89 h is above what a steady wave
-    // reaches, the highest wave of Williams' (1981) solutions (Fenton's 1990 fit).
-    let miche = miche_limit(k, h);
-    let highest = stream_function::highest_wave(wavelength / h) * h;
-    let (breaking, by) = if highest < miche {
-        (highest, "the highest steady wave, Williams 1981")
-    } else {
-        (miche, "Miche")
-    };
-    if height >= breaking {
-        return Err(src.invalid(
-            "fluid.waves.height",
-            format!(
-                "{height} m is at or above the breaking limit of this wave ({by}: {breaking:.4} \
-                 m for L = {wavelength:.4} m in h = {h} m)"
-            ),
-        ));
+    let (height, wavelength) = (inc.height, inc.wavelength);
+    if inc.sea.is_none() {
+        breaking(src, w.theory, height, wavelength, h)?;
     }
-    if level + height > hi.z {
+    if level + inc.crest > hi.z {
         return Err(src.invalid(
-            "fluid.waves.height",
+            if inc.sea.is_some() {
+                "fluid.waves.theory"
+            } else {
+                "fluid.waves.height"
+            },
             format!(
-                "the crests would reach the top of the flow box ({} m)",
-                hi.z
+                "the crests ({:.4} m above the still water) would reach the top of the flow box \
+                 ({} m)",
+                inc.crest, hi.z
             ),
         ));
     }
@@ -224,30 +450,94 @@ pub(super) fn waves(
             format!("must be zero or positive, got {ramp}"),
         ));
     }
-    let paddle = w
-        .wavemaker
-        .map(|kind| Paddle::for_wave(kind, height, period, k, lo.z, h, ramp * period));
+    let edge = lo.x + generation * wavelength;
+    let end = hi.x - absorption * wavelength;
+    let mut crest = None;
+    let mut starts_in_flume = false;
+    let wave = match (inc.wave.take(), inc.solitary) {
+        (_, Some((c, kk))) => {
+            let x0 = match (w.crest_position, w.crest_time) {
+                (Some(_), Some(_)) => {
+                    return Err(src.invalid(
+                        "fluid.waves.crest_time",
+                        "give the crest's position or its time, not both",
+                    ))
+                }
+                (Some(x), None) if x.is_finite() => x,
+                (None, Some(t)) if t.is_finite() => edge - c * t,
+                (None, None) => lo.x - SOLITARY_REACH / kk,
+                (Some(x), _) => {
+                    return Err(src.invalid(
+                        "fluid.waves.crest_position",
+                        format!("must be finite, got {x}"),
+                    ))
+                }
+                (_, Some(t)) => {
+                    return Err(
+                        src.invalid("fluid.waves.crest_time", format!("must be finite, got {t}"))
+                    )
+                }
+            };
+            if x0 >= end {
+                return Err(src.invalid(
+                    if w.crest_time.is_some() {
+                        "fluid.waves.crest_time"
+                    } else {
+                        "fluid.waves.crest_position"
+                    },
+                    format!(
+                        "the crest would start at x = {x0:.4} m, in or beyond the absorbing zone \
+                         (from x = {end:.4} m)"
+                    ),
+                ));
+            }
+            crest = Some((x0, (edge - x0) / c));
+            starts_in_flume = x0 + SOLITARY_REACH / kk > lo.x;
+            Wave::solitary_wave(height, h, x0, g).wave
+        }
+        (Some(Wave::Irregular(mut cs)), None) => {
+            // Phased so that the sea is the one at the generating zone's inner edge.
+            for c in &mut cs {
+                c.phase -= c.k * edge;
+            }
+            Wave::Irregular(cs)
+        }
+        (Some(wave), None) => wave,
+        (None, None) => unreachable!("every theory gives a wave or a solitary one"),
+    };
+    let paddle = w.wavemaker.map(|kind| {
+        let k = 2.0 * std::f64::consts::PI / wavelength;
+        Paddle::for_wave(kind, height, inc.period, k, lo.z, h, ramp * inc.period)
+    });
     let flume = Flume {
         wave,
         still_water_level: level,
         generation: paddle.is_none().then_some(RelaxationZone {
-            inner: lo.x + generation * wavelength,
+            inner: edge,
             outer: lo.x,
         }),
         absorption: (absorption > 0.0).then_some(RelaxationZone {
-            inner: hi.x - absorption * wavelength,
+            inner: end,
             outer: hi.x,
         }),
-        ramp_time: ramp * period,
+        ramp_time: if w.theory == Theory::Solitary {
+            0.0
+        } else {
+            ramp * inc.period
+        },
     };
     Ok(Some(Waves {
         flume,
         theory: w.theory,
         height,
-        period,
+        period: inc.period,
         depth: h,
         wavelength,
         zones: (generation, absorption),
+        current: w.current,
+        crest,
+        starts_in_flume,
+        sea: inc.sea,
         paddle,
     }))
 }
@@ -278,100 +568,207 @@ pub(super) fn with_wavemaker(
     Ok(bcs)
 }
 
-/// Where a wave of these figures lies on Le Méhauté's (1976) diagram, roughly: which theory
-/// describes it.
-fn validity(kh: f64, ursell: f64) -> &'static str {
-    if ursell > 26.0 {
-        "cnoidal (Ursell number above 26)"
-    } else if kh > std::f64::consts::PI {
-        "Stokes (deep water)"
+/// Refuses a wave at or above the breaking limit: Miche's, or in shallow water, where
+/// Miche's 0.89 h is above what a steady wave reaches, the highest wave of Williams' (1981)
+/// solutions (Fenton's 1990 fit), which for a solitary wave (L → ∞) is 0.833 h.
+fn breaking(
+    src: &Source,
+    theory: Theory,
+    height: f64,
+    wavelength: f64,
+    h: f64,
+) -> Result<(), ScenarioError> {
+    let (breaking, by) = if theory == Theory::Solitary {
+        (
+            stream_function::highest_wave(1e6) * h,
+            "the highest solitary wave, Williams 1981",
+        )
     } else {
-        "Stokes (intermediate depth)"
+        let k = 2.0 * std::f64::consts::PI / wavelength;
+        let miche = miche_limit(k, h);
+        let highest = stream_function::highest_wave(wavelength / h) * h;
+        if highest < miche {
+            (highest, "the highest steady wave, Williams 1981")
+        } else {
+            (miche, "Miche")
+        }
+    };
+    if height >= breaking {
+        return Err(src.invalid(
+            "fluid.waves.height",
+            format!(
+                "{height} m is at or above the breaking limit of this wave ({by}: {breaking:.4} \
+                 m for L = {wavelength:.4} m in h = {h} m)"
+            ),
+        ));
     }
+    Ok(())
 }
 
-impl Waves {
-    /// The phase speed c = L/T [m s⁻¹]: the flow's velocity scale in a flume (water in a
-    /// wave short of breaking moves slower than its crests).
-    pub fn phase_speed(&self) -> f64 {
-        self.wavelength / self.period
+/// A regular wave: linear, Stokes (second or fifth order), cnoidal or stream-function, on
+/// its current if one is given.
+fn regular(src: &Source, w: &WavesSection, h: f64, g: f64) -> Result<Incoming, ScenarioError> {
+    let height = positive(
+        src,
+        "fluid.waves.height",
+        needed(src, w, "height", w.height, "the wave height [m]")?,
+    )?;
+    let period = positive(
+        src,
+        "fluid.waves.period",
+        needed(src, w, "period", w.period, "the wave period [s]")?,
+    )?;
+    let current = match w.current {
+        Some(u) if !u.is_finite() => {
+            return Err(src.invalid("fluid.waves.current", format!("must be finite, got {u}")))
+        }
+        u => u,
+    };
+    let blocked = || {
+        src.invalid(
+            "fluid.waves.current",
+            format!(
+                "a current of {} m/s against waves of period {period} s blocks them (it is \
+                 stronger than their group velocity): no wave",
+                current.unwrap_or(0.0)
+            ),
+        )
+    };
+    let mean = current.map_or(MeanCurrent::MassTransport(0.0), MeanCurrent::Eulerian);
+    let tau = 2.0 * std::f64::consts::PI;
+    let wave = match w.theory {
+        Theory::Linear | Theory::Stokes2 => {
+            let r = Regular::with_current(height, period, h, g, current.unwrap_or(0.0))
+                .ok_or_else(blocked)?;
+            if w.theory == Theory::Linear {
+                Wave::Linear(r)
+            } else {
+                Wave::Stokes2(r)
+            }
+        }
+        Theory::Stokes5 => {
+            let s = Stokes5::with_current(height, period, h, g, mean).map_err(|e| match e {
+                Stokes5Error::NoSolution(_) if current.is_some() => blocked(),
+                Stokes5Error::Shape { .. } => src.invalid("fluid.waves.theory", e.to_string()),
+                e => src.invalid("fluid.waves.height", e.to_string()),
+            })?;
+            Wave::Stokes5(s)
+        }
+        Theory::Cnoidal => {
+            let c = Cnoidal::new(height, period, h, g).ok_or_else(|| {
+                src.invalid(
+                    "fluid.waves.theory",
+                    "the cnoidal theory has no solution for this wave (too short or too low \
+                     for it): use \"stokes2\" or \"linear\"",
+                )
+            })?;
+            Wave::Cnoidal(c)
+        }
+        _ => {
+            let order = w.order.unwrap_or(stream_function::DEFAULT_ORDER);
+            if !stream_function::ORDERS.contains(&order) {
+                return Err(src.invalid(
+                    "fluid.waves.order",
+                    format!(
+                        "must be from {} to {} (Fourier terms), got {order}",
+                        stream_function::ORDERS.start(),
+                        stream_function::ORDERS.end()
+                    ),
+                ));
+            }
+            let s = StreamFunction::with_current(height, period, h, g, order, mean)
+                .map_err(|e| src.invalid("fluid.waves.height", e.to_string()))?;
+            Wave::StreamFunction(s)
+        }
+    };
+    let wavelength = match &wave {
+        Wave::Linear(r) | Wave::Stokes2(r) => tau / r.k,
+        Wave::Stokes5(s) => s.wavelength,
+        Wave::Cnoidal(c) => c.wavelength,
+        Wave::StreamFunction(s) => s.wavelength,
+        _ => unreachable!("a regular wave"),
+    };
+    Ok(Incoming {
+        wave: Some(wave),
+        height,
+        period,
+        wavelength,
+        crest: height,
+        sea: None,
+        solitary: None,
+    })
+}
+
+/// One solitary wave of the still water's depth.
+fn solitary(src: &Source, w: &WavesSection, h: f64, g: f64) -> Result<Incoming, ScenarioError> {
+    let height = positive(
+        src,
+        "fluid.waves.height",
+        needed(src, w, "height", w.height, "the wave height [m]")?,
+    )?;
+    let s = Wave::solitary_wave(height, h, 0.0, g);
+    let wavelength = 2.0 * std::f64::consts::PI / s.decay;
+    Ok(Incoming {
+        wave: None,
+        height,
+        period: wavelength / s.celerity,
+        wavelength,
+        crest: height,
+        sea: None,
+        solitary: Some((s.celerity, s.decay)),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The section as it was before the keys of the seas, the solitary wave and the current
+    /// (commit f4f5e07): height and period required.
+    #[derive(Serialize)]
+    struct Before {
+        theory: Theory,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        order: Option<usize>,
+        height: f64,
+        period: f64,
+        generation_length: Option<f64>,
+        absorption_length: Option<f64>,
+        ramp_periods: Option<f64>,
     }
 
-    /// The lines `riprap check` prints for the waves on `grid` with fluid step `step` [s].
-    pub fn describe(&self, grid: &StaggeredGrid, step: f64) -> String {
-        let mut s = String::new();
-        let (h, l, big_h) = (self.depth, self.wavelength, self.height);
-        let kh = 2.0 * std::f64::consts::PI / l * h;
-        let ur = ursell(big_h, l, h);
-        let _ = writeln!(
-            s,
-            "waves: {} theory, H = {big_h} m, T = {} s in h = {h} m: L = {l:.4} m, kh = {kh:.3}, \
-             H/L = {:.4}, H/h = {:.4}, Ursell number {ur:.2}; on Le Méhauté's diagram: {}",
-            match self.theory {
-                Theory::Linear => "linear",
-                Theory::Stokes2 => "Stokes second-order",
-                Theory::Cnoidal => "cnoidal",
-                Theory::StreamFunction => "stream-function",
-            },
-            self.period,
-            big_h / l,
-            big_h / h,
-            validity(kh, ur)
-        );
-        let (per_h, per_l) = (big_h / grid.spacing.z, l / grid.spacing.x);
-        let _ = writeln!(
-            s,
-            "waves: {per_h:.1} cells per H, {per_l:.1} per L, at most about {:.0} steps per period (at \
-             the velocity scale); zones {} L (generating) and {} L (absorbing); ramp over {:.1} s",
-            self.period / step,
-            self.zones.0,
-            self.zones.1,
-            self.flume.ramp_time
-        );
-        if let Some(p) = &self.paddle {
-            let _ = writeln!(
-                s,
-                "waves: made by a {} at x = min with a stroke of {:.4} m (H/S = {:.4}, \
-                 first-order transfer function; `fluid::wavemaker`); the evanescent modes die out \
-                 within about 3 h = {:.2} m of it; no active absorption: keep an absorbing zone",
-                match p.kind {
-                    PaddleKind::Piston => "piston",
-                    PaddleKind::Flap => "flap hinged at the bed",
-                },
-                p.stroke,
-                transfer(p.kind, kh),
-                3.0 * h
-            );
+    /// A flume written before the new keys hashes to the same bytes (postcard, which the
+    /// checkpoints' fingerprints hash) as it did then, with and without the optional keys,
+    /// for every theory of that time: its checkpoints still restart.
+    #[test]
+    fn old_flumes_hash_as_before() {
+        for (theory, name) in [
+            (Theory::Linear, "linear"),
+            (Theory::Stokes2, "stokes2"),
+            (Theory::Cnoidal, "cnoidal"),
+            (Theory::StreamFunction, "stream_function"),
+        ] {
+            for extra in [
+                "",
+                "order = 12\ngeneration_length = 1.2\nramp_periods = 3.0\n",
+            ] {
+                let text = format!("theory = \"{name}\"\nheight = 0.04\nperiod = 1.1\n{extra}");
+                let now: WavesSection = toml::from_str(&text).unwrap();
+                let then = Before {
+                    theory,
+                    order: now.order,
+                    height: 0.04,
+                    period: 1.1,
+                    generation_length: now.generation_length,
+                    absorption_length: now.absorption_length,
+                    ramp_periods: now.ramp_periods,
+                };
+                assert_eq!(
+                    postcard::to_stdvec(&now).unwrap(),
+                    postcard::to_stdvec(&then).unwrap(),
+                    "{text}"
+                );
+            }
         }
-        // (A hair under: the cell counts are rounded from the box.)
-        if per_h < 3.99 || per_l < 39.9 {
-            let _ = writeln!(
-                s,
-                "warning: below 4 cells per H or 40 per L, the coarsest resolution at which the \
-                 validation case regular_waves was run (src/validation/regular_waves/README.md)"
-            );
-        }
-        if self.zones.1 < 1.5 {
-            let _ = writeln!(
-                s,
-                "warning: an absorbing zone shorter than 1.5 L, the length the validation case \
-                 absorption measured (src/validation/absorption/README.md)"
-            );
-        }
-        // What the validation cases measured (their READMEs).
-        let _ = writeln!(
-            s,
-            "warning: the waves run faster as the run goes on (a known defect): a shear current \
-             builds up under the surface, and in regular_waves the phase speed ends 1.1 % above \
-             the steady wave's at both resolutions; not yet for design figures"
-        );
-        let _ = writeln!(
-            s,
-            "waves as validated: at 4 cells per H and 40 per L the incident height holds within \
-             2.6 % over 5 L (0.8 % at 8 and 80), with the surface carried by planes (a flume's \
-             default; with interface = \"thinc\" the waves grow, 26 % over 5 L); a 1.5 L \
-             absorbing zone reflects 1.8 to 3.5 % for kh 0.5 to 3 (regular_waves, absorption)"
-        );
-        s
     }
 }
