@@ -60,6 +60,7 @@ pub mod porous;
 pub mod pressure;
 pub mod reflection;
 pub mod sgs;
+pub mod solitary;
 pub mod step;
 pub mod stream_function;
 pub mod tendency;
