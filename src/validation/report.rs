@@ -80,7 +80,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 16] = [
+pub const CASES: [&str; 17] = [
     "cavity",
     "channel",
     "sphere_drag",
@@ -92,6 +92,7 @@ pub const CASES: [&str; 16] = [
     "standing_wave",
     "regular_waves",
     "absorption",
+    "solitary_wave",
     "sheet_flow",
     "sheet_flow_sensitivity",
     "sheet_flow_report",
@@ -151,6 +152,9 @@ pub fn run_validation_cases(
     }
     if run("absorption") {
         all &= super::absorption::report::section(out, quick, &mut md)?;
+    }
+    if run("solitary_wave") {
+        all &= super::solitary_wave::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
         all &= sections::ensemble(out, quick, case5, &mut md)?;
