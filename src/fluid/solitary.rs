@@ -34,7 +34,7 @@
 //!   REEF3D's `wave_lib_solitary_3rd` (α, c, η and w's coefficients) and a Fortran routine
 //!   `fent3` "according to the solution of Fenton (1972)" (α, c, η, u₀, u₁, u₂ and w's
 //!   coefficients). (OpenFOAM's w has lost its factor √(3ε) Y T and the sign of 9/8; REEF3D's
-//!   u has misplaced brackets: neither is used.) Found with the search tool's code corpus.
+//!   u has misplaced brackets: those parts are not used.) All three are public repositories.
 //! * c: Fenton (1972) gives c²/(gh) = 1 + ε − 1/20 ε² − 3/70 ε³ − …, the same four terms;
 //!   to first order it is KdV's c = √(gh) (1 + ε/2) (test `the_speed_is_fentons_to_third_order`).
 //! * The tests hold the wave to the Euler equations themselves: the kinematic and dynamic
@@ -44,6 +44,7 @@
 //!   irrotational to O(ε⁴) and divergence-free to round-off, and Grimshaw's own w agrees with
 //!   the one from continuity to O(ε^4.5). c's ε³ and α's ε² coefficients first enter the
 //!   equations at fourth order: for them the sources above are the check.
+//!
 //! The theory is an asymptotic series: its error grows as ε⁴ (about 1e-4 at ε = 0.1, 2e-3
 //! at ε = 0.2), so [`Solitary::new`] accepts ε up to 0.6 (the highest solitary wave is
 //! ε = 0.833, Williams 1981).

@@ -203,10 +203,11 @@ fn solve3(mut m: [[f64; 3]; 3], mut r: [f64; 3]) -> Option<[f64; 3]> {
         if m[col][col] == 0.0 {
             return None;
         }
+        let pivot = m[col];
         for row in col + 1..3 {
-            let f = m[row][col] / m[col][col];
-            for k in col..3 {
-                m[row][k] -= f * m[col][k];
+            let f = m[row][col] / pivot[col];
+            for (a, p) in m[row][col..].iter_mut().zip(&pivot[col..]) {
+                *a -= f * p;
             }
             r[row] -= f * r[col];
         }
