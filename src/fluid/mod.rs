@@ -60,6 +60,7 @@ pub mod porous;
 pub mod pressure;
 pub mod reflection;
 pub mod sgs;
+pub mod solitary;
 pub mod step;
 pub mod stokes5;
 pub mod stream_function;

@@ -14,6 +14,9 @@
 //! * [`Wave::Solitary`] (Boussinesq, first order): η = H sech² K(x − c t − x₀),
 //!   K = √(3H/(4h³)), c = √(g (h + H)); u = c η/(h + η) uniform over the depth (the flux
 //!   through a section moving with the wave is zero), w = −(z + h) ∂u/∂x (continuity).
+//! * [`Wave::SolitaryThirdOrder`] ([`Solitary`], [`super::solitary`]): the solitary wave to
+//!   third order in H/h (Grimshaw 1971; Fenton 1972's first three orders), its shape, speed
+//!   and velocity accurate to O((H/h)⁴) where the first-order wave's are to O((H/h)²).
 //! * [`Wave::Irregular`]: a sum of linear components ([`Spectrum`]: JONSWAP, or
 //!   Pierson-Moskowitz as γ = 1) with phases from a seed.
 //!
@@ -45,6 +48,7 @@ use std::f64::consts::PI;
 
 use crate::math::Rng;
 
+pub use super::solitary::Solitary;
 pub use super::stokes5::Stokes5;
 pub use super::stream_function::StreamFunction;
 
@@ -137,6 +141,9 @@ pub enum Wave {
         /// g [m s⁻²].
         gravity: f64,
     },
+    /// A solitary wave to third order (Grimshaw 1971), from [`Solitary::new`]; the
+    /// first-order wave above stays as it was for its callers.
+    SolitaryThirdOrder(Solitary),
     /// A sum of linear components.
     Irregular(Vec<Component>),
     /// A cnoidal wave (first order), from [`Cnoidal::new`].
@@ -266,6 +273,7 @@ impl Wave {
                 eta
             }
             Wave::Solitary { .. } => self.solitary(x, t).0,
+            Wave::SolitaryThirdOrder(s) => s.elevation(x, t),
             Wave::Irregular(c) => c.iter().map(|c| c.elevation(x, t)).sum(),
             Wave::Cnoidal(c) => c.shallow(x, t).0,
             Wave::StreamFunction(s) => s.elevation(x, t),
@@ -302,6 +310,7 @@ impl Wave {
                 let (_, u, du_dx) = self.solitary(x, t);
                 (u, -(z + depth) * du_dx)
             }
+            Wave::SolitaryThirdOrder(s) => s.velocity(x, z, t),
             Wave::Irregular(cs) => cs.iter().fold((0.0, 0.0), |(u, w), c| {
                 let (du, dw) = c.velocity(x, z, t);
                 (u + du, w + dw)

@@ -14,7 +14,8 @@
 //!   [`standing_wave`] (the first sloshing mode of a tank, against linear theory), the free
 //!   surface; [`regular_waves`] (a wave generated, carried five wavelengths and absorbed)
 //!   and [`absorption`] (the absorbing zone's reflection, kh 0.5 to 3), the wave flume, and
-//!   [`wavemaker`] (the height a piston or a flap makes), all on [`linear_flume`].
+//!   [`wavemaker`] (the height a piston or a flap makes), all on [`linear_flume`];
+//!   [`solitary_wave`] (a solitary wave's height and speed over ten depths of travel).
 
 pub mod absorption;
 pub mod block_settling;
@@ -27,6 +28,7 @@ pub mod linear_flume;
 pub mod regular_waves;
 pub mod report;
 pub mod sheet_flow;
+pub mod solitary_wave;
 pub mod sphere_drag;
 pub mod standing_wave;
 pub mod wavemaker;

@@ -80,7 +80,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 17] = [
+pub const CASES: [&str; 18] = [
     "cavity",
     "channel",
     "sphere_drag",
@@ -93,6 +93,7 @@ pub const CASES: [&str; 17] = [
     "regular_waves",
     "absorption",
     "wavemaker",
+    "solitary_wave",
     "sheet_flow",
     "sheet_flow_sensitivity",
     "sheet_flow_report",
@@ -156,6 +157,9 @@ pub fn run_validation_cases(
     // Half an hour at its full level: only when named.
     if only == Some("wavemaker") {
         all &= super::wavemaker::report::section(out, quick, &mut md)?;
+    }
+    if run("solitary_wave") {
+        all &= super::solitary_wave::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
         all &= sections::ensemble(out, quick, case5, &mut md)?;
