@@ -25,8 +25,10 @@
 //! cell-mean face density the air above the surface spun up to several times the water's
 //! speed, and the mode's period came out 7 % short at L/Δ = 50. With the segment density it
 //! is +0.5 % at L/Δ = 50 and +0.4 % at 100. The air still moves faster than the water near the
-//! surface (0.5 m/s against 0.15 m/s), as in other one-fluid VOF codes; momentum carried with
-//! the same fluxes as α (Rudman 1998) would be the next remedy, if needed.
+//! surface (0.5 m/s against 0.15 m/s), as in other one-fluid VOF codes. So that the water does
+//! not take in that velocity as its own, the momentum advection weights the transported velocity
+//! by the faces' densities across the faces parallel to each component (`advection`, "Water and
+//! air"; without it a shear current grew under waves and they ran 1.1 % fast).
 
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
