@@ -78,7 +78,8 @@ fn still_tank(top: Boundary) {
     assert!(lo >= 0.0 && hi <= 1.0);
 }
 
-/// The quick level of the validation case `dam_break` (Δ = a/8): a column a wide and 2a high
+/// The quick level of the validation case `dam_break` (Δ = a/12; a/8 is too coarse for the
+/// surge since the momentum advection of 2026-12-06, README.md of the case): a column a wide and 2a high
 /// (a = 2.25 in) collapsing in a tank 5a long, against Martin & Moyce (1952). It must meet the
 /// case's criteria (`src/validation/dam_break/README.md`): front speed over the surge within
 /// 10 % of the measured, a lead in time of 0 to 0.4 (the measured release was not instant),
@@ -86,10 +87,10 @@ fn still_tank(top: Boundary) {
 #[test]
 fn a_collapsing_column_runs_out_like_martin_and_moyce() {
     use riprap::validation::dam_break::{run, verdict};
-    let r = run(8).unwrap();
+    let r = run(12).unwrap();
     let v = verdict(&r);
     eprintln!(
-        "dam break a/8: front speed {:.3} (measured {:.3}), lead {:.3}, H rms {:.3}, volume \
+        "dam break a/12: front speed {:.3} (measured {:.3}), lead {:.3}, H rms {:.3}, volume \
          change {:.1e}, {} steps, at most {} CG iterations",
         v.speed.0, v.speed.1, v.lead, v.height_rms, r.volume_change, r.steps, r.max_iterations
     );

@@ -176,23 +176,9 @@ impl LinearFlume {
     }
 
     /// Writes the run's records to `path` as CSV: t [s], then η [m] at each gauge (named by
-    /// its x [m]), one row per step.
+    /// its x [m]), one row per step ([`write_gauges`]).
     pub fn write_records(run: &Run, path: &std::path::Path) -> std::io::Result<()> {
-        use std::io::Write as _;
-        let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
-        write!(w, "t")?;
-        for x in &run.gauges {
-            write!(w, ",eta_x{x:.4}")?;
-        }
-        writeln!(w)?;
-        for (q, &(t, _)) in run.records[0].iter().enumerate() {
-            write!(w, "{t:.6}")?;
-            for r in &run.records {
-                write!(w, ",{:.7e}", r[q].1)?;
-            }
-            writeln!(w)?;
-        }
-        w.flush()
+        write_gauges(&run.gauges, &run.records, path)
     }
 
     /// Per station, the incident and the reflected wave over the run's last window.
@@ -215,6 +201,30 @@ impl LinearFlume {
         let k = kh / depth;
         2.0 * PI / (G * k * kh.tanh()).sqrt()
     }
+}
+
+/// Writes gauge records to `path` as CSV: t [s], then η [m] at each gauge of `gauges` (named
+/// by its x [m]), one row per sample of the records (all sampled at the same times).
+pub fn write_gauges(
+    gauges: &[f64],
+    records: &[Vec<(f64, f64)>],
+    path: &std::path::Path,
+) -> std::io::Result<()> {
+    use std::io::Write as _;
+    let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
+    write!(w, "t")?;
+    for x in gauges {
+        write!(w, ",eta_x{x:.4}")?;
+    }
+    writeln!(w)?;
+    for (q, &(t, _)) in records[0].iter().enumerate() {
+        write!(w, "{t:.6}")?;
+        for r in records {
+            write!(w, ",{:.7e}", r[q].1)?;
+        }
+        writeln!(w)?;
+    }
+    w.flush()
 }
 
 #[cfg(test)]

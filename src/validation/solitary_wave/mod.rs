@@ -322,23 +322,9 @@ pub fn run(res: Resolution, reconstruction: Reconstruction) -> Run {
 }
 
 /// Writes the run's records to `path` as CSV: t [s], then η [m] at each gauge (named by its
-/// x [m]), one row per step.
+/// x [m]), one row per step (`linear_flume::write_gauges`).
 pub fn write_records(run: &Run, path: &std::path::Path) -> std::io::Result<()> {
-    use std::io::Write as _;
-    let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
-    write!(w, "t")?;
-    for x in &run.gauges {
-        write!(w, ",eta_x{x:.4}")?;
-    }
-    writeln!(w)?;
-    for (q, &(t, _)) in run.records[0].iter().enumerate() {
-        write!(w, "{t:.6}")?;
-        for r in &run.records {
-            write!(w, ",{:.7e}", r[q].1)?;
-        }
-        writeln!(w)?;
-    }
-    w.flush()
+    super::linear_flume::write_gauges(&run.gauges, &run.records, path)
 }
 
 #[cfg(test)]
