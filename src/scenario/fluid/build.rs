@@ -90,6 +90,9 @@ pub(in crate::scenario) fn build_fluid(
         gravity.length(),
     )?;
 
+    let (obstacles, obstacle_summaries) =
+        super::obstacles::obstacles(src, f, &grid, &boundaries, waves.as_ref())?;
+
     let parameters = FluidParameters {
         density,
         kinematic_viscosity: nu,
@@ -125,6 +128,10 @@ pub(in crate::scenario) fn build_fluid(
         if amplitude > 0.0 || open {
             fluid.project();
         }
+        // After the start's projection, which does not know them: the solid starts at rest.
+        fluid
+            .set_obstacles(&obstacles)
+            .map_err(|e| src.invalid("fluid.obstacles", e))?;
         Some(fluid)
     } else {
         None
@@ -212,6 +219,9 @@ pub(in crate::scenario) fn build_fluid(
         gauges: f.gauges.as_ref().map(|g| (g.positions.len(), g.interval)),
         waves,
         porous,
+        obstacles: obstacle_summaries,
+        obstacle_sections: f.obstacles.clone(),
+        spheres: !radii.is_empty(),
     };
     Ok(Some((fluid, derived)))
 }
