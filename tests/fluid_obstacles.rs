@@ -10,10 +10,10 @@
 //!   of their hydrostatic forces, ½ ρ_w g (h₁² − h₂²) W plus the air's: to 1e-9 with the levels
 //!   on cell faces (the discrete hydrostatic pressure is then exact at the cell centres), and
 //!   to 0.1 % with a level inside a cell.
-//! * A square cylinder in an oscillating flow (KC = 0.5, a periodic array of spacing 10 D):
-//!   Morison's inertia coefficient against the potential-flow added mass of a square section,
-//!   C_A = 1.51 π (D/2)² (DNV-RP-C205, 2010, Table A-1; Newman 1977, Marine Hydrodynamics):
-//!   C_M = 1 + 1.51 π/4 = 2.186.
+//! * A square cylinder (a periodic array of spacing 10 D) started from rest by a uniform drive,
+//!   and in an oscillating flow (KC = 0.5): Morison's inertia coefficient against the
+//!   potential-flow added mass of a square section, C_A = 1.51 π (D/2)² (DNV-RP-C205, 2010,
+//!   Table A-1): C_M = 1 + 1.51 π/4 = 2.186, within 2 % and 5 %.
 //! * A restart continues a flume with an obstacle, its force file included, bit for bit.
 //!
 //! Run: `cargo test --release --test fluid_obstacles -- --nocapture`.
@@ -166,9 +166,8 @@ file = "cube.stl"
     // The cube, cut to the slice's 1 cm: 10 × 10 cells.
     assert_eq!(cells[2].solid_cells, 100);
     assert!((cells[2].covered_volume - 0.1 * 0.1 * 0.01).abs() < 1e-15);
-    // The beach: z < 2 (x − 0.4) ... a 1:0.5 slope from x = 0.4 to the end: 0.2 m of length
-    // in 0.6: the triangle 0.2 × 0.4 / 2 (the box's top cuts it at z = 0.4).
-    let beach = 0.5 * 0.2 * 0.4 * 0.01;
+    // The beach: z < (x − 0.4)/2, a 1:2 slope from x = 0.4 to the end, 0.1 m high there.
+    let beach = 0.5 * 0.2 * 0.1 * 0.01;
     assert!(
         (cells[0].covered_volume / beach - 1.0).abs() < 1e-3,
         "{}",
@@ -179,7 +178,7 @@ file = "cube.stl"
     for line in [
         "obstacles: 3 fixed solid(s)",
         "obstacle 0 `beach`: half-space below the plane",
-        "slope 1:0.5",
+        "slope 1:2",
         "obstacle 1 `caisson`: box",
         "150 solid cells",
         "forces every 0.01 s",
@@ -219,14 +218,14 @@ fn bad_obstacles_are_refused_by_key() {
     refused_at(
         &with("name = \"a\"\nkind = \"box\"\nmin = [0.1, 0.0, 0.0]\nmax = [0.2, 0.01, 0.0]\n"),
         &dir,
-        "max = ",
+        "max = [0.2, 0.01, 0.0]",
         &format!("{k}.max"),
         "the box is empty",
     );
     refused_at(
         &with("name = \"a\"\nkind = \"box\"\nmin = [1.1, 0.0, 0.0]\nmax = [1.2, 0.01, 0.1]\n"),
         &dir,
-        "min = ",
+        "min = [1.1",
         &format!("{k}.min"),
         "outside the flow box",
     );
@@ -235,7 +234,7 @@ fn bad_obstacles_are_refused_by_key() {
             "name = \"a\"\nkind = \"plane\"\npoint = [0.1, 0.0, 0.0]\nnormal = [0.0, 0.0, 0.0]\n",
         ),
         &dir,
-        "normal = ",
+        "normal = [0.0, 0.0, 0.0]",
         &format!("{k}.normal"),
         "non-zero",
     );
@@ -378,7 +377,7 @@ normal = [-1.0, 0.0, 5.0]
         .fold((1.0f64, 0.0f64), |(l, h), &a| (l.min(a), h.max(a)));
     eprintln!(
         "still water over a 1:5 beach, 1 s in {} steps: largest |u| {worst:.2e} m/s, volume \
-         change {dv:.1e}, α in [{lo:e}, {hi}], at most {} CG iterations in the last step",
+         change {dv:.1e}, α in [{lo:e}, {hi}], {} CG iterations in the last step",
         f.steps(),
         f.last_solve().iterations
     );
@@ -437,12 +436,11 @@ fn a_wall_between_two_basins_feels_their_hydrostatic_difference() {
     assert!((force / expected - 1.0).abs() < 1e-3);
 }
 
-/// Morison's inertia coefficient of a square cylinder (D = 0.1 m) in a periodic box of 10 D
-/// in an oscillating flow, U = U_max sin(2π t/T), KC = U_max T/D = 0.5, from the second
-/// period: F = C_M ρ D² L_y dU/dt + ½ ρ C_D D L_y U|U|, fitted by least squares.
-fn inertia_coefficient(cells_per_side: usize) -> (f64, f64) {
+/// A square cylinder of side D = 0.1 m in a periodic box of 10 D (one cell thick), driven
+/// along x by a uniform force density f_d = ρ dU/dt: the scenario.
+fn square_in_a_box(cells_per_side: usize, drive: &str, max_step: f64) -> Fluid {
     let n = 10 * cells_per_side;
-    let text = format!(
+    fluid_of(&format!(
         r#"[run]
 name = "square"
 end_time = 2.0
@@ -458,12 +456,10 @@ cells = [{n}, 1, {n}]
 density = 1000.0
 kinematic_viscosity = 1.0e-6
 smagorinsky = false
-max_time_step = 0.005
+max_time_step = {max_step}
 
 [fluid.driving_pressure_gradient]
-kind = "oscillatory"
-velocity_amplitude = [0.05, 0.0, 0.0]
-period = 1.0
+{drive}
 
 [[fluid.obstacles]]
 name = "square"
@@ -472,9 +468,55 @@ min = [0.45, -1.0, 0.45]
 max = [0.55, 1.0, 0.55]
 "#,
         dy = 1.0 / n as f64
+    ))
+}
+
+/// The potential-flow inertia coefficient C_M = 1 + C_A of a square section,
+/// C_A = 1.51 π (D/2)² / D² (DNV-RP-C205, 2010, Table A-1).
+fn potential_inertia() -> f64 {
+    1.0 + 1.51 * std::f64::consts::PI / 4.0
+}
+
+/// Started from rest by a steady f_d, the flow of the first step is potential (no vorticity
+/// yet, no advection): F = C_M f_d D² L_y with the potential-flow C_M. Measured: D/Δ = 10
+/// +1.15 %, 20 −0.13 %, 40 −0.64 % (the periodic array of spacing 10 D shifts C_A by O(D²/L²),
+/// about 1 %): within 2 %.
+#[test]
+fn a_square_cylinder_started_from_rest_has_the_potential_added_mass() {
+    let reference = potential_inertia();
+    for side in [10, 20] {
+        let mut f = square_in_a_box(
+            side,
+            "kind = \"steady\"\nforce_density = [100.0, 0.0, 0.0]",
+            1e-3,
+        );
+        f.step(1e-3);
+        let ly = f.grid().spacing.y;
+        let c_m = f.obstacle_forces()[0].total().x / (100.0 * 0.01 * ly);
+        eprintln!(
+            "square started from rest, D/Δ = {side}: C_M = {c_m:.4} (potential flow \
+             {reference:.4}, {:+.2} %)",
+            100.0 * (c_m / reference - 1.0)
+        );
+        assert!((c_m / reference - 1.0).abs() < 0.02, "{c_m}");
+    }
+}
+
+/// Morison's inertia coefficient of the square in an oscillating flow,
+/// U = U_max sin(2π t/T), T = 1 s, KC = U_max T/D = 0.5, D/Δ = 10, Δt = T/200, fitted over
+/// the second period by least squares to F = C_M ρ D² L_y dU/dt + ½ ρ C_D D L_y U|U|. Measured:
+/// C_M −1.9 % from the potential-flow value (D/Δ = 20: +1.0 %; at KC = 0.1, D/Δ = 10, 20, 30:
+/// +1.1, −0.3, −0.9 %): within 5 %, the impulsive start's 2 % and what separation at the sharp
+/// corners takes at KC = 0.5. (C_D comes out 3.5, 4.0 at D/Δ = 20: not compared.)
+#[test]
+fn a_square_cylinder_in_an_oscillating_flow_keeps_the_potential_added_mass() {
+    let (kc, d, period, rho) = (0.5, 0.1, 1.0, 1000.0);
+    let u_max = kc * d / period;
+    let drive = format!(
+        "kind = \"oscillatory\"\nvelocity_amplitude = [{u_max}, 0.0, 0.0]\nperiod = {period}"
     );
-    let mut f = fluid_of(&text);
-    let (rho, d, ly, u_max, period) = (1000.0, 0.1, 1.0 / n as f64, 0.05, 1.0);
+    let mut f = square_in_a_box(10, &drive, period / 200.0);
+    let ly = f.grid().spacing.y;
     let omega = std::f64::consts::TAU / period;
     // Normal equations of F = a x + b y, x = ρ D² L_y dU/dt, y = ½ ρ D L_y U|U|.
     let (mut xx, mut xy, mut yy, mut fx, mut fy) = (0.0, 0.0, 0.0, 0.0, 0.0);
@@ -497,15 +539,9 @@ max = [0.55, 1.0, 0.55]
     let det = xx * yy - xy * xy;
     let c_m = (fx * yy - fy * xy) / det;
     let c_d = (xx * fy - xy * fx) / det;
-    (c_m, c_d)
-}
-
-#[test]
-fn a_square_cylinder_in_an_oscillating_flow_has_the_potential_added_mass() {
-    let reference = 1.0 + 1.51 * std::f64::consts::PI / 4.0;
-    let (c_m, c_d) = inertia_coefficient(10);
+    let reference = potential_inertia();
     eprintln!(
-        "square cylinder, KC = 0.5, D/Δ = 10: C_M = {c_m:.4} (potential flow {reference:.4}, \
+        "square cylinder, KC = {kc}, D/Δ = 10: C_M = {c_m:.4} (potential flow {reference:.4}, \
          {:+.2} %), C_D = {c_d:.3}",
         100.0 * (c_m / reference - 1.0)
     );

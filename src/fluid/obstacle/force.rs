@@ -12,19 +12,21 @@
 //! with x_ref the corner of the flow box highest against gravity (its top), where the
 //! atmosphere's pressure is the gauge zero: under an open top p̄ = 0 on the top face and p is
 //! the gauge pressure, the air's weight above included. On a face between a solid cell and
-//! the fluid cell F the pressure is F's, carried the half cell to the face with F's own
-//! density ρ_F = ρ(α_F) (ρ̄_F without air):
+//! the fluid cell F the pressure is F's, carried the half cell to the face by the balance that
+//! holds where the normal velocity is zero, ∂p/∂n = ρ g · n (ρ Du/Dt = −∇p + ρ g with
+//! u · n = 0), with F's own density ρ_F = ρ(α_F) (ρ̄_F without air):
 //!
 //! ```text
-//! p_face = p̄_F + (ρ_w g − f_d) · (x_F − x_ref) + (ρ_F/ρ_w) (ρ_w g − f_d) · (x_face − x_F)
+//! p_face = p̄_F + (ρ_w g − f_d) · (x_F − x_ref) + ρ_F g · (x_face − x_F)
 //! F_p   += p_face A_a e_a  (solid above the face)   or   − p_face A_a e_a  (below)
 //! ```
 //!
 //! A_a = ΔV/Δ_a the face's area. p̄_F at the cell centre is what the discrete momentum
 //! equation of the fluid next to the solid balances against the closed face, so the force is
-//! the momentum the flow gives the solid; in still water it is the hydrostatic force exactly
-//! (the half-cell term is the hydrostatic pressure change over the half cell, with the density
-//! of what fills it). A solid that touches a wall of the box feels no pressure on that side
+//! the momentum the flow gives the solid; in still water it is the hydrostatic force exactly.
+//! The drive's part of p is taken at the cell centre, not carried to the face: the closed
+//! face's half of F is not driven (its velocity is held), so that the discrete fluid pushes
+//! the solid as one half a cell larger on each side, f_d V (1 + Δ/D) for a block of side D. A solid that touches a wall of the box feels no pressure on that side
 //! (no fluid is there), so its force depends on the gauge: the atmosphere's zero at the top.
 //! In a box closed at the top p̄'s constant is the projection's own (the mean p̄ of its
 //! start) and a solid touching a wall feels it on its other faces.
@@ -102,8 +104,7 @@ impl Obstacles {
                 Some(air) => super::super::phases::density(alpha[s.fluid], rho_w, air.density),
                 None => rho[s.fluid],
             };
-            let p_face =
-                p[s.fluid] + excluded.dot(x_f - x_ref) + rho_f / rho_w * excluded.dot(x_face - x_f);
+            let p_face = p[s.fluid] + excluded.dot(x_f - x_ref) + rho_f * g.dot(x_face - x_f);
             let area = volume / h[a];
             let sign = if s.solid_above { 1.0 } else { -1.0 };
             out[s.owner].pressure[a] += sign * p_face * area;
