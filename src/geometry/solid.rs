@@ -311,7 +311,7 @@ impl ClosedMesh {
             .sum::<f64>()
             / 6.0;
         let size = (hi - lo).max_element();
-        if !(signed.abs() > 1e-12 * size.powi(3)) {
+        if signed.abs().partial_cmp(&(1e-12 * size.powi(3))) != Some(std::cmp::Ordering::Greater) {
             return Err(OpenMesh::Flat);
         }
         let mut m = ClosedMesh {

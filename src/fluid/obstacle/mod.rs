@@ -252,14 +252,14 @@ impl Obstacles {
         // The open faces next to a closed face, for the viscous exchange.
         let is_closed = |a: usize, c: usize| closed[a].binary_search(&c).is_ok();
         let mut exchanges = Vec::new();
-        for a in 0..3 {
+        for (a, region) in projected.iter().enumerate() {
             for c in 0..grid.len() {
-                if !in_region(&projected[a], c) || is_closed(a, c) {
+                if !in_region(region, c) || is_closed(a, c) {
                     continue;
                 }
-                for b in 0..3 {
+                for (b, &sb) in st.iter().enumerate() {
                     for side in [-1i8, 1] {
-                        let g = if side > 0 { c + st[b] } else { c - st[b] };
+                        let g = if side > 0 { c + sb } else { c - sb };
                         if is_closed(a, g) {
                             exchanges.push(Exchange {
                                 face: c,

@@ -124,9 +124,9 @@ fn still_water_around_solids_stays_still_and_pushes_them_hydrostatically() {
             }
         }
     }
-    for c in 0..grid.len() {
+    for (c, a0) in alpha0.iter().enumerate() {
         if o.owner(c).is_some() {
-            assert_eq!(f.water_fraction()[c].to_bits(), alpha0[c].to_bits());
+            assert_eq!(f.water_fraction()[c].to_bits(), a0.to_bits());
         }
     }
     let dv = (f.water_volume() - v0) / v0;
@@ -188,9 +188,9 @@ fn a_collapsing_column_does_not_pass_through_a_dam() {
         seen = seen.max(largest(&f));
     }
     let o = f.obstacles().unwrap();
-    for c in 0..grid.len() {
+    for (c, a0) in alpha0.iter().enumerate() {
         if o.owner(c).is_some() {
-            assert_eq!(f.water_fraction()[c].to_bits(), alpha0[c].to_bits());
+            assert_eq!(f.water_fraction()[c].to_bits(), a0.to_bits());
         }
         for a in 0..3 {
             if o.is_closed(a, c) {

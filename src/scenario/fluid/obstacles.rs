@@ -39,6 +39,7 @@ use crate::geometry::solid::SUBSAMPLES;
 use crate::geometry::{CellGrid, ClosedMesh, Plane, Solid, TriMesh};
 use crate::math::{Mat3, Vec3};
 use crate::scenario::checks::{finite, positive};
+use crate::scenario::text::{sig4, vec4};
 use crate::scenario::{ScenarioError, Source};
 
 use super::{FluidSection, Waves};
@@ -259,7 +260,7 @@ fn solid(src: &Source, i: usize, o: &ObstacleSection) -> Result<(Solid, String),
                     ),
                 ));
             }
-            let shape = format!("box {min} to {max} m");
+            let shape = format!("box {} to {} m", vec4(min), vec4(max));
             (Solid::Box { min, max }, shape)
         }
         ObstacleKind::Plane => {
@@ -270,7 +271,9 @@ fn solid(src: &Source, i: usize, o: &ObstacleSection) -> Result<(Solid, String),
             }
             let n = normal.normalize();
             let shape = format!(
-                "half-space below the plane through {point} m with normal {n} (slope {})",
+                "half-space below the plane through {} m with normal {} (slope {})",
+                vec4(point),
+                vec4(n),
                 slope(n)
             );
             (Solid::HalfSpace(Plane::new(point, n)), shape)
@@ -294,8 +297,10 @@ fn solid(src: &Source, i: usize, o: &ObstacleSection) -> Result<(Solid, String),
                 .map_err(|e| src.invalid(&key("file"), format!("{}: {e}", path.display())))?;
             let (l, h) = closed.bounding_box();
             let shape = format!(
-                "mesh of {} triangles from {file}, {l} to {h} m",
-                mesh.triangles().len()
+                "mesh of {} triangles from {file}, {} to {} m",
+                mesh.triangles().len(),
+                vec4(l),
+                vec4(h)
             );
             (Solid::Mesh(closed), shape)
         }
@@ -310,7 +315,7 @@ fn slope(n: Vec3) -> String {
     } else if n.z.abs() < 1e-12 {
         "vertical".into()
     } else {
-        format!("1:{:.4}", n.z.abs() / horizontal)
+        format!("1:{}", sig4(n.z.abs() / horizontal))
     }
 }
 
