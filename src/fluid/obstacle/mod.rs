@@ -41,6 +41,16 @@
 //! water that p̄ leaves out) and the viscous stresses the momentum stencils exchange with the
 //! closed faces: the very momentum the flow gives the solid.
 //!
+//! **Measured** (tests here and in `tests/fluid_obstacles.rs`): still water under air around
+//! boxes and over a 1:5 beach stays still to 3e-12 m/s, the water's volume to 1e-13; the
+//! hydrostatic force on a submerged box is ρ_w g V, and on a wall between two basins
+//! ½ ρ_w g (h₁² − h₂²) W with the air's, to 1e-9 (3e-4 with a level inside a cell); a square
+//! cylinder's inertia coefficient is the potential-flow added mass of DNV-RP-C205 (C_M = 2.186)
+//! to 1.2 % at D/Δ = 10 and 0.6 % at 40 from rest, −1.9 % in an oscillating flow at KC = 0.5;
+//! a collapsing column against a dam keeps the solid's α to the bit. A flume with a 1:20 beach
+//! (`examples/sloping_beach.toml`) takes as many steps and as long for its first 2 s as the
+//! same flume without the beach: closing faces does not slow the conjugate gradients there.
+//!
 //! Obstacles are configuration, not state: a restart rebuilds them from the scenario, and
 //! their forces are a function of the state (velocity, pressure, α, μ_SGS), so they continue
 //! bit for bit. Every loop over the grid runs by z-planes, each writing its own; the force sums
