@@ -362,7 +362,8 @@ fn zones_clear(
 }
 
 /// `riprap check`'s lines on the obstacles: per obstacle its shape, the volume it covers on the
-/// grid and its cells; `interval` the default of `force_interval` [s].
+/// grid and its cells, and when its forces are written; with `spheres`, that they pass through
+/// obstacles. `cell_volume` is ΔV [m³].
 pub(super) fn describe(
     obstacles: &[ObstacleSummary],
     sections: &[ObstacleSection],
