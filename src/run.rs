@@ -232,6 +232,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         if sc.fluid.as_ref().is_some_and(|f| f.gauges.is_some()) {
             samples.push(flow::GAUGES_FILE.to_string());
         }
+        samples.extend((sc.fluid.iter()).flat_map(|f| f.obstacles.iter().map(|o| o.file_name())));
         let removed = owned::clear(&out, &samples)?;
         if opts.progress && !removed.is_empty() {
             eprintln!(
@@ -278,6 +279,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         &out,
         resuming,
         kinds.flow.then_some(flow_interval),
+        interval(sc.output.series_interval, 500.0),
         format,
     )?;
     let mut probes = Vec::new();

@@ -53,6 +53,7 @@ pub mod forcing;
 pub mod grid;
 pub mod interface;
 pub mod model;
+pub mod obstacle;
 pub mod operators;
 pub mod phases;
 pub mod plic;

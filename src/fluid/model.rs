@@ -7,6 +7,7 @@ use super::boundary::{
 use super::forcing::DrivingPressureGradient;
 use super::grid::{IndexBox, StaggeredGrid, Stencil};
 use super::interface::{Clipped, Interface};
+use super::obstacle::{Obstacle, ObstacleForce, Obstacles};
 use super::operators::{cell_velocity, cell_vorticity, divergence};
 use super::phases::{self, Air};
 use super::porous::{Porosity, PorousZone};
@@ -149,6 +150,8 @@ pub struct Fluid {
     pub(super) last_solve: Solve,
     /// Porous zones and their faces' resistance ([`Fluid::set_porous`]); `None` without.
     pub(super) porosity: Option<Porosity>,
+    /// Fixed obstacles and the faces they close ([`Fluid::set_obstacles`]); `None` without.
+    pub(super) obstacles: Option<Obstacles>,
 }
 
 /// Cell-centred copies of the fields for output (compact, nx·ny·nz, i fastest: the order of
@@ -184,6 +187,16 @@ pub fn updated_faces(grid: &StaggeredGrid, boundaries: &Boundaries) -> [IndexBox
             lo..grid.n[a] + 1
         })
     })
+}
+
+/// The faces of each component that the projection moves: [`updated_faces`], and the top
+/// faces when the top is open (p = 0 there).
+pub fn projected_faces(grid: &StaggeredGrid, boundaries: &Boundaries) -> [IndexBox; 3] {
+    let mut projected = updated_faces(grid, boundaries);
+    if boundaries.open_top() {
+        projected[2][2] = 2..grid.n[2] + 2;
+    }
+    projected
 }
 
 impl Fluid {
@@ -227,11 +240,7 @@ impl Fluid {
             },
         };
         let regions = updated_faces(&grid, &boundaries);
-        // The projection also moves the top faces when the top is open (p = 0 there).
-        let mut projected: [IndexBox; 3] = regions.clone();
-        if boundaries.open_top() {
-            projected[2][2] = 2..grid.n[2] + 2;
-        }
+        let projected = projected_faces(&grid, &boundaries);
         let mut fluid = Fluid {
             grid,
             boundaries,
@@ -263,6 +272,7 @@ impl Fluid {
             clipped: Clipped::default(),
             last_solve: Solve::default(),
             porosity: None,
+            obstacles: None,
         };
         fluid.fill_ghosts();
         Ok(fluid)
@@ -358,6 +368,39 @@ impl Fluid {
     /// The porous zones and their faces, if any.
     pub fn porosity(&self) -> Option<&Porosity> {
         self.porosity.as_ref()
+    }
+
+    /// Gives the flow fixed obstacles ([`super::obstacle`]: their solid cells' faces closed,
+    /// in the projection too); an empty list removes them. Obstacles are configuration, not
+    /// state: a restart rebuilds them. The velocity on the closed faces is set to zero. Fails
+    /// as [`Obstacles::new`] does.
+    pub fn set_obstacles(&mut self, obstacles: &[Obstacle]) -> Result<(), String> {
+        if obstacles.is_empty() {
+            self.obstacles = None;
+            return Ok(());
+        }
+        let o = Obstacles::new(&self.grid, &self.boundaries, &self.projected, obstacles)?;
+        o.clear_velocity(&mut self.state.velocity);
+        self.fill_ghosts();
+        if self.face_density[0].is_empty() {
+            // Without air the exact projection of an obstacle's flow needs ρ_f.
+            self.face_density = std::array::from_fn(|_| self.grid.field());
+        }
+        self.obstacles = Some(o);
+        Ok(())
+    }
+
+    /// The obstacles, if any.
+    pub fn obstacles(&self) -> Option<&Obstacles> {
+        self.obstacles.as_ref()
+    }
+
+    /// The force of the flow on each obstacle at the current time ([`super::obstacle::force`]);
+    /// empty without obstacles.
+    pub fn obstacle_forces(&self) -> Vec<ObstacleForce> {
+        self.obstacles
+            .as_ref()
+            .map_or_else(Vec::new, |o| o.forces(self))
     }
 
     /// The flume, if the flow is one.

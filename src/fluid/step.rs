@@ -212,6 +212,19 @@ impl Fluid {
             flume.relax_velocity(&grid, &self.regions, &mut state.velocity, prev, t + dt);
         }
 
+        // Fixed obstacles: their faces closed, to the projection too (`obstacle`).
+        if let Some(obstacles) = &self.obstacles {
+            let cells = par.air.is_none().then_some(&state.mixture_density[..]);
+            let pressures = [&mut state.pressure[..], &mut state.previous_pressure[..]];
+            obstacles.close(
+                &grid,
+                &mut state.velocity,
+                &mut self.face_density,
+                pressures,
+                cells,
+            );
+        }
+
         // Boundary values at tⁿ⁺¹, then the projection. Without history (first step) p̂ = 0
         // would be a poor guess wherever ρ̄ varies: iterate the splitting to convergence.
         let passes = if first {
@@ -234,8 +247,8 @@ impl Fluid {
             next: &mut self.next_pressure,
         };
         let (u, rho) = (&mut state.velocity, &state.mixture_density);
-        if par.air.is_some() {
-            // Air over water: the exact projection (`pressure::pcg`).
+        if par.air.is_some() || self.obstacles.is_some() {
+            // Air over water, or obstacles: the exact projection (`pressure::pcg`).
             let rho_f = &self.face_density;
             let solve = (self.projection).project_exact(
                 &grid,

@@ -14,6 +14,7 @@ pub mod cuboid;
 pub mod cylinder;
 pub mod mesh;
 pub mod plane;
+pub mod solid;
 pub mod stl;
 pub mod triangle;
 
@@ -21,6 +22,7 @@ pub use cuboid::Cuboid;
 pub use cylinder::Cylinder;
 pub use mesh::{MeshError, TriMesh};
 pub use plane::Plane;
+pub use solid::{CellGrid, ClosedMesh, OpenMesh, Solid};
 pub use stl::StlError;
 pub use triangle::{closest_point_on_triangle, sphere_triangle_contacts, Feature};
 

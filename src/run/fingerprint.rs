@@ -3,11 +3,11 @@
 //!
 //! Covered: the time step, the run's settings that shape the state (skin, reference velocity),
 //! the domain, contact law, materials, walls (with their STL files), sphere sets and feeders,
-//! block templates, blocks with their wires and bonds, the fluid (with a wave record's file)
-//! and the coupling, and the spheres the scenario creates at the start (so an edited sphere
-//! file counts as well). Not covered, so that a run can be extended or
+//! block templates, blocks with their wires and bonds, the fluid (with a wave record's file
+//! and its obstacles' STL files) and the coupling, and the spheres the scenario creates at the
+//! start (so an edited sphere file counts as well). Not covered, so that a run can be extended or
 //! its output changed between restarts: the run's name and end time, `max_speed` and
-//! `max_overlap_ratio` (checks, not state), `[output]` and the fluid's samples.
+//! `max_overlap_ratio` (checks, not state), `[output]`, the fluid's samples and gauges, and its obstacles' `force_interval`.
 
 use serde::Serialize;
 
@@ -37,6 +37,9 @@ pub fn fingerprint(src: &Source, sim: &Simulation) -> Fingerprint {
         let mut f = f.clone();
         f.samples.clear();
         f.gauges = None;
+        for o in &mut f.obstacles {
+            o.force_interval = None;
+        }
         f
     });
     let mut fluid_hash = hash(&fluid);
@@ -51,6 +54,17 @@ pub fn fingerprint(src: &Source, sim: &Simulation) -> Fingerprint {
             let mut h = crc32fast::Hasher::new_with_initial(fluid_hash);
             h.update(&bytes);
             fluid_hash = h.finalize();
+        }
+    }
+    // An obstacle's mesh is in its file, as a wall's.
+    let mut obstacle_meshes = None;
+    for o in sc.fluid.iter().flat_map(|f| &f.obstacles) {
+        if let Some(file) = &o.file {
+            if let Ok(bytes) = std::fs::read(src.dir.join(file)) {
+                let mut h = crc32fast::Hasher::new_with_initial(obstacle_meshes.unwrap_or(0));
+                h.update(&bytes);
+                obstacle_meshes = Some(h.finalize());
+            }
         }
     }
 
@@ -75,7 +89,13 @@ pub fn fingerprint(src: &Source, sim: &Simulation) -> Fingerprint {
             "blocks, wires and bonds",
             hash(&(&sc.blocks, &sc.wires, &sc.bonds)),
         ),
-        ("fluid", fluid_hash),
+        (
+            "fluid",
+            match obstacle_meshes {
+                Some(m) => hash(&(fluid_hash, m)),
+                None => fluid_hash,
+            },
+        ),
         ("coupling", hash(&sc.coupling)),
     ]
     .into_iter()

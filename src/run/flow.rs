@@ -63,6 +63,53 @@ impl Gauges {
     }
 }
 
+/// Columns of an obstacle's force file `obstacle_<name>.csv` (`[[fluid.obstacles]]`): the
+/// force of the flow on it [N], total, pressure (physical: with the hydrostatic pressure of
+/// water that p̄ leaves out) and viscous (`fluid::obstacle::force`).
+pub const OBSTACLE_COLUMNS: [&str; 10] = [
+    "time",
+    "force_x",
+    "force_y",
+    "force_z",
+    "pressure_force_x",
+    "pressure_force_y",
+    "pressure_force_z",
+    "viscous_force_x",
+    "viscous_force_y",
+    "viscous_force_z",
+];
+
+/// One obstacle's forces, written on its schedule.
+struct ObstacleForces {
+    /// The obstacle's index in the flow.
+    index: usize,
+    csv: CsvSeries,
+    schedule: Schedule,
+}
+
+impl ObstacleForces {
+    fn write(
+        &mut self,
+        time: f64,
+        forces: &[crate::fluid::obstacle::ObstacleForce],
+    ) -> std::io::Result<()> {
+        let f = forces[self.index];
+        let t = f.total();
+        self.csv.row(&[
+            time,
+            t.x,
+            t.y,
+            t.z,
+            f.pressure.x,
+            f.pressure.y,
+            f.pressure.z,
+            f.viscous.x,
+            f.viscous.y,
+            f.viscous.z,
+        ])
+    }
+}
+
 /// Columns of a sample file.
 pub const SAMPLE_COLUMNS: [&str; 13] = [
     "time",
@@ -228,6 +275,7 @@ pub struct FlowOutput {
     pvd: PvdSeries,
     samples: Vec<Sample>,
     gauges: Option<Gauges>,
+    obstacles: Vec<ObstacleForces>,
     /// When an image is due (`[output] flow_interval`).
     images: Schedule,
     format: Format,
@@ -236,15 +284,17 @@ pub struct FlowOutput {
 }
 
 impl FlowOutput {
-    /// Opens `flow.pvd`, the sample files and the gauges' file in `dir` (resuming them at the
-    /// simulation's time when `resuming`), and, for a fresh run, writes the state at t = 0.
-    /// Images follow `interval` [s], in `format` (None: no images, the samples only).
+    /// Opens `flow.pvd`, the sample files, the gauges' file and the obstacles' force files in
+    /// `dir` (resuming them at the simulation's time when `resuming`), and, for a fresh run,
+    /// writes the state at t = 0. Images follow `interval` [s], in `format` (None: no images,
+    /// the samples only); an obstacle's forces its `force_interval` or `series_interval` [s].
     pub fn open(
         sim: &Simulation,
         section: Option<&FluidSection>,
         dir: &Path,
         resuming: bool,
         interval: Option<f64>,
+        series_interval: f64,
         format: Format,
     ) -> anyhow::Result<Option<FlowOutput>> {
         let Some(fluid) = &sim.fluid else {
@@ -299,6 +349,28 @@ impl FlowOutput {
             }
             None => None,
         };
+        let mut obstacles = Vec::new();
+        for (index, o) in section
+            .map_or(&[][..], |f| &f.obstacles[..])
+            .iter()
+            .enumerate()
+        {
+            let path = dir.join(o.file_name());
+            let csv = if resuming {
+                CsvSeries::resume(&path, &OBSTACLE_COLUMNS, t0)
+            } else {
+                CsvSeries::create(&path, &OBSTACLE_COLUMNS)
+            }
+            .with_context(|| format!("cannot open {}", o.file_name()))?;
+            let mut schedule =
+                Schedule::new(o.force_interval.unwrap_or(series_interval), 0.0, true);
+            schedule.start(t0, sim.step);
+            obstacles.push(ObstacleForces {
+                index,
+                csv,
+                schedule,
+            });
+        }
         // No images: a schedule that never falls due.
         let mut images = Schedule::new(interval.unwrap_or(f64::INFINITY), 0.0, true);
         images.start(t0, sim.step);
@@ -307,6 +379,7 @@ impl FlowOutput {
             pvd,
             samples,
             gauges,
+            obstacles,
             images,
             format,
             write_images: interval.is_some(),
@@ -322,6 +395,12 @@ impl FlowOutput {
             if let Some(g) = &mut out.gauges {
                 g.write(t0, fluid)?;
             }
+            if !out.obstacles.is_empty() {
+                let forces = fluid.obstacle_forces();
+                for o in &mut out.obstacles {
+                    o.write(t0, &forces)?;
+                }
+            }
         }
         Ok(Some(out))
     }
@@ -334,6 +413,19 @@ impl FlowOutput {
         if let Some(g) = &mut self.gauges {
             if g.schedule.due(sim.time, sim.step) {
                 g.write(sim.time, fluid)?;
+            }
+        }
+        if self
+            .obstacles
+            .iter_mut()
+            .fold(false, |any, o| o.schedule.due(sim.time, sim.step) | any)
+        {
+            // Every schedule was asked (each moves on when due); the forces once for all.
+            let forces = fluid.obstacle_forces();
+            for o in &mut self.obstacles {
+                if o.schedule.fired_at(sim.step) {
+                    o.write(sim.time, &forces)?;
+                }
             }
         }
         let snapshot = self.images.due(sim.time, sim.step);

@@ -94,6 +94,9 @@ pub(in crate::scenario) fn build_fluid(
         None => boundaries,
     };
 
+    let (obstacles, obstacle_summaries) =
+        super::obstacles::obstacles(src, f, &grid, &boundaries, waves.as_ref())?;
+
     let parameters = FluidParameters {
         density,
         kinematic_viscosity: nu,
@@ -151,6 +154,10 @@ pub(in crate::scenario) fn build_fluid(
         if amplitude > 0.0 || open {
             fluid.project();
         }
+        // After the start's projection, which does not know them: the solid starts at rest.
+        fluid
+            .set_obstacles(&obstacles)
+            .map_err(|e| src.invalid("fluid.obstacles", e))?;
         Some(fluid)
     } else {
         None
@@ -238,6 +245,9 @@ pub(in crate::scenario) fn build_fluid(
         gauges: f.gauges.as_ref().map(|g| (g.positions.len(), g.interval)),
         waves,
         porous,
+        obstacles: obstacle_summaries,
+        obstacle_sections: f.obstacles.clone(),
+        spheres: !radii.is_empty(),
     };
     Ok(Some((fluid, derived)))
 }

@@ -51,6 +51,12 @@
 //! porosity = 0.4                   # n [-]
 //! grain_diameter = 0.05            # D50 [m]; alpha = 1000, beta = 1.1 unless given
 //!
+//! [[fluid.obstacles]]              # a fixed solid: "box" (min, max), "plane" (point,
+//! name = "beach"                   # normal: the solid below it) or "mesh" (a closed STL
+//! kind = "plane"                   # file, scale, offset); forces to obstacle_<name>.csv
+//! point = [6.0, 0.0, 0.0]          # (`obstacles`)
+//! normal = [-1.0, 0.0, 20.0]
+//!
 //! [[fluid.sample]]                 # cell values along a line (or on a plane) to CSV
 //! name = "profile"
 //! kind = "line"
@@ -64,12 +70,14 @@
 
 mod air;
 mod build;
+mod obstacles;
 mod porous;
 mod report;
 mod waves;
 
 pub use air::Phases;
 pub(super) use build::build_fluid;
+pub use obstacles::{ObstacleKind, ObstacleSection, ObstacleSummary};
 pub use porous::PorousSection;
 pub use report::{note_coupling, FluidDerived, CELLS_PER_DIAMETER};
 pub use waves::{Theory, Waves, WavesSection};
@@ -140,6 +148,9 @@ pub struct FluidSection {
     /// written before they existed, stay as they were (`run::fingerprint`).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub porous: Vec<PorousSection>,
+    /// Fixed obstacles (beyond the source). Not serialized when empty, as `porous`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub obstacles: Vec<ObstacleSection>,
 }
 
 /// `[fluid.gauges]`: wave gauges, the water surface over points (x, y) written to

@@ -61,6 +61,12 @@ pub struct FluidDerived {
     pub water_volume: f64,
     /// Porous zones (`[[fluid.porous]]`).
     pub porous: Vec<crate::fluid::PorousZone>,
+    /// Obstacles (`[[fluid.obstacles]]`) on the grid, and their sections.
+    pub obstacles: Vec<super::ObstacleSummary>,
+    /// The sections of the obstacles.
+    pub obstacle_sections: Vec<super::ObstacleSection>,
+    /// Whether the scenario has spheres (they pass through obstacles).
+    pub spheres: bool,
 }
 
 /// Tells the flow's report about coupled spheres: which the grid resolves, and the fluid step
@@ -282,6 +288,12 @@ impl FluidDerived {
             p.kinematic_viscosity,
             self.fluid_step,
             self.velocity_scale.length(),
+        ));
+        s.push_str(&super::obstacles::describe(
+            &self.obstacles,
+            &self.obstacle_sections,
+            g.cell_volume(),
+            self.spheres,
         ));
         let _ = match (p.driving_pressure_gradient, self.oscillatory_peak) {
             (
