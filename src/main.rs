@@ -108,7 +108,8 @@ enum BenchCase {
         every: u64,
     },
     /// The flow solver: time step and pressure solve per grid size and thread count, or
-    /// (with --cavity) the lid-driven cube that bench/openfoam/compare_cavity.sh compares.
+    /// (with --cavity) the lid-driven cube that bench/openfoam/compare_cavity.sh compares, or
+    /// (with --dam-break) the dam break that bench/openfoam/compare_dam_break.sh compares.
     Fluid(riprap::bench::fluid::FluidBenchArgs),
     /// A coupled run (default: the sheet flow of validation case 5): wall time per simulated
     /// second and per oscillation period, split into fluid, pressure, coupling and DEM.

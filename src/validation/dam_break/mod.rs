@@ -185,6 +185,17 @@ pub fn slope(rows: &[(f64, f64)], range: (f64, f64)) -> f64 {
     super::hopper_cloud::slope(&r)
 }
 
+/// The lead in T of a front (T, Z) over the measured one at Z = 2, 2.5 and 3 (those it
+/// reaches): T_measured(Z) − T_run(Z), each T(Z) interpolated linearly on the rising part of
+/// the record. `bench/openfoam/dam_break_front.py` computes the same for interFoam.
+pub fn front_leads(front: &[(f64, f64)]) -> Vec<f64> {
+    let measured = measured_front();
+    [2.0, 2.5, 3.0]
+        .iter()
+        .filter_map(|&z| Some(time_at(&measured, z)? - time_at(front, z)?))
+        .collect()
+}
+
 /// What the case checks of a run (`README.md`).
 #[derive(Clone, Copy, Debug)]
 pub struct Verdict {
@@ -213,10 +224,7 @@ impl Verdict {
 pub fn verdict(run: &Run) -> Verdict {
     let measured = measured_front();
     let speed = (slope(&run.front, SURGE), slope(&measured, SURGE));
-    let leads: Vec<f64> = [2.0, 2.5, 3.0]
-        .iter()
-        .filter_map(|&z| Some(time_at(&measured, z)? - time_at(&run.front, z)?))
-        .collect();
+    let leads = front_leads(&run.front);
     let lead = leads.iter().sum::<f64>() / leads.len().max(1) as f64;
     let rms = |shift: f64| {
         let errors: Vec<f64> = measured_height()
