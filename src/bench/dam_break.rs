@@ -35,7 +35,10 @@ pub fn mean_abs_lead(front: &[(f64, f64)]) -> f64 {
 /// Runs `riprap bench fluid --dam-break N`: the collapse at a/`n` on the global thread pool,
 /// printing its wall time and its front's errors; the front is written to `csv` if given.
 pub fn run_cli(n: usize, csv: Option<&Path>) -> anyhow::Result<()> {
-    anyhow::ensure!(n >= 2, "the dam break needs at least 2 cells per column width");
+    anyhow::ensure!(
+        n >= 2,
+        "the dam break needs at least 2 cells per column width"
+    );
     let threads = rayon::current_num_threads();
     println!(
         "dam break (Martin & Moyce 1952, validation case dam_break) at a/{n}: {} x 2 x {} \
@@ -96,6 +99,9 @@ mod tests {
             max_iterations: 0,
             seconds: 0.0,
         };
-        assert_eq!(front_csv(&run), "T,Z\n0.050000,1.000000\n0.100000,1.250000\n");
+        assert_eq!(
+            front_csv(&run),
+            "T,Z\n0.050000,1.000000\n0.100000,1.250000\n"
+        );
     }
 }
