@@ -14,7 +14,8 @@
 # way); RIPRAP (a riprap binary; else cargo builds one); RESULTS (the results folder; default
 # runs/openfoam_dam_break/DATE under the repository).
 #
-# riprap: `riprap --threads T bench fluid --dam-break N --front-csv F` (src/bench/dam_break.rs).
+# riprap: `riprap --threads T bench fluid --dam-break N --front-csv F` (src/main.rs,
+# bench_dam_break: the validation case dam_break run as it is validated).
 # interFoam: the case bench/openfoam/dam_break, copied and meshed (blockMesh, setFields, and
 # for 2 cores decomposePar) before the runs; `interFoam`, or on 2 cores `mpirun -np 2 interFoam
 # -parallel`. Wall time: the whole process of each, from start to exit (riprap: building the

@@ -4,7 +4,6 @@
 pub mod b1;
 pub mod b2;
 pub mod coupled;
-pub mod dam_break;
 pub mod fluid;
 
 pub use b1::{b1_lattice, b1_row, b1_simulation, peak_memory, run_b1, B1Result, B1Row};
