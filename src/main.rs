@@ -108,11 +108,55 @@ enum BenchCase {
         every: u64,
     },
     /// The flow solver: time step and pressure solve per grid size and thread count, or
-    /// (with --cavity) the lid-driven cube that bench/openfoam/compare_cavity.sh compares.
+    /// (with --cavity) the lid-driven cube that bench/openfoam/compare_cavity.sh compares, or
+    /// (with --dam-break) the dam break that bench/openfoam/compare_dam_break.sh compares.
     Fluid(riprap::bench::fluid::FluidBenchArgs),
     /// A coupled run (default: the sheet flow of validation case 5): wall time per simulated
     /// second and per oscillation period, split into fluid, pressure, coupling and DEM.
     Coupled(riprap::bench::coupled::CoupledBenchArgs),
+}
+
+/// `riprap bench fluid --dam-break N`: the validation case `dam_break` at a/`n`, run as it is
+/// validated, on the global thread pool; prints its wall time (building the scenario and the
+/// run) and its front's errors against Martin & Moyce, and writes the front (T, Z) to `csv`.
+/// `bench/openfoam/compare_dam_break.sh` compares it with interFoam.
+fn bench_dam_break(n: usize, csv: Option<&std::path::Path>) -> anyhow::Result<()> {
+    use riprap::validation::dam_break::{
+        front_csv, front_leads, mean_abs_lead, run, verdict, SURGE, T_END,
+    };
+    anyhow::ensure!(
+        n >= 2,
+        "the dam break needs at least 2 cells per column width"
+    );
+    println!(
+        "dam break (Martin & Moyce 1952, validation case dam_break) at a/{n}: {} x 2 x {} \
+         cells, to T = {T_END}, {} thread(s)",
+        5 * n,
+        5 * n / 2,
+        rayon::current_num_threads()
+    );
+    let r = run(n)?;
+    let v = verdict(&r);
+    println!(
+        "steps: {}, most CG iterations: {}, water volume change {:.1e}, clipped {:.1e}",
+        r.steps, r.max_iterations, r.volume_change, r.clipped
+    );
+    let leads: Vec<String> = front_leads(&r.front)
+        .iter()
+        .map(|d| format!("{d:.4}"))
+        .collect();
+    println!("lead at Z = 2, 2.5, 3: {}", leads.join(" "));
+    println!("lead: {:.4}", v.lead);
+    println!("mean |dT|: {:.4}", mean_abs_lead(&r.front));
+    println!(
+        "front speed: {:.4} (measured {:.4}, T from {} to {})",
+        v.speed.0, v.speed.1, SURGE.0, SURGE.1
+    );
+    if let Some(path) = csv {
+        std::fs::write(path, front_csv(&r.front))?;
+    }
+    println!("wall time: {:.4} s", r.seconds);
+    Ok(())
 }
 
 fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
@@ -375,7 +419,11 @@ fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
         } => bench_b2(&data, steps, every).map(|()| None),
         Command::Bench {
             case: BenchCase::Fluid(args),
-        } => riprap::bench::fluid::run_cli(&args).map(|()| None),
+        } => match args.dam_break {
+            Some(n) => bench_dam_break(n, args.front_csv.as_deref()),
+            None => riprap::bench::fluid::run_cli(&args),
+        }
+        .map(|()| None),
         Command::Bench {
             case: BenchCase::Coupled(args),
         } => riprap::bench::coupled::run_cli(&args).map(|()| None),

@@ -9,7 +9,10 @@
 //! * [`time_pressure_solve`]: the FFT/DCT Poisson solve alone, on the same grid (Fourier in x
 //!   and z, cosine in y). Its cost should grow as N log N, N = n³ cells;
 //! * [`cavity_case`]: the lid-driven cube of side 1 m, lid speed 1 m/s, laminar, that
-//!   `bench/openfoam/cavity` sets up identically for pimpleFoam.
+//!   `bench/openfoam/cavity` sets up identically for pimpleFoam;
+//! * with `--dam-break`, the collapsing column of the validation case `dam_break`, against
+//!   interFoam (`bench/openfoam/compare_dam_break.sh`); the `riprap` command runs it, since
+//!   benchmarks stand left of the validation cases in the module map.
 //!
 //! Timings are medians over several steps, measured with a wall clock: on a shared machine
 //! the median is far less sensitive than the mean to steps that other processes slowed down.
@@ -213,10 +216,22 @@ pub struct FluidBenchArgs {
     /// Fixed time step of the cavity [s] (lid speed 1 m/s, side 1 m).
     #[arg(long, default_value_t = 0.005)]
     pub dt: f64,
+    /// Instead: run the dam break of the validation case at a/DAM_BREAK cells, on the global
+    /// thread pool (`riprap --threads T bench fluid --dam-break 16`; the `riprap` command runs
+    /// it, not [`run_cli`]).
+    #[arg(long)]
+    pub dam_break: Option<usize>,
+    /// With --dam-break: write the front (T, Z) there as CSV.
+    #[arg(long, requires = "dam_break")]
+    pub front_csv: Option<std::path::PathBuf>,
 }
 
 /// Runs `riprap bench fluid` and prints its table.
 pub fn run_cli(args: &FluidBenchArgs) -> anyhow::Result<()> {
+    anyhow::ensure!(
+        args.dam_break.is_none(),
+        "--dam-break runs the validation case: the riprap command runs it, not bench::fluid"
+    );
     if let Some(n) = args.cavity {
         let steps = args.steps.unwrap_or(20);
         anyhow::ensure!(n >= 2 && steps >= 1, "the cavity needs n ≥ 2 and steps ≥ 1");

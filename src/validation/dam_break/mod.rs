@@ -185,6 +185,33 @@ pub fn slope(rows: &[(f64, f64)], range: (f64, f64)) -> f64 {
     super::hopper_cloud::slope(&r)
 }
 
+/// The lead in T of a front (T, Z) over the measured one at Z = 2, 2.5 and 3 (those it
+/// reaches): T_measured(Z) − T_run(Z), each T(Z) interpolated linearly on the rising part of
+/// the record. `bench/openfoam/dam_break_front.py` computes the same for interFoam.
+pub fn front_leads(front: &[(f64, f64)]) -> Vec<f64> {
+    let measured = measured_front();
+    [2.0, 2.5, 3.0]
+        .iter()
+        .filter_map(|&z| Some(time_at(&measured, z)? - time_at(front, z)?))
+        .collect()
+}
+
+/// The mean of |ΔT| over the levels of [`front_leads`] (NaN if the front reaches none) [-]:
+/// the error `bench/openfoam/compare_dam_break.sh` compares with interFoam's.
+pub fn mean_abs_lead(front: &[(f64, f64)]) -> f64 {
+    let d = front_leads(front);
+    d.iter().map(|x| x.abs()).sum::<f64>() / d.len() as f64
+}
+
+/// A front (T, Z) as CSV: a header `T,Z` and one row per sample.
+pub fn front_csv(front: &[(f64, f64)]) -> String {
+    let mut s = String::from("T,Z\n");
+    for (t, z) in front {
+        s.push_str(&format!("{t:.6},{z:.6}\n"));
+    }
+    s
+}
+
 /// What the case checks of a run (`README.md`).
 #[derive(Clone, Copy, Debug)]
 pub struct Verdict {
@@ -213,10 +240,7 @@ impl Verdict {
 pub fn verdict(run: &Run) -> Verdict {
     let measured = measured_front();
     let speed = (slope(&run.front, SURGE), slope(&measured, SURGE));
-    let leads: Vec<f64> = [2.0, 2.5, 3.0]
-        .iter()
-        .filter_map(|&z| Some(time_at(&measured, z)? - time_at(&run.front, z)?))
-        .collect();
+    let leads = front_leads(&run.front);
     let lead = leads.iter().sum::<f64>() / leads.len().max(1) as f64;
     let rms = |shift: f64| {
         let errors: Vec<f64> = measured_height()
@@ -243,5 +267,27 @@ mod tests {
         assert_eq!(measured_height().len(), 17);
         assert_eq!(interpolate(&measured_front(), 0.41), Some(1.11));
         assert!((time_at(&measured_front(), 3.0).unwrap() - 2.51).abs() < 1e-12);
+    }
+
+    /// A front that is the measured one moved 0.25 earlier in T leads by 0.25 at every level.
+    #[test]
+    fn a_shifted_table_leads_by_its_shift() {
+        let front: Vec<(f64, f64)> = measured_front()
+            .iter()
+            .map(|&(t, z)| (t - 0.25, z))
+            .collect();
+        for d in front_leads(&front) {
+            assert!((d - 0.25).abs() < 1e-12, "{d}");
+        }
+        assert!((mean_abs_lead(&front) - 0.25).abs() < 1e-12);
+        assert_eq!(front_leads(&measured_front()), vec![0.0; 3]);
+    }
+
+    #[test]
+    fn the_front_csv_has_a_header_and_a_row_per_sample() {
+        assert_eq!(
+            front_csv(&[(0.05, 1.0), (0.1, 1.25)]),
+            "T,Z\n0.050000,1.000000\n0.100000,1.250000\n"
+        );
     }
 }
