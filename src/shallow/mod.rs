@@ -182,6 +182,8 @@ struct Work {
     start: Vec<[f64; 3]>,
     /// (h, η, u, v) per stored cell.
     prim: Vec<[f64; 4]>,
+    /// Limited slopes of (h, η, u, v) along x, then along y, per stored cell.
+    slope: Vec<[f64; 8]>,
     /// Fluxes through the x faces, (nx + 1) per row.
     fx: Vec<flux::FaceFlux>,
     /// Fluxes through the y faces, nx per row of faces, ny + 1 rows.
@@ -210,8 +212,9 @@ pub const IDLE_STEP: f64 = 1.0;
 /// Bytes a solver of `cells` domain cells holds (stored cells with their ghosts counted as
 /// the domain's), for `riprap check`.
 pub fn bytes_per_cell() -> usize {
-    // state and start (3 + 3), prim 4, bed 1, solid 1/8, max maps 2, two face fluxes of 5.
-    (3 + 3 + 4 + 1 + 2 + 2 * 5) * 8 + 1
+    // state and start (3 + 3), prim 4, slopes 8, bed 1, max maps 2, two face fluxes of 5,
+    // and a byte for solid.
+    (3 + 3 + 4 + 8 + 1 + 2 + 2 * 5) * 8 + 1
 }
 
 impl ShallowWater {
@@ -301,6 +304,7 @@ impl ShallowWater {
             work: Work {
                 start: vec![[0.0; 3]; len],
                 prim: vec![[0.0; 4]; len],
+                slope: vec![[0.0; 8]; len],
                 fx: vec![flux::FaceFlux::default(); faces_x],
                 fy: vec![flux::FaceFlux::default(); faces_y],
                 rows: vec![0.0; grid.ny + 2 * GHOST],

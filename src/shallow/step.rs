@@ -40,18 +40,16 @@ fn slopes(prim: &[[f64; 4]], solid: &[bool], k: usize, step: usize, theta: f64) 
 }
 
 /// The state on the face at `side` (+1: the upper face, −1: the lower) of stored cell `k`
-/// along the axis of `step`; `normal` is the index of the velocity across that axis in
-/// (h, η, u, v).
+/// along `axis` (0: x, 1: y), from its primitives and slopes.
 fn face_state(
     prim: &[[f64; 4]],
-    solid: &[bool],
+    slope: &[[f64; 8]],
     k: usize,
-    step: usize,
-    (side, normal, theta): (f64, usize, f64),
+    side: f64,
+    axis: usize,
 ) -> FaceState {
-    let s = slopes(prim, solid, k, step, theta);
-    let p = prim[k];
-    let tangential = 5 - normal;
+    let (p, s) = (prim[k], &slope[k][4 * axis..4 * axis + 4]);
+    let (normal, tangential) = (2 + axis, 3 - axis);
     FaceState {
         h: p[0] + side * 0.5 * s[0],
         eta: p[1] + side * 0.5 * s[1],
@@ -60,27 +58,25 @@ fn face_state(
     }
 }
 
-/// The flux through the face between stored cells `a` (below) and `b = a + step` (above).
+/// The flux through the face between stored cells `a` (below) and `b = a + step` (above)
+/// along `axis` (0: x, 1: y).
 fn flux_between(
-    prim: &[[f64; 4]],
-    solid: &[bool],
+    (prim, slope, solid): (&[[f64; 4]], &[[f64; 8]], &[bool]),
     a: usize,
     step: usize,
-    (normal, theta, g): (usize, f64, f64),
+    (axis, g): (usize, f64),
 ) -> FaceFlux {
     let b = a + step;
     let (sa, sb) = (solid[a], solid[b]);
     if sa && sb {
         return FaceFlux::default();
     }
-    let upper = |k| face_state(prim, solid, k, step, (1.0, normal, theta));
-    let lower = |k| face_state(prim, solid, k, step, (-1.0, normal, theta));
     if sa || sb {
         let (l, r) = if sb {
-            let l = upper(a);
+            let l = face_state(prim, slope, a, 1.0, axis);
             (l, l.mirrored())
         } else {
-            let r = lower(b);
+            let r = face_state(prim, slope, b, -1.0, axis);
             (r.mirrored(), r)
         };
         let f = face_flux(l, r, g);
@@ -91,7 +87,11 @@ fn flux_between(
             ..f
         };
     }
-    face_flux(upper(a), lower(b), g)
+    face_flux(
+        face_state(prim, slope, a, 1.0, axis),
+        face_state(prim, slope, b, -1.0, axis),
+        g,
+    )
 }
 
 impl ShallowWater {
@@ -179,6 +179,24 @@ impl ShallowWater {
                 }
             });
         let (prim, solid) = (&self.work.prim, &self.solid);
+        let rows = grid.ny + 2 * GHOST;
+        self.work
+            .slope
+            .par_chunks_mut(stride)
+            .enumerate()
+            .for_each(|(js, row)| {
+                for (is, out) in row.iter_mut().enumerate() {
+                    if is == 0 || is == stride - 1 || js == 0 || js == rows - 1 {
+                        *out = [0.0; 8];
+                        continue;
+                    }
+                    let k = js * stride + is;
+                    let sx = slopes(prim, solid, k, 1, theta);
+                    let sy = slopes(prim, solid, k, stride, theta);
+                    *out = [sx[0], sx[1], sx[2], sx[3], sy[0], sy[1], sy[2], sy[3]];
+                }
+            });
+        let cells = (&prim[..], &self.work.slope[..], &solid[..]);
         let nx = grid.nx;
         self.work
             .fx
@@ -187,7 +205,7 @@ impl ShallowWater {
             .for_each(|(j, row)| {
                 for (f, out) in row.iter_mut().enumerate() {
                     let a = grid.index(f as isize - 1, j as isize);
-                    *out = flux_between(prim, solid, a, 1, (2, theta, g));
+                    *out = flux_between(cells, a, 1, (0, g));
                 }
             });
         self.work
@@ -197,7 +215,7 @@ impl ShallowWater {
             .for_each(|(r, row)| {
                 for (i, out) in row.iter_mut().enumerate() {
                     let a = grid.index(i as isize, r as isize - 1);
-                    *out = flux_between(prim, solid, a, stride, (3, theta, g));
+                    *out = flux_between(cells, a, stride, (1, g));
                 }
             });
         impose_discharge(
@@ -234,10 +252,10 @@ impl ShallowWater {
         let grid = self.grid;
         let (nx, ny, stride) = (grid.nx, grid.ny, grid.stride());
         let p = self.params;
-        let (g, dry, theta) = (p.gravity, p.dry_depth, p.limiter);
+        let (g, dry) = (p.gravity, p.dry_depth);
         let (lx, ly) = (dt / grid.dx, dt / grid.dy);
         let friction = dt * g * p.manning * p.manning;
-        let (prim, solid) = (&self.work.prim, &self.solid);
+        let (prim, slope, solid) = (&self.work.prim, &self.work.slope, &self.solid);
         let (fx, fy) = (&self.work.fx, &self.work.fy);
         let cell_area = grid.dx * grid.dy;
         self.state
@@ -258,19 +276,18 @@ impl ShallowWater {
                     }
                     let (w, e) = (fx[j * (nx + 1) + i], fx[j * (nx + 1) + i + 1]);
                     let (s, n) = (fy[j * nx + i], fy[(j + 1) * nx + i]);
-                    let sx = slopes(prim, solid, k, 1, theta);
-                    let sy = slopes(prim, solid, k, stride, theta);
+                    let sl = &slope[k];
                     let h0 = prim[k][0];
                     let [h, qx, qy] = row[i + GHOST];
                     let mut hn = h - lx * (e.mass - w.mass) - ly * (n.mass - s.mass);
                     let mut qxn = qx
                         - lx * (e.momentum_left - w.momentum_right)
                         - ly * (n.tangential - s.tangential)
-                        - lx * g * h0 * (sx[1] - sx[0]);
+                        - lx * g * h0 * (sl[1] - sl[0]);
                     let mut qyn = qy
                         - lx * (e.tangential - w.tangential)
                         - ly * (n.momentum_left - s.momentum_right)
-                        - ly * g * h0 * (sy[1] - sy[0]);
+                        - ly * g * h0 * (sl[5] - sl[4]);
                     if hn < 0.0 {
                         *clipped -= hn * cell_area;
                         hn = 0.0;

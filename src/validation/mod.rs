@@ -14,7 +14,11 @@
 //!   [`standing_wave`] (the first sloshing mode of a tank, against linear theory), the free
 //!   surface; [`regular_waves`] (a wave generated, carried five wavelengths and absorbed)
 //!   and [`absorption`] (the absorbing zone's reflection, kh 0.5 to 3), the wave flume, both
-//!   on [`linear_flume`].
+//!   on [`linear_flume`];
+//! * the shallow-water solver (`shallow`): [`shallow_lake_at_rest`] (well balanced over a
+//!   rough bed with dry islands), [`shallow_dam_break`] (Stoker and Ritter, L1 error and its
+//!   order), [`shallow_thacker`] (Thacker's moving shoreline in a paraboloid) and
+//!   [`shallow_runup`] (a solitary wave on a plane beach, Synolakis 1987).
 
 pub mod absorption;
 pub mod block_settling;
@@ -26,6 +30,10 @@ pub mod hopper_cloud;
 pub mod linear_flume;
 pub mod regular_waves;
 pub mod report;
+pub mod shallow_dam_break;
+pub mod shallow_lake_at_rest;
+pub mod shallow_runup;
+pub mod shallow_thacker;
 pub mod sheet_flow;
 pub mod sphere_drag;
 pub mod standing_wave;
@@ -37,6 +45,30 @@ use crate::fluid::interface::Reconstruction;
 use crate::fluid::phases::Air;
 use crate::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
 use crate::math::Vec3;
+
+/// The shallow-water cases that `run` (a case name's test) selects, appended to `md`;
+/// whether all of them passed.
+pub fn shallow_sections(
+    out: &std::path::Path,
+    quick: bool,
+    run: &dyn Fn(&str) -> bool,
+    md: &mut String,
+) -> anyhow::Result<bool> {
+    let mut all = true;
+    if run("shallow_lake_at_rest") {
+        all &= shallow_lake_at_rest::section(out, quick, md)?;
+    }
+    if run("shallow_dam_break") {
+        all &= shallow_dam_break::section(out, quick, md)?;
+    }
+    if run("shallow_thacker") {
+        all &= shallow_thacker::section(out, quick, md)?;
+    }
+    if run("shallow_runup") {
+        all &= shallow_runup::section(out, quick, md)?;
+    }
+    Ok(all)
+}
 
 /// The upward zero crossings of a record (t, y) after `after` [s], each by linear
 /// interpolation between its two samples [s].

@@ -80,7 +80,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 16] = [
+pub const CASES: [&str; 20] = [
     "cavity",
     "channel",
     "sphere_drag",
@@ -97,6 +97,10 @@ pub const CASES: [&str; 16] = [
     "sheet_flow_report",
     "sheet_flow_settle",
     "sheet_flow_bed_weight",
+    "shallow_lake_at_rest",
+    "shallow_dam_break",
+    "shallow_thacker",
+    "shallow_runup",
 ];
 
 /// As [`run_validation`], only the case named `only` (one of [`CASES`]) when given.
@@ -155,6 +159,7 @@ pub fn run_validation_cases(
     if run("sheet_flow") {
         all &= sections::ensemble(out, quick, case5, &mut md)?;
     }
+    all &= super::shallow_sections(out, quick, &run, &mut md)?;
     // Long (ensembles of the variants): only when named.
     if only == Some("sheet_flow_sensitivity") {
         sections::sensitivity(out, quick, case5, &mut md)?;
