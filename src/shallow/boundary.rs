@@ -5,7 +5,7 @@
 //! A wall's ghost cells are solid: the face between them and the domain gets the mirror
 //! state (`super::flux::FaceState::mirrored`), which passes no water. The other kinds set
 //! the ghost from the first cell inside, (h_i, u_i), through the Riemann invariants of the
-//! one-dimensional equations along the outward normal n (Toro 2001, §5.3 and §9.4), with
+//! one-dimensional equations along the outward normal n (Toro 2001, "Shock-capturing methods for free-surface shallow flows", on boundary conditions), with
 //! u = n·(u, v) positive outwards and c = √(g h):
 //!
 //! ```text

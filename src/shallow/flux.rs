@@ -16,13 +16,13 @@
 //! Since |s| ≤ θ min(|d₋|, |d₊|) and the slope vanishes at an extremum, h_face ≥ 0 wherever
 //! the cell averages are (a dry cell, h = 0 between wet ones, keeps h_face = 0), and η is flat
 //! in any cell whose neighbour has the same η: a lake at rest is reconstructed flat. The bed at
-//! the face is z_face = η_face − h_face (Audusse et al. 2004, §3: reconstructing h and h + z
+//! the face is z_face = η_face − h_face (Audusse et al. 2004: reconstructing h and h + z
 //! makes the second-order scheme well balanced). A cell next to a solid cell or wall gets zero
 //! slopes along that axis.
 //!
 //! **Hydrostatic reconstruction** (Audusse, Bouchut, Bristeau, Klein & Perthame 2004, "A fast
 //! and stable well-balanced scheme with hydrostatic reconstruction for shallow water flows",
-//! SIAM J. Sci. Comput. 25, 2050-2065, eq. 2.8-2.10): at a face with left and right states
+//! SIAM J. Sci. Comput. 25, 2050-2065): at a face with left and right states
 //! (h, η, u) the step of the bed is taken at its top, z* = max(z_L, z_R), and
 //!
 //! ```text
@@ -40,8 +40,8 @@
 //! **HLL** (Harten, Lax & van Leer 1983) with Einfeldt's wave speeds (Einfeldt 1988, "On
 //! Godunov-type methods for gas dynamics", SIAM J. Numer. Anal. 25, 294-318: the extremes of
 //! the states' own characteristic speeds and of the Roe average's; Toro 2001, "Shock-capturing
-//! methods for free-surface shallow flows", Wiley, §10.5), and the dry-bed speeds u ± 2c of
-//! Toro (2001, eq. 10.24) when one side is dry:
+//! methods for free-surface shallow flows", Wiley, ch. 10), and the dry-bed speeds u ± 2c of
+//! Toro (2001) when one side is dry:
 //!
 //! ```text
 //! c = √(g h),  û = (√h_L u_L + √h_R u_R)/(√h_L + √h_R),  ĉ = √(g (h_L + h_R)/2)
@@ -51,11 +51,11 @@
 //! ```
 //!
 //! These speeds stay bounded as one side's depth vanishes, where the shock-speed estimate of
-//! the two-rarefaction middle state (Toro 2001, eq. 10.22) grows without bound.
+//! the two-rarefaction middle state (Toro 2001) grows without bound.
 //!
 //! with U = (h, h u) and F(U) = (h u, h u² + g h²/2). The tangential momentum is carried by
 //! the mass flux with the upwind side's tangential velocity (the contact wave of HLLC, Toro
-//! 2001 §10.6: F_hv = F_h v_L if F_h ≥ 0, else F_h v_R), so that a shear layer is not smeared
+//! 2001: F_hv = F_h v_L if F_h ≥ 0, else F_h v_R), so that a shear layer is not smeared
 //! by the HLL average. The face's speed max(|S_L|, |S_R|) sets the time step.
 
 /// A face state along the face's normal: depth h [m], surface η [m], normal and tangential

@@ -11,7 +11,7 @@
 //! ∂hv/∂t + ∂(huv)/∂x + ∂(hv² + g h²/2)/∂y  = −g h ∂z/∂y − g n² |u| v / h^⅓
 //! ```
 //!
-//! (Stoker 1957; the friction of Manning's formula, e.g. Chow 1959 §5). The cell averages of
+//! (Stoker 1957; the friction of Manning's formula, e.g. Chow 1959, "Open-channel hydraulics"). The cell averages of
 //! (h, hu, hv) live on a uniform grid ([`grid`]), with a bed value per cell.
 //!
 //! **Scheme** ([`step`]):
@@ -24,14 +24,14 @@
 //!   of the same Δt followed by the friction;
 //! * Δt = C / max_cells(S_x/Δx + S_y/Δy), S the largest face wave speed of the HLL solver on
 //!   each axis of a cell (walls excluded: they pass nothing), C = `cfl` ≤ ½. This is the
-//!   condition under which each forward-Euler stage keeps h ≥ 0 (Audusse et al. 2004, §2.3,
+//!   condition under which each forward-Euler stage keeps h ≥ 0 (Audusse et al. 2004,
 //!   with the second-order reconstruction's half cell), checked again with the second
 //!   stage's speeds: a step whose second stage breaks it is taken again with the smaller Δt
 //!   (counted in [`ShallowState::retried`]); any negative depth left by round-off is set to
 //!   zero and its volume counted ([`ShallowState::clipped`]);
 //! * friction, semi-implicit in each stage (Liang & Marche 2009, "Numerical resolution of
 //!   well-balanced shallow water equations with complex source terms", Adv. Water Resour. 32,
-//!   873-884, eq. 27, with the friction factor lagged to the stage's explicit update q*):
+//!   873-884, with the friction factor lagged to the stage's explicit update q*):
 //!
 //!   ```text
 //!   q = q* / (1 + Δt g n² |q*| / h^(7/3))        q = (hu, hv) [m² s⁻¹]
@@ -43,7 +43,8 @@
 //!   splitting), like the friction of most inundation codes;
 //! * wetting and drying: velocities come from u = hu/h where h ≥ h_dry (`dry_depth`), and
 //!   below it from the desingularised u = 2 h (hu) / (h² + h_dry²) (Kurganov & Petrova 2007,
-//!   eq. 2.17, with the threshold as ε), after which hu = h u: a vanishing film cannot reach
+//!   "A second-order well-balanced positivity preserving central-upwind scheme for the
+//!   Saint-Venant system", Commun. Math. Sci. 5, 133-160, with the threshold as ε), after which hu = h u: a vanishing film cannot reach
 //!   an absurd speed.
 //!
 //! **Boundaries** ([`boundary`]): walls, transmissive and absorbing sides, an imposed surface

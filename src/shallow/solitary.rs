@@ -2,8 +2,8 @@
 //! sends in (`super::boundary`) and the run-up case starts from.
 //!
 //! A wave of height H [m] on still water of depth d [m] (Boussinesq 1872; in the form of
-//! Synolakis 1987, "The runup of solitary waves", J. Fluid Mech. 185, 523-545, eq. 2.4, and
-//! Dean & Dalrymple 1991 §11.3):
+//! Synolakis 1987, "The runup of solitary waves", J. Fluid Mech. 185, 523-545, and
+//! Dean & Dalrymple 1991, "Water wave mechanics for engineers and scientists"):
 //!
 //! ```text
 //! η(s) = H sech²(k s),   k = √(3 H / (4 d³))  [m⁻¹],   c = √(g (d + H))  [m s⁻¹]

@@ -13,7 +13,7 @@
 //! ```
 //!
 //! The last terms are −g h̄ Δz over the cell: z_E − z_W = (η − h)_E − (η − h)_W = s_η − s_h,
-//! and h̄ = (h_E + h_W)/2 = h (Audusse et al. 2004, §3.1). At rest the flux differences leave
+//! and h̄ = (h_E + h_W)/2 = h (Audusse et al. 2004). At rest the flux differences leave
 //! g h s_h, which the source cancels down to −g h s_η = 0.
 
 use rayon::prelude::*;

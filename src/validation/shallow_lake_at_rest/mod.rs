@@ -82,7 +82,7 @@ pub struct Outcome {
 
 /// The criteria (README): speeds below `MAX_SPEED`, the surface within `MAX_SURFACE`, no dry
 /// cell wetted, the volume kept to `MAX_VOLUME`.
-pub const MAX_SPEED: f64 = 1e-10;
+pub const MAX_SPEED: f64 = 1e-12;
 /// See [`MAX_SPEED`] [m].
 pub const MAX_SURFACE: f64 = 1e-12;
 /// See [`MAX_SPEED`] [-].
