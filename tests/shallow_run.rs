@@ -228,7 +228,7 @@ fn mistakes_name_the_file_the_line_and_the_key() {
     ];
     for (text, key, line) in cases {
         let e = match ShallowSource::from_str(&text, "channel.toml", dir.clone()) {
-            Ok(src) => check(&src).err().expect("an error").to_string(),
+            Ok(src) => check(&src).expect_err("an error").to_string(),
             Err(e) => e.to_string(),
         };
         assert!(

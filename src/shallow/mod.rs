@@ -129,7 +129,7 @@ impl Parameters {
         if !(1.0..=2.0).contains(&p.limiter) {
             return Err(format!("limiter θ {} must lie in [1, 2]", p.limiter));
         }
-        if !(p.max_time_step > 0.0) {
+        if p.max_time_step.is_nan() || p.max_time_step <= 0.0 {
             return Err(format!(
                 "max_time_step {} must be positive",
                 p.max_time_step
@@ -277,7 +277,7 @@ impl ShallowWater {
         }
         for (q, b) in boundaries.0.iter().enumerate() {
             if let Boundary::Solitary { height, .. } = b {
-                if !(*height > 0.0) {
+                if height.is_nan() || *height <= 0.0 {
                     return Err(format!(
                         "the solitary wave at {} needs a positive height",
                         boundary::SIDES[q]

@@ -321,19 +321,19 @@ impl ShallowWater {
                 if js < GHOST || js >= grid.ny + GHOST {
                     return;
                 }
-                for i in GHOST..GHOST + grid.nx {
+                for (i, cell) in row.iter_mut().enumerate().skip(GHOST).take(grid.nx) {
                     let k = js * stride + i;
                     if solid[k] {
                         continue;
                     }
-                    let (a, b) = (start[k], row[i]);
+                    let (a, b) = (start[k], *cell);
                     let h = 0.5 * (a[0] + b[0]);
                     let (mut qx, mut qy) = (0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]));
                     if h < dry {
                         qx = h * velocity(h, qx, dry);
                         qy = h * velocity(h, qy, dry);
                     }
-                    row[i] = [h, qx, qy];
+                    *cell = [h, qx, qy];
                 }
             });
     }

@@ -284,10 +284,7 @@ fn grid(src: &ShallowSource) -> Result<(Grid, Option<Raster>), ScenarioError> {
             c
         }
         (None, None) => match &raster {
-            Some(r) => {
-                let c = [0, 1].map(|a| (lengths[a] / r.spacing[a]).round().max(1.0) as usize);
-                c
-            }
+            Some(r) => [0, 1].map(|a| (lengths[a] / r.spacing[a]).round().max(1.0) as usize),
             None => {
                 return Err(src.invalid(
                     "shallow.grid",
@@ -324,11 +321,18 @@ fn bed(
     Ok(z)
 }
 
+/// A region's keys: `polygon`, or `min` and `max`.
+type Shape<'a> = (
+    Option<&'a Vec<[f64; 2]>>,
+    Option<[f64; 2]>,
+    Option<[f64; 2]>,
+);
+
 /// A region given as a box or a polygon: its vertices, checked.
 fn region(
     src: &ShallowSource,
     key: &str,
-    (polygon, min, max): (Option<&Vec<[f64; 2]>>, Option<[f64; 2]>, Option<[f64; 2]>),
+    (polygon, min, max): Shape<'_>,
 ) -> Result<Vec<[f64; 2]>, ScenarioError> {
     match (polygon, min, max) {
         (Some(p), None, None) => {
@@ -486,19 +490,19 @@ fn series(src: &ShallowSource, key: &str, b: &BoundarySection) -> Result<Series,
     if points.is_empty() {
         return Err(src.invalid(&skey, "the series has no points"));
     }
-    for w in points.windows(2) {
-        if !(w[1][0] > w[0][0]) {
-            return Err(src.invalid(
-                &skey,
-                format!("the times must increase: {} then {}", w[0][0], w[1][0]),
-            ));
-        }
-    }
     if points
         .iter()
         .any(|p| !(p[0].is_finite() && p[1].is_finite()))
     {
         return Err(src.invalid(&skey, "every time and value must be finite"));
+    }
+    for w in points.windows(2) {
+        if w[1][0] <= w[0][0] {
+            return Err(src.invalid(
+                &skey,
+                format!("the times must increase: {} then {}", w[0][0], w[1][0]),
+            ));
+        }
     }
     if b.kind == BoundaryKind::Discharge && points.iter().any(|p| p[1] < 0.0) {
         return Err(src.invalid(

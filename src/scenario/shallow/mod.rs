@@ -417,7 +417,7 @@ mod tests {
         let e = ShallowSource::from_str(&text, "a.toml", PathBuf::new())
             .unwrap_err()
             .to_string();
-        assert!(e.starts_with("a.toml:15:"), "{e}");
+        assert!(e.starts_with("a.toml:14:"), "{e}");
         assert!(e.contains("elevaton"), "{e}");
         let text = format!("{MINIMAL}\n[shallow.boundaries]\nx_min = {{ kind = \"sea\" }}\n");
         let e = ShallowSource::from_str(&text, "a.toml", PathBuf::new())

@@ -107,11 +107,11 @@ pub fn run(height: f64, dx: f64) -> Run {
     while w.time() < t_end {
         w.step_towards(t_end);
         let mut tip = [f64::NEG_INFINITY; 3];
-        for i in 0..cells {
+        for (i, zi) in z.iter().enumerate() {
             let h = w.cell(i, 0)[0];
             for (k, eps) in [WET, 0.1 * WET, 10.0 * WET].iter().enumerate() {
                 if h > *eps {
-                    tip[k] = tip[k].max(h + z[i]);
+                    tip[k] = tip[k].max(h + zi);
                 }
             }
         }
