@@ -79,11 +79,14 @@ fn crc<T: Serialize + ?Sized>(v: &T) -> u32 {
     crc32fast::hash(&postcard::to_stdvec(v).expect("the settings serialise"))
 }
 
-/// What the state means: a hash of `[shallow]` and of each file it reads. `[run]` and
-/// `[output]` are left out, so that a run can be extended or its output changed.
+/// What the state means: a hash of `[shallow]` (its gauges left out) and of each file it
+/// reads. `[run]`, `[output]` and the gauges are left out, so that a run can be extended or
+/// its output changed.
 pub fn fingerprint(src: &ShallowSource) -> Vec<(String, u32)> {
     let s = &src.scenario.shallow;
-    let mut parts = vec![("shallow".to_string(), crc(s))];
+    let mut flow = s.clone();
+    flow.gauges.clear();
+    let mut parts = vec![("shallow".to_string(), crc(&flow))];
     let mut files: Vec<&str> = Vec::new();
     if s.bed.kind == BedKind::File {
         files.extend(s.bed.file.as_deref());

@@ -210,8 +210,8 @@ pub struct ShallowWater {
 /// A dry, still domain (no wave speed anywhere) steps by at most this [s].
 pub const IDLE_STEP: f64 = 1.0;
 
-/// Bytes a solver of `cells` domain cells holds (stored cells with their ghosts counted as
-/// the domain's), for `riprap check`.
+/// Bytes the solver holds per stored cell (ghosts included; the faces counted with their
+/// cells), for `riprap check`.
 pub fn bytes_per_cell() -> usize {
     // state and start (3 + 3), prim 4, slopes 8, bed 1, max maps 2, two face fluxes of 5,
     // and a byte for solid.

@@ -100,9 +100,12 @@ impl ShallowWater {
         self.step_towards(f64::INFINITY)
     }
 
-    /// One step that does not go past `end` [s]; returns Δt [s].
+    /// One step that does not go past `end` [s]; returns Δt [s] (0, and no step, at `end`).
     pub fn step_towards(&mut self, end: f64) -> f64 {
         let t = self.state.time;
+        if end <= t {
+            return 0.0;
+        }
         self.work.start.copy_from_slice(&self.state.cells);
         let mut cap = (end - t).min(self.params.max_time_step);
         let mut tries = 0;
