@@ -15,6 +15,8 @@
 //! * [`rigid`]: blocks made of spheres (the passively moving solid model [34]-[49]), wires
 //!   and bonds
 //! * [`fluid`]: the LES of the water on a staggered grid (METHOD.md §4)
+//! * [`shallow`]: the 2D nonlinear shallow-water equations by finite volumes (inundation at
+//!   harbour scale, issue 31); uses nothing else of the crate
 //! * [`coupling`]: the Euler-Lagrange coupling of spheres and water ([53], [59]-[63], drag [5])
 //! * [`simulation`]: the order of the phases of a time step
 //! * [`io`]: VTK and `.pvd` output, CSV time series, plots, checkpoints
@@ -42,5 +44,6 @@ pub mod math;
 pub mod rigid;
 pub mod run;
 pub mod scenario;
+pub mod shallow;
 pub mod simulation;
 pub mod validation;

@@ -333,6 +333,54 @@ fn continue_command(
     )
 }
 
+/// The shallow-water scenario `path` names, if it is one (a file with a `[shallow]` table,
+/// `scenario::shallow`); any other file, or one that cannot be read, goes the usual way.
+fn shallow_source(
+    path: &Option<PathBuf>,
+) -> anyhow::Result<Option<riprap::scenario::shallow::ShallowSource>> {
+    use riprap::scenario::shallow::{is_shallow, ShallowSource};
+    let Some(p) = path else { return Ok(None) };
+    match std::fs::read_to_string(p) {
+        Ok(text) if is_shallow(&text) => Ok(Some(ShallowSource::from_file(p)?)),
+        _ => Ok(None),
+    }
+}
+
+/// Runs a shallow-water scenario (`run::shallow`) and reports as `riprap run` does.
+fn run_shallow(
+    src: &riprap::scenario::shallow::ShallowSource,
+    opts: &RunOptions,
+    scenario: &Option<PathBuf>,
+) -> anyhow::Result<Option<u8>> {
+    eprintln!(
+        "riprap: running the shallow-water scenario `{}` from {}",
+        src.scenario.run.name, src.file
+    );
+    let s = riprap::run::shallow::execute(src, opts)?;
+    if let Some(sig) = s.interrupted_by {
+        eprintln!(
+            "interrupted by {} at t = {:.6} s, step {}; checkpoint written to {}. Continue \
+             with:\n  {}",
+            signal_name(sig),
+            s.time,
+            s.step,
+            s.checkpoint.display(),
+            continue_command(scenario, opts.end_time, &s.output_dir, &s.checkpoint)
+        );
+        return Ok(Some(128 + sig as u8));
+    }
+    eprintln!(
+        "done: t = {:.4} s, {} in {:.1} s ({:.3e} cell-steps/s); results in {}",
+        s.time,
+        riprap::scenario::text::count(s.steps as f64, "step"),
+        s.wall_seconds,
+        s.steps as f64 * s.cells as f64 / s.wall_seconds.max(1e-9),
+        s.output_dir.display()
+    );
+    eprintln!("view: paraview {}/shallow.pvd", s.output_dir.display());
+    Ok(None)
+}
+
 /// Runs one subcommand; `Some(status)` for a run stopped by a signal (128 + its number).
 fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
     match command {
@@ -343,6 +391,17 @@ fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
             steps,
             end_time,
         } => (|| {
+            if let Some(src) = shallow_source(&scenario)? {
+                let opts = RunOptions {
+                    output_dir: output,
+                    restart,
+                    progress: true,
+                    max_steps: steps,
+                    end_time,
+                    stop: Some(stop_on_signals()?),
+                };
+                return run_shallow(&src, &opts, &scenario);
+            }
             let src = source(&scenario)?;
             eprintln!(
                 "riprap: running `{}` from {}",
@@ -456,6 +515,12 @@ fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
             }
         })(),
         Command::Check { scenario } => (|| {
+            if let Some(src) = shallow_source(&scenario)? {
+                let derived = riprap::scenario::shallow::check(&src)?;
+                println!("{}: valid (a shallow-water scenario)", src.file);
+                print!("{}", derived.report());
+                return Ok(None);
+            }
             let src = source(&scenario)?;
             let derived = check(&src)?;
             println!("{}: valid", src.file);

@@ -16,6 +16,7 @@ pub mod flow;
 pub mod owned;
 mod progress;
 pub mod schedule;
+pub mod shallow;
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};

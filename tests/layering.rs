@@ -18,6 +18,7 @@ const MAP: &[(&str, &[&str])] = &[
     ("dem", &["math", "geometry"]),
     ("rigid", &["math", "geometry", "dem"]),
     ("fluid", &["math"]),
+    ("shallow", &[]),
     ("coupling", &["math", "geometry", "dem", "rigid", "fluid"]),
     (
         "simulation",
@@ -26,6 +27,7 @@ const MAP: &[(&str, &[&str])] = &[
     (
         "io",
         &[
+            "shallow",
             "math",
             "geometry",
             "dem",
@@ -38,6 +40,7 @@ const MAP: &[(&str, &[&str])] = &[
     (
         "scenario",
         &[
+            "shallow",
             "math",
             "geometry",
             "dem",
@@ -51,6 +54,7 @@ const MAP: &[(&str, &[&str])] = &[
     (
         "run",
         &[
+            "shallow",
             "math",
             "geometry",
             "dem",
@@ -65,6 +69,7 @@ const MAP: &[(&str, &[&str])] = &[
     (
         "bench",
         &[
+            "shallow",
             "math",
             "geometry",
             "dem",
@@ -79,6 +84,7 @@ const MAP: &[(&str, &[&str])] = &[
     (
         "validation",
         &[
+            "shallow",
             "math",
             "geometry",
             "dem",

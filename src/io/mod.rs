@@ -10,6 +10,7 @@ pub mod checkpoint;
 pub mod csv;
 pub mod plot;
 pub mod pvd;
+pub mod shallow;
 pub mod vtk;
 
 use std::fs::{self, File};

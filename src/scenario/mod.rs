@@ -15,6 +15,7 @@ pub mod output_size;
 mod pairings;
 pub mod schema;
 mod settings;
+pub mod shallow;
 mod spheres;
 pub mod text;
 mod wall_overlaps;

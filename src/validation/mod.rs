@@ -15,7 +15,11 @@
 //!   surface; [`regular_waves`] (a wave generated, carried five wavelengths and absorbed)
 //!   and [`absorption`] (the absorbing zone's reflection, kh 0.5 to 3), the wave flume, and
 //!   [`wavemaker`] (the height a piston or a flap makes), all on [`linear_flume`];
-//!   [`solitary_wave`] (a solitary wave's height and speed over ten depths of travel).
+//!   [`solitary_wave`] (a solitary wave's height and speed over ten depths of travel);
+//! * the shallow-water solver (`shallow`): [`shallow_lake_at_rest`] (well balanced over a
+//!   rough bed with dry islands), [`shallow_dam_break`] (Stoker and Ritter, L1 error and its
+//!   order), [`shallow_thacker`] (Thacker's moving shoreline in a paraboloid) and
+//!   [`shallow_runup`] (a solitary wave on a plane beach, Synolakis 1987).
 
 pub mod absorption;
 pub mod block_settling;
@@ -27,6 +31,10 @@ pub mod hopper_cloud;
 pub mod linear_flume;
 pub mod regular_waves;
 pub mod report;
+pub mod shallow_dam_break;
+pub mod shallow_lake_at_rest;
+pub mod shallow_runup;
+pub mod shallow_thacker;
 pub mod sheet_flow;
 pub mod solitary_wave;
 pub mod sphere_drag;
@@ -40,6 +48,30 @@ use crate::fluid::interface::Reconstruction;
 use crate::fluid::phases::Air;
 use crate::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
 use crate::math::Vec3;
+
+/// The shallow-water cases that `run` (a case name's test) selects, appended to `md`;
+/// whether all of them passed.
+pub fn shallow_sections(
+    out: &std::path::Path,
+    quick: bool,
+    run: &dyn Fn(&str) -> bool,
+    md: &mut String,
+) -> anyhow::Result<bool> {
+    let mut all = true;
+    if run("shallow_lake_at_rest") {
+        all &= shallow_lake_at_rest::section(out, quick, md)?;
+    }
+    if run("shallow_dam_break") {
+        all &= shallow_dam_break::section(out, quick, md)?;
+    }
+    if run("shallow_thacker") {
+        all &= shallow_thacker::section(out, quick, md)?;
+    }
+    if run("shallow_runup") {
+        all &= shallow_runup::section(out, quick, md)?;
+    }
+    Ok(all)
+}
 
 /// The upward zero crossings of a record (t, y) after `after` [s], each by linear
 /// interpolation between its two samples [s].

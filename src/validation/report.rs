@@ -80,7 +80,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 18] = [
+pub const CASES: [&str; 22] = [
     "cavity",
     "channel",
     "sphere_drag",
@@ -99,6 +99,10 @@ pub const CASES: [&str; 18] = [
     "sheet_flow_report",
     "sheet_flow_settle",
     "sheet_flow_bed_weight",
+    "shallow_lake_at_rest",
+    "shallow_dam_break",
+    "shallow_thacker",
+    "shallow_runup",
 ];
 
 /// As [`run_validation`], only the case named `only` (one of [`CASES`]) when given.
@@ -164,6 +168,7 @@ pub fn run_validation_cases(
     if run("sheet_flow") {
         all &= sections::ensemble(out, quick, case5, &mut md)?;
     }
+    all &= super::shallow_sections(out, quick, &run, &mut md)?;
     // Long (ensembles of the variants): only when named.
     if only == Some("sheet_flow_sensitivity") {
         sections::sensitivity(out, quick, case5, &mut md)?;

@@ -1,0 +1,463 @@
+//! A shallow-water run (`scenario::shallow`) as the CLI drives it: the time loop with its
+//! frames, time series, gauges, maps of the maxima and checkpoints.
+//!
+//! Output folder: `shallow.pvd` + `shallow_NNNNNN.vti` (depth, surface, bed, velocity; see
+//! `io::shallow`), `series.csv` (volume, wet cells, fastest cell, step), `gauges.csv` (depth,
+//! surface and velocity at each gauge, interpolated as `ShallowWater::sample` does),
+//! `maxima.vti` with `max_depth.png` and `max_speed.png` (the largest depth and speed each cell
+//! saw: the inundation maps), and `checkpoint.ck`. Every output follows simulated time
+//! (`schedule`): a restart from a checkpoint continues bit for bit and writes its outputs at
+//! the very steps of an uninterrupted run. A fresh run first removes these files left by an
+//! earlier run in its folder; a run stopped by a signal writes its checkpoint and stops.
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::Ordering;
+use std::time::Instant;
+
+use anyhow::{bail, Context};
+use serde::Serialize;
+
+use super::schedule::Schedule;
+use super::RunOptions;
+use crate::io::csv::CsvSeries;
+use crate::io::plot::{heat_map, Axes, Field};
+use crate::io::pvd::PvdSeries;
+use crate::io::shallow::{write_frame, write_maxima, ShallowCheckpoint};
+use crate::io::vtk::Format;
+use crate::scenario::shallow::{build, BedKind, ShallowSource};
+use crate::shallow::ShallowWater;
+
+/// Columns of `series.csv`.
+pub const SERIES_COLUMNS: [&str; 9] = [
+    "time",
+    "step",
+    "time_step_s",
+    "volume_m3",
+    "wet_cells",
+    "max_depth_m",
+    "max_speed_m_s",
+    "clipped_m3",
+    "retried_steps",
+];
+
+/// Files a shallow-water run writes under fixed names.
+const FIXED: [&str; 9] = [
+    "shallow.pvd",
+    "series.csv",
+    "gauges.csv",
+    "maxima.vti",
+    "max_depth.png",
+    "max_speed.png",
+    "checkpoint.ck",
+    "shallow_failed.vti",
+    "shallow_failed.ck",
+];
+
+/// What a finished (or stopped) run reports.
+#[derive(Clone, Debug)]
+pub struct ShallowSummary {
+    /// Output folder.
+    pub output_dir: PathBuf,
+    /// Steps taken in this invocation.
+    pub steps: u64,
+    /// Final time [s].
+    pub time: f64,
+    /// Final step number (restarts included).
+    pub step: u64,
+    /// Wall-clock seconds of the time loop.
+    pub wall_seconds: f64,
+    /// Cells of the grid.
+    pub cells: usize,
+    /// The signal that stopped the run before its end, if one did.
+    pub interrupted_by: Option<usize>,
+    /// The last checkpoint written.
+    pub checkpoint: PathBuf,
+}
+
+/// CRC-32 of a value's postcard bytes.
+fn crc<T: Serialize + ?Sized>(v: &T) -> u32 {
+    crc32fast::hash(&postcard::to_stdvec(v).expect("the settings serialise"))
+}
+
+/// What the state means: a hash of `[shallow]` (its gauges left out) and of each file it
+/// reads. `[run]`, `[output]` and the gauges are left out, so that a run can be extended or
+/// its output changed.
+pub fn fingerprint(src: &ShallowSource) -> Vec<(String, u32)> {
+    let s = &src.scenario.shallow;
+    let mut flow = s.clone();
+    flow.gauges.clear();
+    let mut parts = vec![("shallow".to_string(), crc(&flow))];
+    let mut files: Vec<&str> = Vec::new();
+    if s.bed.kind == BedKind::File {
+        files.extend(s.bed.file.as_deref());
+    }
+    for b in s.boundaries.sides().into_iter().flatten() {
+        files.extend(b.file.as_deref());
+    }
+    for f in files {
+        let bytes = std::fs::read(src.dir.join(f)).unwrap_or_default();
+        parts.push((format!("file {f}"), crc32fast::hash(&bytes)));
+    }
+    parts
+}
+
+/// Whether a file of this name is one a shallow-water run writes.
+pub fn is_owned(name: &str) -> bool {
+    let name = name.strip_suffix(".tmp").unwrap_or(name);
+    FIXED.contains(&name)
+        || name
+            .strip_prefix("shallow_")
+            .and_then(|n| n.strip_suffix(".vti"))
+            .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()))
+}
+
+/// Runs a shallow-water scenario to its end time (or from a checkpoint), writing the outputs.
+pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<ShallowSummary> {
+    let file_end = src.scenario.run.end_time;
+    let end = match opts.end_time {
+        Some(e) if !(e.is_finite() && e > 0.0) => {
+            bail!("--end-time must be a positive number of seconds, not {e}")
+        }
+        Some(e) => e,
+        None => file_end,
+    };
+    let sc = &src.scenario;
+    let out = opts
+        .output_dir
+        .clone()
+        .or_else(|| sc.output.directory.as_ref().map(PathBuf::from))
+        .unwrap_or_else(|| PathBuf::from("output").join(&sc.run.name));
+    std::fs::create_dir_all(&out)
+        .with_context(|| format!("cannot create the output folder {}", out.display()))?;
+    let built = build(src)?;
+    if opts.progress {
+        eprint!("{}", built.derived.report());
+    }
+    let mut w = built.water;
+    let gauges = built.gauges;
+    let print = fingerprint(src);
+    let resuming = opts.restart.is_some();
+    if let Some(path) = &opts.restart {
+        let ck = ShallowCheckpoint::read(path)?;
+        let differ: Vec<String> = print
+            .iter()
+            .filter(|p| !ck.fingerprint.contains(p))
+            .map(|p| p.0.clone())
+            .collect();
+        if !differ.is_empty() {
+            bail!(
+                "{}: written by a different scenario; these parts differ: {}. A checkpoint \
+                 continues only the scenario that wrote it (end_time and [output] may change).",
+                path.display(),
+                differ.join(", ")
+            );
+        }
+        if ck.state.time >= end {
+            bail!(
+                "{}: the checkpoint is at t = {:.6} s, at or past the end time {end} s: give a \
+                 later --end-time (or [run] end_time) to continue it",
+                path.display(),
+                ck.state.time
+            );
+        }
+        w.restore(ck.state)
+            .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+        if opts.progress {
+            eprintln!(
+                "continuing from t = {:.6} s, step {} ({})",
+                w.time(),
+                w.steps(),
+                path.display()
+            );
+        }
+    } else {
+        clear(&out)?;
+    }
+    let o = &sc.output;
+    let format = o.vtk_format();
+    let interval = |given: Option<f64>, per_run: f64| given.unwrap_or(file_end / per_run);
+    let mut frames = Schedule::new(interval(o.vtk_interval, 50.0), 0.0, true);
+    let mut rows = Schedule::new(interval(o.series_interval, 500.0), 0.0, true);
+    let mut saves = Schedule::new(interval(o.checkpoint_interval, 4.0), 0.0, true);
+    let t0 = w.time();
+    for s in [&mut frames, &mut rows, &mut saves] {
+        s.start(t0, w.steps());
+    }
+    let mut out_files = Outputs::open(&out, &gauges, resuming, t0, format)?;
+    if !resuming {
+        out_files.frame(&w)?;
+        out_files.rows(&w, 0.0)?;
+    }
+    let ck_path = out.join("checkpoint.ck");
+    let save = |w: &ShallowWater, path: &Path| {
+        ShallowCheckpoint {
+            state: w.state().clone(),
+            fingerprint: print.clone(),
+        }
+        .write(path)
+        .context("cannot write the checkpoint")
+    };
+    let started = Instant::now();
+    let (mut k, mut interrupted_by) = (0u64, None);
+    let mut next_report = 0.1;
+    while w.time() < end && opts.max_steps.is_none_or(|m| k < m) {
+        if let Some(sig) = (opts.stop.as_ref())
+            .map(|s| s.load(Ordering::Relaxed))
+            .filter(|&s| s != 0)
+        {
+            interrupted_by = Some(sig);
+            break;
+        }
+        let dt = w.step_towards(end);
+        k += 1;
+        if !(dt.is_finite() && dt > 0.0) {
+            let _ = write_frame(&w, &out.join("shallow_failed.vti"), format);
+            bail!(
+                "the step failed at t = {:.6} s, step {}: Δt = {dt}; the state is in \
+                 shallow_failed.vti, the output so far in {}",
+                w.time(),
+                w.steps(),
+                out.display()
+            );
+        }
+        let (t, n) = (w.time(), w.steps());
+        if rows.due(t, n) {
+            out_files.rows(&w, dt)?;
+        }
+        if frames.due(t, n) {
+            out_files.frame(&w)?;
+        }
+        if saves.due(t, n) {
+            save(&w, &ck_path)?;
+        }
+        if opts.progress && (t - t0) >= next_report * (end - t0) {
+            eprintln!(
+                "t = {t:.3} s ({:.0} %), step {n}, Δt = {dt:.3e} s, {:.1} s",
+                100.0 * (t - t0) / (end - t0),
+                started.elapsed().as_secs_f64()
+            );
+            next_report += 0.1;
+        }
+    }
+    save(&w, &ck_path)?;
+    if interrupted_by.is_none() {
+        if !frames.fired_at(w.steps()) {
+            out_files.frame(&w)?;
+        }
+        if !rows.fired_at(w.steps()) {
+            out_files.rows(&w, 0.0)?;
+        }
+    }
+    write_maxima(&w, &out.join("maxima.vti"), format).context("cannot write maxima.vti")?;
+    if o.plots {
+        maps(&w, &out, sc.shallow.initial.level)?;
+    }
+    Ok(ShallowSummary {
+        output_dir: out,
+        steps: k,
+        time: w.time(),
+        step: w.steps(),
+        wall_seconds: started.elapsed().as_secs_f64(),
+        cells: w.grid().cells(),
+        interrupted_by,
+        checkpoint: ck_path,
+    })
+}
+
+/// Removes the files of an earlier shallow-water run from `dir`.
+fn clear(dir: &Path) -> anyhow::Result<()> {
+    let entries = std::fs::read_dir(dir)
+        .with_context(|| format!("cannot list the output folder {}", dir.display()))?;
+    for entry in entries {
+        let entry = entry.with_context(|| format!("cannot list {}", dir.display()))?;
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if entry.file_type().is_ok_and(|t| t.is_file()) && is_owned(&name) {
+            std::fs::remove_file(entry.path())
+                .with_context(|| format!("cannot remove {}", entry.path().display()))?;
+        }
+    }
+    Ok(())
+}
+
+/// The files written during the run.
+struct Outputs {
+    dir: PathBuf,
+    pvd: PvdSeries,
+    series: CsvSeries,
+    gauges: Option<CsvSeries>,
+    points: Vec<[f64; 2]>,
+    format: Format,
+}
+
+impl Outputs {
+    fn open(
+        dir: &Path,
+        gauges: &[(String, [f64; 2])],
+        resuming: bool,
+        t0: f64,
+        format: Format,
+    ) -> anyhow::Result<Outputs> {
+        let pvd_path = dir.join("shallow.pvd");
+        let pvd = if resuming && pvd_path.exists() {
+            PvdSeries::resume(&pvd_path, t0)?
+        } else {
+            PvdSeries::new(&pvd_path)
+        };
+        let open = |name: &str, cols: &[&str]| {
+            let p = dir.join(name);
+            if resuming {
+                CsvSeries::resume(&p, cols, t0)
+            } else {
+                CsvSeries::create(&p, cols)
+            }
+            .with_context(|| format!("cannot open {}", p.display()))
+        };
+        let series = open("series.csv", &SERIES_COLUMNS)?;
+        let gauge_series = if gauges.is_empty() {
+            None
+        } else {
+            let mut cols = vec!["time".to_string()];
+            for (name, _) in gauges {
+                for q in ["depth_m", "elevation_m", "u_m_s", "v_m_s"] {
+                    cols.push(format!("{name}_{q}"));
+                }
+            }
+            let cols: Vec<&str> = cols.iter().map(String::as_str).collect();
+            Some(open("gauges.csv", &cols)?)
+        };
+        Ok(Outputs {
+            dir: dir.to_path_buf(),
+            pvd,
+            series,
+            gauges: gauge_series,
+            points: gauges.iter().map(|g| g.1).collect(),
+            format,
+        })
+    }
+
+    fn frame(&mut self, w: &ShallowWater) -> anyhow::Result<()> {
+        let name = format!("shallow_{:06}.vti", self.pvd.entries().len());
+        write_frame(w, &self.dir.join(&name), self.format)
+            .with_context(|| format!("cannot write {name}"))?;
+        self.pvd
+            .add(w.time(), &name, 0)
+            .context("cannot update shallow.pvd")
+    }
+
+    fn rows(&mut self, w: &ShallowWater, dt: f64) -> anyhow::Result<()> {
+        let g = w.grid();
+        let dry = w.parameters().dry_depth;
+        let (mut wet, mut hmax, mut smax) = (0usize, 0.0f64, 0.0f64);
+        for j in 0..g.ny {
+            for i in 0..g.nx {
+                let (h, [u, v]) = w.depth_velocity(i, j);
+                if h >= dry {
+                    wet += 1;
+                    hmax = hmax.max(h);
+                    smax = smax.max(u.hypot(v));
+                }
+            }
+        }
+        let volume = w.volume();
+        if !volume.is_finite() {
+            let _ = write_frame(w, &self.dir.join("shallow_failed.vti"), self.format);
+            bail!(
+                "the flow is no longer finite at t = {:.6} s (step {}); the state is in \
+                 shallow_failed.vti",
+                w.time(),
+                w.steps()
+            );
+        }
+        let s = w.state();
+        self.series
+            .row(&[
+                w.time(),
+                w.steps() as f64,
+                dt,
+                volume,
+                wet as f64,
+                hmax,
+                smax,
+                s.clipped,
+                s.retried as f64,
+            ])
+            .context("cannot write a row of series.csv")?;
+        if let Some(gs) = &mut self.gauges {
+            let mut row = vec![w.time()];
+            for &[x, y] in &self.points {
+                match w.sample(x, y) {
+                    Some(p) => row.extend([p.depth, p.surface(), p.velocity[0], p.velocity[1]]),
+                    None => row.extend([f64::NAN; 4]),
+                }
+            }
+            gs.row(&row).context("cannot write a row of gauges.csv")?;
+        }
+        Ok(())
+    }
+}
+
+/// `max_depth.png` and `max_speed.png`: the inundation maps. With a still-water `level`
+/// [m], the depth map shows the land only (the bed above that level): the inundation depth.
+fn maps(w: &ShallowWater, out: &Path, level: Option<f64>) -> anyhow::Result<()> {
+    let g = *w.grid();
+    let xs: Vec<f64> = (0..g.nx).map(|i| g.centre(i as isize, 0)[0]).collect();
+    let ys: Vec<f64> = (0..g.ny).map(|j| g.centre(0, j as isize)[1]).collect();
+    let solid = g.interior(w.solid());
+    let bed = g.interior(w.bed());
+    let land: Vec<bool> = bed.iter().map(|&z| level.is_none_or(|l| z > l)).collect();
+    let s = w.state();
+    let depth_title = match level {
+        Some(l) => format!("Inundation depth: the largest on land (bed above {l} m) [m]"),
+        None => "The largest depth over the run [m]; structures blank".to_string(),
+    };
+    for (file, title, values, only_land) in [
+        ("max_depth.png", depth_title.as_str(), &s.max_depth, true),
+        (
+            "max_speed.png",
+            "The largest speed over the run [m/s]; structures blank",
+            &s.max_speed,
+            false,
+        ),
+    ] {
+        let v: Vec<f64> = (0..values.len())
+            .map(|k| {
+                if solid[k] || (only_land && !land[k]) {
+                    f64::NAN
+                } else {
+                    values[k]
+                }
+            })
+            .collect();
+        heat_map(
+            &out.join(file),
+            &Axes {
+                title,
+                x_label: "x [m]",
+                y_label: "y [m]",
+                log_y: false,
+            },
+            &Field {
+                x: &xs,
+                y: &ys,
+                values: &v,
+            },
+            &[],
+        )
+        .with_context(|| format!("cannot draw {file}"))?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_run_owns_its_own_names_only() {
+        assert!(is_owned("shallow_000012.vti"));
+        assert!(is_owned("shallow.pvd.tmp"));
+        assert!(is_owned("gauges.csv"));
+        assert!(!is_owned("shallow_bathymetry.vti"));
+        assert!(!is_owned("harbour.asc"));
+    }
+}
