@@ -80,7 +80,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 22] = [
+pub const CASES: [&str; 23] = [
     "cavity",
     "channel",
     "sphere_drag",
@@ -94,6 +94,7 @@ pub const CASES: [&str; 22] = [
     "absorption",
     "wavemaker",
     "solitary_wave",
+    "floating_sphere",
     "sheet_flow",
     "sheet_flow_sensitivity",
     "sheet_flow_report",
@@ -164,6 +165,9 @@ pub fn run_validation_cases(
     }
     if run("solitary_wave") {
         all &= super::solitary_wave::report::section(out, quick, &mut md)?;
+    }
+    if run("floating_sphere") {
+        all &= super::floating_sphere::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
         all &= sections::ensemble(out, quick, case5, &mut md)?;
