@@ -144,7 +144,10 @@ pub fn slide(
         *stuck = false;
     }
     let den = m + dt * k;
-    let vs = [(m * v[0] + dt * drive[0]) / den, (m * v[1] + dt * drive[1]) / den];
+    let vs = [
+        (m * v[0] + dt * drive[0]) / den,
+        (m * v[1] + dt * drive[1]) / den,
+    ];
     if n <= 0.0 {
         *stuck = false;
         return vs;

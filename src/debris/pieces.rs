@@ -153,7 +153,10 @@ fn invalid(p: &Piece) -> Option<String> {
         ));
     }
     if !(p.position.iter().all(|x| x.is_finite()) && p.heading.is_finite()) {
-        return Some(format!("{}: the position and heading must be numbers", p.name));
+        return Some(format!(
+            "{}: the position and heading must be numbers",
+            p.name
+        ));
     }
     None
 }
@@ -173,10 +176,7 @@ impl Debris {
             return Err(e);
         }
         let lightest = pieces.iter().map(|p| p.mass).fold(f64::INFINITY, f64::min);
-        let longest = pieces
-            .iter()
-            .map(|p| p.shape.length)
-            .fold(1.0f64, f64::max);
+        let longest = pieces.iter().map(|p| p.shape.length).fold(1.0f64, f64::max);
         let widest = pieces.iter().map(|p| p.shape.width).fold(1.0f64, f64::max);
         // Two of the lightest blocks: m* = M/2. Restitution e of the damped spring: ζ from e.
         let m_star = 0.5 * if lightest.is_finite() { lightest } else { 1.0 };
@@ -404,11 +404,19 @@ impl Debris {
             .collect()
     }
 
-    /// Advances the debris by `dt` [s] in `flow` (the flow at the end of its step), in
-    /// ⌈dt / Δt_d⌉ equal sub-steps. Fails if a block's state is no longer finite.
+    /// Advances the debris by `dt` [s] in `flow` (the flow at the end of its step):
+    /// [`Debris::advance_to`] the time `time() + dt`.
     pub fn advance(&mut self, flow: &impl FlowField, dt: f64) -> Result<(), String> {
+        self.advance_to(flow, self.time + dt)
+    }
+
+    /// Advances the debris to the time `end` [s] (the flow's, which it then holds to the bit)
+    /// in `flow`, in ⌈(end − time) / Δt_d⌉ equal sub-steps. Fails if a block's state is no
+    /// longer finite.
+    pub fn advance_to(&mut self, flow: &impl FlowField, end: f64) -> Result<(), String> {
+        let dt = end - self.time;
         if self.pieces.is_empty() || dt <= 0.0 {
-            self.time += dt.max(0.0);
+            self.time = self.time.max(end);
             return Ok(());
         }
         let n = (dt / self.dt_max).ceil().max(1.0);
@@ -416,6 +424,7 @@ impl Debris {
         for _ in 0..n as u64 {
             self.substep(flow, h);
         }
+        self.time = end;
         if let Some(b) = (0..self.blocks.len()).find(|&b| {
             let (c, v) = (self.blocks.centre[b], self.blocks.velocity[b]);
             !(c.is_finite() && v.is_finite())

@@ -81,7 +81,10 @@ fn a_floating_box_sits_at_the_archimedes_draft_in_a_lake_at_rest() {
         EMPTY_20FT / (1025.0 * LENGTH_20FT * WIDTH_ISO),
         LADEN_ISO / (1025.0 * LENGTH_40FT * WIDTH_ISO),
     );
-    assert!((e - 0.152).abs() < 1e-3 && (l - 1.000).abs() < 1e-3, "{e} {l}");
+    assert!(
+        (e - 0.152).abs() < 1e-3 && (l - 1.000).abs() < 1e-3,
+        "{e} {l}"
+    );
 }
 
 #[test]
@@ -89,7 +92,10 @@ fn balance_grounds_and_refloats_with_the_depth() {
     let (rho, g, a, hgt) = (1000.0, 10.0, 10.0, 2.0);
     let m = 5000.0; // free draft 0.5 m
     let f = balance(m, a, hgt, 1.0, rho, g);
-    assert_eq!((f.phase, f.wet_height, f.normal), (Phase::Floating, 0.5, 0.0));
+    assert_eq!(
+        (f.phase, f.wet_height, f.normal),
+        (Phase::Floating, 0.5, 0.0)
+    );
     let gr = balance(m, a, hgt, 0.2, rho, g);
     assert_eq!(gr.phase, Phase::Grounded);
     assert!((gr.wet_height - 0.2).abs() < 1e-15);
@@ -246,7 +252,10 @@ fn a_surface_slope_pushes_a_floating_box_by_its_froude_krylov_and_added_mass_for
     let h = d.max_step();
     d.advance(&flow, h).unwrap();
     let a = d.blocks().velocity[0].x / h;
-    assert!((a + p.gravity * s).abs() < 1e-12 * p.gravity * s.max(1.0), "{a}");
+    assert!(
+        (a + p.gravity * s).abs() < 1e-12 * p.gravity * s.max(1.0),
+        "{a}"
+    );
 }
 
 /// Rows of boxes carried by a current into a wall, through their contacts.

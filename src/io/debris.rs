@@ -87,9 +87,8 @@ pub fn boxes(d: &Debris) -> (Vec<Vec3>, Vec<[u32; 3]>) {
 pub fn write_debris_frame(d: &Debris, path: &Path, format: Format) -> std::io::Result<()> {
     let (v, t) = boxes(d);
     let b = d.blocks();
-    let per = |f: &dyn Fn(usize) -> f64| -> Vec<f64> {
-        (0..b.len()).flat_map(|k| [f(k); 12]).collect()
-    };
+    let per =
+        |f: &dyn Fn(usize) -> f64| -> Vec<f64> { (0..b.len()).flat_map(|k| [f(k); 12]).collect() };
     let id: Vec<i64> = b.id.iter().flat_map(|&i| [i as i64; 12]).collect();
     let state = per(&|k| d.states()[k].phase.code());
     let mass = per(&|k| b.mass[k]);

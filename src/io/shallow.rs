@@ -17,8 +17,8 @@ use serde::{Deserialize, Serialize};
 
 use super::checkpoint::CheckpointError;
 use super::vtk::{write_image, Array, Format};
-use crate::math::Vec3;
 use crate::debris::DebrisState;
+use crate::math::Vec3;
 use crate::shallow::{velocity, ShallowState, ShallowWater};
 
 const MAGIC: &[u8; 8] = b"RIPRAPSW";

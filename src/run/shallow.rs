@@ -23,13 +23,13 @@ use serde::Serialize;
 
 use super::schedule::Schedule;
 use super::RunOptions;
-use crate::io::csv::CsvSeries;
-use crate::io::plot::{heat_map, Axes, Field};
-use crate::io::pvd::PvdSeries;
 use crate::debris::Debris;
 use crate::io::csv::read_csv;
+use crate::io::csv::CsvSeries;
 use crate::io::debris::{track_rows, write_debris_frame, TRACK_COLUMNS};
+use crate::io::plot::{heat_map, Axes, Field};
 use crate::io::plot::{LineStyle, Series};
+use crate::io::pvd::PvdSeries;
 use crate::io::shallow::{write_frame, write_maxima, DebrisCheckpoint, ShallowCheckpoint};
 use crate::io::vtk::Format;
 use crate::scenario::shallow::{build, BedKind, ShallowSource};
@@ -124,11 +124,13 @@ pub fn debris_checkpoint(path: &Path) -> PathBuf {
 pub fn is_owned(name: &str) -> bool {
     let name = name.strip_suffix(".tmp").unwrap_or(name);
     FIXED.contains(&name)
-        || [("shallow_", ".vti"), ("debris_", ".vtp")].iter().any(|(pre, ext)| {
-            name.strip_prefix(pre)
-                .and_then(|n| n.strip_suffix(ext))
-                .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()))
-        })
+        || [("shallow_", ".vti"), ("debris_", ".vtp")]
+            .iter()
+            .any(|(pre, ext)| {
+                name.strip_prefix(pre)
+                    .and_then(|n| n.strip_suffix(ext))
+                    .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()))
+            })
 }
 
 /// Runs a shallow-water scenario to its end time (or from a checkpoint), writing the outputs.
@@ -277,7 +279,8 @@ pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<Shallow
         }
         if let Some(d) = &mut debris {
             let clock = Instant::now();
-            d.advance(&w, dt).map_err(|e| anyhow::anyhow!("{e}"))?;
+            d.advance_to(&w, w.time())
+                .map_err(|e| anyhow::anyhow!("{e}"))?;
             debris_seconds += clock.elapsed().as_secs_f64();
         }
         let (t, n) = (w.time(), w.steps());
@@ -580,8 +583,8 @@ impl DebrisOutputs {
 
 /// `debris_tracks.png`: each piece's track (from `debris_tracks.csv`) over the bed.
 fn track_map(w: &ShallowWater, out: &Path) -> anyhow::Result<()> {
-    let (_, rows) = read_csv(&out.join("debris_tracks.csv"))
-        .context("cannot read debris_tracks.csv back")?;
+    let (_, rows) =
+        read_csv(&out.join("debris_tracks.csv")).context("cannot read debris_tracks.csv back")?;
     let n = rows.iter().map(|r| r[1] as usize + 1).max().unwrap_or(0);
     let mut tracks: Vec<Vec<(f64, f64)>> = vec![Vec::new(); n];
     for r in &rows {

@@ -202,8 +202,7 @@ pub fn pieces(src: &ShallowSource) -> Result<Vec<Piece>, ScenarioError> {
             _ => {
                 return Err(bad(
                     "container",
-                    "give a container size (\"20ft\", \"40ft\") or length, width and height"
-                        .into(),
+                    "give a container size (\"20ft\", \"40ft\") or length, width and height".into(),
                 ))
             }
         };
@@ -214,11 +213,17 @@ pub fn pieces(src: &ShallowSource) -> Result<Vec<Piece>, ScenarioError> {
         let tau = positive("flooding_time", e.flooding_time)?.unwrap_or(f64::INFINITY);
         let phi = e.floodable_fraction.unwrap_or(DEFAULT_FLOODABLE);
         if !(0.0..=1.0).contains(&phi) {
-            return Err(bad("floodable_fraction", format!("{phi} must lie in [0, 1]")));
+            return Err(bad(
+                "floodable_fraction",
+                format!("{phi} must lie in [0, 1]"),
+            ));
         }
         let heading = e.heading.unwrap_or(0.0);
         if !heading.is_finite() || !e.position.iter().all(|x| x.is_finite()) {
-            return Err(bad("position", "the position and heading must be numbers".into()));
+            return Err(bad(
+                "position",
+                "the position and heading must be numbers".into(),
+            ));
         }
         let [na, nc] = e.count.unwrap_or([1, 1]);
         if na == 0 || nc == 0 {
@@ -227,7 +232,12 @@ pub fn pieces(src: &ShallowSource) -> Result<Vec<Piece>, ScenarioError> {
         let [sa, sc] = match e.spacing {
             Some(s) => s,
             None if na * nc == 1 => [0.0, 0.0],
-            None => return Err(bad("spacing", "several pieces need their spacing [m]".into())),
+            None => {
+                return Err(bad(
+                    "spacing",
+                    "several pieces need their spacing [m]".into(),
+                ))
+            }
         };
         if na > 1 && sa < shape.length || nc > 1 && sc < shape.width {
             return Err(bad(
@@ -316,9 +326,9 @@ pub fn report(src: &ShallowSource, d: &Debris, flow: &impl FlowField) -> Vec<Str
     }
     for r in d.report(flow) {
         let depth = r.depth.map_or("outside".into(), |h| format!("{h:.3} m"));
-        let sinks = r
-            .sinks_after
-            .map_or("never sinks".into(), |t| format!("sinks after {t:.0} s afloat"));
+        let sinks = r.sinks_after.map_or("never sinks".into(), |t| {
+            format!("sinks after {t:.0} s afloat")
+        });
         lines.push(format!(
             "  {}: {:.0} kg, free draft {:.3} m, depth {depth}: {}, wet height {:.3} m, wetted \
              area {:.2} m² end-on / {:.2} m² broadside; {sinks}",
