@@ -184,7 +184,7 @@ pub fn flooded_mass(m0: f64, v: f64, phi: f64, tau: f64, rho: f64, t: f64) -> f6
 /// or voids too small).
 pub fn sinking_time(m0: f64, v: f64, phi: f64, tau: f64, rho: f64) -> Option<f64> {
     let need = (rho * v - m0) / (rho * phi * v);
-    if !tau.is_finite() || !(need < 1.0) {
+    if !tau.is_finite() || need.is_nan() || need >= 1.0 {
         return None;
     }
     Some(-tau * (-need.max(0.0)).ln_1p())

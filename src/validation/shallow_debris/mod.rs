@@ -55,7 +55,7 @@ pub const VELOCITY_TOLERANCE: f64 = 1e-12;
 /// |v − v_t| / U for the sliding box [-].
 pub const SLIDING_TOLERANCE: f64 = 1e-6;
 
-/// 1. Archimedes: the largest |bottom − (η − M/(ρA))| [m] over four containers floating in a
+/// Case 1: Archimedes: the largest |bottom − (η − M/(ρA))| [m] over four containers floating in a
 /// shallow-water lake at rest after 100 flow steps, and their largest drift [m].
 pub fn archimedes() -> (f64, f64) {
     let grid = Grid::new([20, 20], [0.0, 0.0], [100.0, 100.0]);
@@ -94,7 +94,7 @@ pub fn archimedes() -> (f64, f64) {
     (err, drift)
 }
 
-/// 2. A laden 20 ft box released at rest in a current U = 2 m/s, end-on: the largest
+/// Case 2: A laden 20 ft box released at rest in a current U = 2 m/s, end-on: the largest
 /// |v − v_exact|/U and |x − x_exact|/(U τ) over 3 τ, at the sub-step of `stiffness`, with
 /// the sub-step h and τ; and the (t, v) record.
 #[allow(clippy::type_complexity)]
@@ -128,7 +128,7 @@ pub fn release(stiffness: f64) -> ([f64; 2], f64, f64, Vec<(f64, f64)>) {
     (worst, h, tau, rec)
 }
 
-/// 3. An empty 20 ft box grounded in 0.1 m of water: U_c, whether it stayed put for 20 s at
+/// Case 3: An empty 20 ft box grounded in 0.1 m of water: U_c, whether it stayed put for 20 s at
 /// 0.99 U_c, and |v − v_t|/U after 60 s at 1.2 U_c.
 pub fn friction() -> (f64, bool, f64) {
     let p = Parameters::default();
@@ -157,7 +157,7 @@ pub fn friction() -> (f64, bool, f64) {
     (uc, stays, (v - vt).abs() / u)
 }
 
-/// 4. An empty 20 ft container flooding with τ = 120 s, φ = 0.98, afloat in 8 m of water:
+/// Case 4: An empty 20 ft container flooding with τ = 120 s, φ = 0.98, afloat in 8 m of water:
 /// the predicted and the simulated sinking times [s], and the sub-step [s].
 pub fn flooding() -> (f64, f64, f64) {
     let p = Parameters::default();
@@ -178,7 +178,7 @@ pub fn flooding() -> (f64, f64, f64) {
     (ts, d.time(), h)
 }
 
-/// 5. Twelve boxes carried into a wall through their contacts, on 1 and on 2 threads: whether
+/// Case 5: Twelve boxes carried into a wall through their contacts, on 1 and on 2 threads: whether
 /// the states are the same bits, and the contacts of the last step.
 pub fn threads() -> (bool, usize) {
     let flow = Uniform {
