@@ -70,7 +70,8 @@
 //! contact forces at the positions reached, then v and ω (the loads above with the flow at the
 //! end of the flow step), then x and the heading (`rigid::newton_euler::drift`). The blocks
 //! are visited in order, the DEM's sums are independent of the number of threads: the results
-//! are the same bits on any number of threads. A step allocates nothing.
+//! are the same bits on any number of threads. A step allocates nothing but what the DEM's
+//! neighbour rebuilds allocate (a few times per rebuild, `tests/shallow_debris_no_alloc.rs`).
 //!
 //! **Two-way coupling** would need: the blocks' reaction on the flow as a momentum sink in
 //! the cells under each block (−(drag + inertia) / (ρ Δx Δy) in the equations of hu and hv,

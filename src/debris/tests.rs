@@ -106,6 +106,31 @@ fn balance_grounds_and_refloats_with_the_depth() {
     assert_eq!((sunk.phase, sunk.wet_height), (Phase::Sunk, hgt));
 }
 
+#[test]
+fn a_box_refloats_when_the_water_rises_and_grounds_when_it_falls() {
+    // An empty 20 ft box on a dry bed, then in 1 m of still water, then in 0.1 m again.
+    let flow = |h: f64| Uniform {
+        depth: h,
+        velocity: [0.0, 0.0],
+        slope: [0.0, 0.0],
+    };
+    let p = Parameters::default();
+    let pc = piece("box", Container::Twenty, false, [0.0, 0.0], 0.0);
+    let (sh, m) = (pc.shape, pc.mass);
+    let mut d = Debris::new(p, vec![pc], &[], EXTENT, &flow(0.0)).unwrap();
+    let z = |d: &Debris| d.blocks().centre[0].z - 0.5 * sh.height;
+    assert_eq!((d.states()[0].phase, z(&d)), (Phase::Grounded, 0.0));
+    assert_eq!(d.states()[0].normal, m * p.gravity);
+    d.advance(&flow(1.0), 0.1).unwrap();
+    let draft = m / (p.water_density * sh.plan_area());
+    assert_eq!(d.states()[0].phase, Phase::Floating);
+    assert!((z(&d) - (1.0 - draft)).abs() < 1e-15);
+    d.advance(&flow(0.1), 0.1).unwrap();
+    assert_eq!((d.states()[0].phase, z(&d)), (Phase::Grounded, 0.0));
+    let n = p.gravity * (m - p.water_density * sh.plan_area() * 0.1);
+    assert!((d.states()[0].normal - n).abs() < 1e-9 * n);
+}
+
 /// Releases one box at rest in `flow` and returns (t, x, vx) every sub-step.
 fn release(p: Parameters, pc: Piece, flow: &Uniform, end: f64) -> (Debris, Vec<[f64; 3]>) {
     let mut d = Debris::new(p, vec![pc], &[], EXTENT, flow).unwrap();
