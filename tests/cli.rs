@@ -63,7 +63,10 @@ fn check_passes_on_every_example_and_prints_the_derived_quantities() {
         );
         // A flow-only example reports its grid and fluid step instead of the contacts.
         let body = std::fs::read_to_string(file).unwrap();
-        let needles: &[&str] = if body.contains("\n[fluid]") && !body.contains("[[spheres]]") {
+        let needles: &[&str] = if body.contains("\n[shallow]") {
+            // A shallow-water example (with or without debris) reports its grid and CFL step.
+            &["valid (a shallow-water scenario)", "CFL step", "cells", "memory"]
+        } else if body.contains("\n[fluid]") && !body.contains("[[spheres]]") {
             &[
                 "valid",
                 "fluid grid:",
