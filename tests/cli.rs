@@ -65,7 +65,12 @@ fn check_passes_on_every_example_and_prints_the_derived_quantities() {
         let body = std::fs::read_to_string(file).unwrap();
         let needles: &[&str] = if body.contains("\n[shallow]") {
             // A shallow-water example (with or without debris) reports its grid and CFL step.
-            &["valid (a shallow-water scenario)", "CFL step", "cells", "memory"]
+            &[
+                "valid (a shallow-water scenario)",
+                "CFL step",
+                "cells",
+                "memory",
+            ]
         } else if body.contains("\n[fluid]") && !body.contains("[[spheres]]") {
             &[
                 "valid",
