@@ -496,8 +496,12 @@ pub fn restore(sim: Simulation, ck: Checkpoint) -> Simulation {
         resumed = resumed.with_fluid(f);
     }
     // The coupling keeps no state of its own: the held loads are in the spheres, ρ̄ and F in
-    // the flow.
-    resumed.coupling = sim.coupling;
+    // the flow; under air it hands the flow the solids at the saved positions again.
+    let mut coupling = sim.coupling;
+    if let (Some(c), Some(f)) = (&mut coupling, &mut resumed.fluid) {
+        c.restore(f, &mut resumed.dem.spheres);
+    }
+    resumed.coupling = coupling;
     resumed
 }
 

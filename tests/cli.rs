@@ -61,15 +61,16 @@ fn check_passes_on_every_example_and_prints_the_derived_quantities() {
             stdout,
             text(&out.stderr)
         );
-        // A flow-only example reports its grid and fluid step instead of the contacts.
+        // A flow-only example reports its grid and fluid step instead of the contacts; a
+        // shallow-water one its grid, wave speed, CFL step and memory.
         let body = std::fs::read_to_string(file).unwrap();
         let needles: &[&str] = if body.contains("\n[shallow]") {
-            // A shallow-water example (with or without debris) reports its grid and CFL step.
             &[
                 "valid (a shallow-water scenario)",
-                "CFL step",
-                "cells",
-                "memory",
+                "grid:",
+                "wave speed",
+                "CFL step at the start:",
+                "memory:",
             ]
         } else if body.contains("\n[fluid]") && !body.contains("[[spheres]]") {
             &[

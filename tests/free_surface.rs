@@ -239,18 +239,6 @@ fn air_and_water_in_a_scenario_are_checked_by_key() {
         e.contains("fluid.boundaries.z_max") && e.contains("needs [fluid.air]"),
         "{e}"
     );
-    // Spheres in water under air: refused until the coupling with the mixture is built.
-    let wet = format!(
-        "{}\n[fluid.air]\nwater_level = 0.05\n",
-        riprap::validation::wet_rebound::SCENARIO
-    );
-    let e = built(&wet)
-        .map(|_| ())
-        .expect_err("spheres with air are refused");
-    assert!(
-        e.contains("fluid.air") && e.contains("not built yet"),
-        "{e}"
-    );
 }
 
 /// A standing wave in a closed tank: the quick level of the validation case `standing_wave`

@@ -1,4 +1,4 @@
-//! Trilinear interpolation of a face velocity to a point, and its transpose (spreading a force
+//! Trilinear interpolation of a face velocity (or a cell-centred field) to a point, and its transpose (spreading a force
 //! from a point onto the faces), on the staggered grid.
 //!
 //! For component a the faces sit at x_b = x₀_b + (i_b + s_b) Δ_b with s_b = 0 along a and ½
@@ -20,16 +20,39 @@ pub fn face_stencil(
     a: usize,
     x: Vec3,
 ) -> [(usize, f64); 8] {
+    stencil(grid, bcs, Some(a), x)
+}
+
+/// The eight cell centres around `x` [m] and their weights (sum 1): padded indices.
+pub fn cell_stencil(grid: &StaggeredGrid, bcs: &Boundaries, x: Vec3) -> [(usize, f64); 8] {
+    stencil(grid, bcs, None, x)
+}
+
+/// A cell-centred field `f` at `x` [m], trilinear.
+pub fn cell_value_at(grid: &StaggeredGrid, bcs: &Boundaries, f: &[f64], x: Vec3) -> f64 {
+    cell_stencil(grid, bcs, x)
+        .iter()
+        .map(|&(c, w)| w * f[c])
+        .sum()
+}
+
+/// The stencil of the faces of component `axis`, or of the cell centres (`None`).
+fn stencil(
+    grid: &StaggeredGrid,
+    bcs: &Boundaries,
+    axis: Option<usize>,
+    x: Vec3,
+) -> [(usize, f64); 8] {
     let mut idx = [[0usize; 2]; 3];
     let mut t = [0.0; 3];
     for b in 0..3 {
-        let shift = if b == a { 0.0 } else { 0.5 };
+        let shift = if Some(b) == axis { 0.0 } else { 0.5 };
         let s = (x[b] - grid.origin[b]) / grid.spacing[b] - shift;
         let i0 = s.floor();
         t[b] = s - i0;
         let n = grid.n[b] as i64;
         // The faces (or cells) the flow step updates along b, unpadded.
-        let (lo, hi) = if b == a && !bcs.is_periodic(b) {
+        let (lo, hi) = if Some(b) == axis && !bcs.is_periodic(b) {
             (1, n - 1)
         } else {
             (0, n - 1)

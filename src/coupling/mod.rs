@@ -54,6 +54,17 @@
 //! of p̄) acts on the spheres too, as the Froude-Krylov force V (−∇P_drive)
 //! ([`driving_force_density`]), so that grains feel the gradient that accelerates the water.
 //!
+//! **Under air** (a free surface, `fluid::phases`): the mixture of [53] has three parts,
+//! ρ̄ = ρ(α) (1 − φ) + Σ_i φ_ic ρ_i, and the flow gets φ and Σ_i φ_ic ρ_i (`fluid::solids`:
+//! the mixture's inertia, the fluid phases' weight, α inside solids extended from the fluid
+//! around them). p̄ then holds the air's hydrostatic pressure, which [59]'s sum by shares over
+//! every face a sphere touches would apply to a body thicker than the sphere: [59] takes the
+//! pressure less its hydrostatic part ([`resolved::FlowView::force_density`]), and the
+//! buoyancy is the weight of the water *and* air displaced, face by face with the sphere's
+//! own weights, shared where a block's members overlap ([`resolved::displaced_weight`]): a
+//! block half out of the water is buoyed by its submerged half (validation case `floating_sphere`: Archimedes' draft). Unresolved
+//! spheres take ρ(α) and ν(α) at their centre for the drag [5] and the buoyancy.
+//!
 //! **Sub-cycling.** The fluid force is *held* over the k DEM sub-steps of a fluid step: the
 //! provisional flow gives one sample per fluid step, holding it gives the sphere exactly the
 //! impulse k Δt F of that sample, and extrapolating it would overshoot when a contact stops the
@@ -81,6 +92,7 @@ use std::f64::consts::PI;
 
 use crate::dem::par::MIN_SPHERES_PER_TASK;
 use crate::dem::spheres::Spheres;
+use crate::fluid::phases::{self, Air};
 use crate::fluid::{Boundaries, Fluid, StaggeredGrid};
 pub use drag::DragLaw;
 use fraction::{box_size, normalise, sphere_fractions, CellBox};
@@ -168,6 +180,11 @@ pub struct Coupling {
     interaction: [Vec<f64>; 3],
     /// The film force of thin gaps, when the parameters ask for it.
     lubrication: Option<Lubrication>,
+    /// Water under air: its phases, and the fluid's (ρ [kg m⁻³], ν [m² s⁻¹]) at each
+    /// sphere's centre from α there, for the drag and buoyancy of unresolved spheres (scratch
+    /// of the step, by slot).
+    air: Option<Air>,
+    local_fluid: Vec<[f64; 2]>,
     /// The storage planes [first, end) outside which `weight` and `interaction` are zero and
     /// ρ̄ = ρ_w (those of the last sums over spheres; every plane at first): the passes over
     /// the grid visit only these, so that a bed at the bottom of a tall domain costs the
@@ -227,6 +244,8 @@ impl Coupling {
             slabs: Slabs::default(),
             obstacle_force: Vec3::ZERO,
             interaction: std::array::from_fn(|_| field()),
+            air: p.air,
+            local_fluid: Vec::new(),
             lubrication: parameters
                 .lubrication
                 .map(|l| Lubrication::new(l, p.density * p.kinematic_viscosity)),
@@ -276,6 +295,20 @@ impl Coupling {
         fluid.set_mixture_weight(false);
     }
 
+    /// For a flow restored from a checkpoint: under air, hands the flow the solids at the saved
+    /// positions again (`fluid::solids`; ρ̄ comes out as saved, so a restart continues bit for
+    /// bit). Nothing else needs restoring.
+    pub fn restore(&mut self, fluid: &mut Fluid, spheres: &mut Spheres) {
+        self.attach(fluid);
+        if self.air.is_some() {
+            spheres.with_fluid_loads();
+            self.compute_fractions(spheres);
+            // As the last correction left them: the next load reuses fractions and weights.
+            self.accumulate_weights(spheres);
+            self.set_mixture_density(fluid, spheres);
+        }
+    }
+
     /// At t = 0: ρ̄ [53] from the spheres and the water in them moving with them [62]
     /// (F stays zero).
     pub fn initialise(&mut self, fluid: &mut Fluid, spheres: &mut Spheres) {
@@ -305,6 +338,8 @@ impl Coupling {
             self.spans.weight,
             &mut self.face_loads,
         );
+        self.measure_local_fluid(fluid, spheres);
+        let weight = fluid.solid_weight();
         let this = &*self;
         let b3 = this.b * this.b * this.b;
         let drive = driving_force_density(fluid);
@@ -320,10 +355,15 @@ impl Coupling {
             .for_each(|(i, ((load, f), t))| {
                 let (x, r) = (s.position[i], s.radius[i]);
                 let volume = 4.0 / 3.0 * PI * r.powi(3);
-                // Buoyancy and the Froude-Krylov force of the driving gradient:
-                // V (−ρ_w g) + V (−∇P_drive).
-                let buoyancy = volume * (drive - this.rho_w * this.gravity);
                 load.unresolved = !this.is_resolved(r);
+                // Buoyancy and the Froude-Krylov force of the driving gradient:
+                // V (−ρ_w g) + V (−∇P_drive). An unresolved sphere under air: ρ(α) at its
+                // centre for ρ_w (a resolved one gets the rest from p̄ in [59]: `fluid::solids`).
+                let rho = match this.air {
+                    Some(_) if load.unresolved => this.local_fluid[i][0],
+                    _ => this.rho_w,
+                };
+                let buoyancy = volume * (drive - rho * this.gravity);
                 if load.unresolved {
                     load.fluid_velocity = interpolate::velocity_at(&this.grid, &this.bcs, u, x);
                     load.force = buoyancy;
@@ -339,11 +379,32 @@ impl Coupling {
                         x,
                         &this.face_loads,
                     );
+                    // Under air the buoyancy is the weight of the fluid displaced, face by
+                    // face (`resolved::displaced_weight`), and [59] the rest.
+                    let buoyancy = match weight {
+                        Some(w) => {
+                            let g = this.gravity;
+                            let (grid, bcs) = (&this.grid, &this.bcs);
+                            let b = resolved::displaced_weight(
+                                grid,
+                                bcs,
+                                &boxes[i],
+                                this.b,
+                                own,
+                                &this.weight,
+                                w,
+                                this.rho_w,
+                                g,
+                            );
+                            b + volume * drive
+                        }
+                        None => buoyancy,
+                    };
                     load.force = fr + buoyancy;
                     load.torque = tr;
                 }
                 let drag = if load.unresolved {
-                    this.drag(load.fluid_velocity - s.velocity[i], r)
+                    this.drag(i, load.fluid_velocity - s.velocity[i], r)
                 } else {
                     Vec3::ZERO
                 };
@@ -403,15 +464,35 @@ impl Coupling {
         }
     }
 
-    /// The drag [5] on a sphere of radius `r` [m] at relative velocity `u_rel` [m s⁻¹] [N].
-    fn drag(&self, u_rel: Vec3, r: f64) -> Vec3 {
-        drag::drag_force(
-            self.parameters.drag_law,
-            self.rho_w,
-            self.nu,
-            2.0 * r,
-            u_rel,
-        )
+    /// The drag [5] on sphere `i` of radius `r` [m] at relative velocity `u_rel` [m s⁻¹] [N]:
+    /// in water, or under air in the fluid at its centre.
+    fn drag(&self, i: usize, u_rel: Vec3, r: f64) -> Vec3 {
+        let [rho, nu] = match self.air {
+            Some(_) => self.local_fluid[i],
+            None => [self.rho_w, self.nu],
+        };
+        drag::drag_force(self.parameters.drag_law, rho, nu, 2.0 * r, u_rel)
+    }
+
+    /// Under air: ρ(α) and ν = μ(α)/ρ(α) at each sphere's centre, α interpolated from the
+    /// cells ([`interpolate::cell_value_at`]). Nothing without air.
+    fn measure_local_fluid(&mut self, fluid: &Fluid, spheres: &Spheres) {
+        let Some(air) = self.air else {
+            return;
+        };
+        let (grid, bcs) = (self.grid, self.bcs);
+        let (rho_w, mu_w) = (self.rho_w, self.rho_w * self.nu);
+        let alpha = fluid.water_fraction();
+        self.local_fluid.resize(spheres.len(), [rho_w, self.nu]);
+        self.local_fluid
+            .par_iter_mut()
+            .zip(spheres.position.par_iter())
+            .for_each(|(out, &x)| {
+                let a = interpolate::cell_value_at(&grid, &bcs, alpha, x).clamp(0.0, 1.0);
+                let rho = phases::density(a, rho_w, air.density);
+                let mu = phases::viscosity(a, mu_w, air.dynamic_viscosity);
+                *out = [rho, mu / rho];
+            });
     }
 
     /// In each force evaluation of the DEM: adds the held load, and for unresolved spheres the
@@ -430,7 +511,7 @@ impl Coupling {
             .for_each(|(i, ((load, f), t))| {
                 let mut total = load.force;
                 if load.unresolved {
-                    let drag = self.drag(load.fluid_velocity - s.velocity[i], s.radius[i]);
+                    let drag = self.drag(i, load.fluid_velocity - s.velocity[i], s.radius[i]);
                     load.drag = drag;
                     load.impulse += dt * drag;
                     total += drag;
@@ -547,6 +628,10 @@ impl Coupling {
                 }
             },
         );
+        if let Some(air) = fluid.parameters().air {
+            self.set_mixture_with_air(fluid, air, stale, active);
+            return;
+        }
         let rho_w = self.rho_w;
         let rho = fluid.mixture_density_mut();
         // By storage planes in parallel, interior cells only (the ghosts are filled after),
@@ -568,6 +653,49 @@ impl Coupling {
                     }
                 }
             });
+        self.spans.density = active;
+        fluid.fill_ghosts();
+    }
+
+    /// [`Coupling::set_mixture_density`] with air: ρ̄ = ρ(α) (1 − φ) + Σ_i φ_ic ρ_i [53], with
+    /// ρ(α) the fluid's density, and φ and S = Σ_i φ_ic ρ_i (clamped to one solid) handed to
+    /// the flow (`fluid::solids`), on the storage planes `stale`; `active` holds the solids.
+    fn set_mixture_with_air(
+        &mut self,
+        fluid: &mut Fluid,
+        air: Air,
+        stale: (usize, usize),
+        active: (usize, usize),
+    ) {
+        let (grid, bcs, rho_w) = (self.grid, self.bcs, self.rho_w);
+        let plane = grid.strides()[2];
+        let (solids, rho, alpha) = fluid.solid_fields();
+        rho.par_chunks_mut(plane)
+            .zip(solids.fraction.par_chunks_mut(plane))
+            .zip(solids.density.par_chunks_mut(plane))
+            .zip(self.cell_phi.par_chunks(plane))
+            .enumerate()
+            .filter(|(kk, _)| (1..=grid.n[2]).contains(kk) && (stale.0..stale.1).contains(kk))
+            .for_each(|(kk, (((rho, phi_out), s_out), cell_phi))| {
+                for j in 0..grid.n[1] {
+                    for i in 0..grid.n[0] {
+                        let c = grid.cell(i, j, kk - 1);
+                        let q = c - kk * plane;
+                        let [phi, phi_rho] = cell_phi[q];
+                        let (phi, s) = if phi <= 1.0 {
+                            (phi, phi_rho)
+                        } else {
+                            (1.0, phi_rho / phi)
+                        };
+                        let rho_f = phases::density(alpha[c], rho_w, air.density);
+                        rho[q] = rho_f * (1.0 - phi) + s;
+                        phi_out[q] = phi;
+                        s_out[q] = s;
+                    }
+                }
+            });
+        solids.planes = active;
+        solids.fill_ghosts(&grid, &bcs);
         self.spans.density = active;
         fluid.fill_ghosts();
     }

@@ -240,23 +240,41 @@ pub struct FlowView<'a> {
     mu_t: &'a [f64],
     mu: f64,
     sgs: bool,
+    /// Under air: the fluid's weight density ρ_f(α) − ρ_w on the faces [kg m⁻³] and g
+    /// [m s⁻²], whose hydrostatic pressure is taken out of f_a ([`FlowView::force_density`]).
+    hydrostatic: Option<(&'a [Vec<f64>; 3], Vec3)>,
 }
 
 impl<'a> FlowView<'a> {
     /// The view of `fluid` after its (provisional) step.
+    /// Under air the whole viscosity μ(α) + μ_SGS goes through the stress divergence, as in
+    /// the flow step (`fluid::phases`).
     pub fn new(fluid: &'a Fluid) -> FlowView<'a> {
+        let par = fluid.parameters();
+        let (mu_t, mu, sgs) = match par.air {
+            Some(_) => (fluid.stress_viscosity(), 0.0, true),
+            None => (
+                fluid.eddy_viscosity(),
+                par.dynamic_viscosity(),
+                par.smagorinsky.is_some(),
+            ),
+        };
         FlowView {
             grid: *fluid.grid(),
             st: Stencil::new(fluid.grid()),
             p: fluid.pressure(),
             u: fluid.velocity(),
-            mu_t: fluid.eddy_viscosity(),
-            mu: fluid.parameters().dynamic_viscosity(),
-            sgs: fluid.parameters().smagorinsky.is_some(),
+            mu_t,
+            mu,
+            sgs,
+            hydrostatic: fluid.solid_weight().map(|w| (w, par.gravity)),
         }
     }
 
     /// f_a(c) of the module docs [N m⁻³]: −∂p̄/∂x_a + (∇·σ̃)_a − (∇·τ^SGS)_a on the a-face c.
+    /// Under air less the hydrostatic part, + (ρ_f(α) − ρ_w) g_a: p̄ holds the air's weight
+    /// (`fluid::solids`), which summed by shares over every face a sphere touches would weigh
+    /// a body thicker than the sphere; [`displaced_weight`] adds it back exactly.
     #[inline]
     pub fn force_density(&self, a: usize, c: usize) -> f64 {
         let st = &self.st;
@@ -264,6 +282,9 @@ impl<'a> FlowView<'a> {
         let mut f = -grad + molecular(st, self.mu, self.u[a], c);
         if self.sgs {
             f += subgrid(st, self.u, self.mu_t, a, c);
+        }
+        if let Some((w, g)) = self.hydrostatic {
+            f += w[a][c] * g[a];
         }
         f
     }
@@ -296,6 +317,43 @@ impl<'a> FlowView<'a> {
                 });
         }
     }
+}
+
+/// Under air: the weight of the water and air a sphere displaces, as a force [N],
+///
+/// ```text
+/// B_a = −g_a ΔV Σ_c w(c) min(1, W(c))/W(c) ρ_f(c)      over the a-faces the sphere covers
+/// ```
+///
+/// (box `cells`, fractions `phi`), W = Σ_j w_j the solid on the face (`total`), ρ_f = ρ_w +
+/// `weight` the fluid's density there (`fluid::solids`): the hydrostatic part of the pressure
+/// force that [`FlowView::force_density`] leaves out, with the solid's own volume, so that a
+/// floating sphere sits at Archimedes' draft. Where the members of a block overlap (W > 1) the
+/// volume is shared, so that a block displaces its union once.
+#[allow(clippy::too_many_arguments)]
+pub fn displaced_weight(
+    grid: &StaggeredGrid,
+    bcs: &Boundaries,
+    cells: &CellBox,
+    b: usize,
+    phi: &[f64],
+    total: &[Vec<[f64; 2]>; 3],
+    weight: &[Vec<f64>; 3],
+    rho_w: f64,
+    gravity: Vec3,
+) -> Vec3 {
+    let mut m = Vec3::ZERO;
+    for_each_face(grid, bcs, cells, b, phi, |a, c, w, _| {
+        let t = total[a][c][0];
+        let share = if t > 1.0 { w / t } else { w };
+        m[a] += share * (rho_w + weight[a][c]);
+    });
+    let volume = grid.cell_volume();
+    Vec3::new(
+        -gravity.x * m.x * volume,
+        -gravity.y * m.y * volume,
+        -gravity.z * m.z * volume,
+    )
 }
 
 /// Force [N] and torque about `x` [N m] on the sphere centred at `x` [59] [61], with box

@@ -66,6 +66,14 @@ pub fn body_acceleration(drive_a: f64, rho_f: f64, rho_w: f64, g_a: f64, force_a
     (drive_a + (rho_f - rho_w) * g_a + force_a) / rho_f
 }
 
+/// B_a of [51] on a face of a mixture of solids, water and air [m s⁻²]: the mixture's
+/// inertia ρ̄_f [kg m⁻³], the fluid phases' weight density `weight` = ρ_f(α) − ρ_w [kg m⁻³]
+/// (`super::solids`), gravity `g_a`, the drive and F as in [`body_acceleration`].
+#[inline]
+pub fn solid_body_acceleration(drive_a: f64, rho_f: f64, weight: f64, g_a: f64, force_a: f64) -> f64 {
+    (drive_a + weight * g_a + force_a) / rho_f
+}
+
 /// Mixture density of [53]: ρ̄ = ρ_w (1 − φ) + ρ_p φ [kg m⁻³], φ the solid volume fraction [–].
 #[inline]
 pub fn mixture_density(rho_w: f64, rho_p: f64, phi: f64) -> f64 {

@@ -61,6 +61,7 @@ pub mod porous;
 pub mod pressure;
 pub mod reflection;
 pub mod sgs;
+pub mod solids;
 pub mod solitary;
 pub mod step;
 pub mod stokes5;

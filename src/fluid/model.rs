@@ -14,6 +14,7 @@ use super::porous::{Porosity, PorousZone};
 use super::pressure::pcg::Solve;
 use super::pressure::{Passes, PressureFields, Projection};
 use super::sgs::Smagorinsky;
+use super::solids::Solids;
 use super::timestep::{free_surface_time_step, max_speed, stable_time_step, TimeStepLimits};
 use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
@@ -152,6 +153,8 @@ pub struct Fluid {
     pub(super) porosity: Option<Porosity>,
     /// Fixed obstacles and the faces they close ([`Fluid::set_obstacles`]); `None` without.
     pub(super) obstacles: Option<Obstacles>,
+    /// The coupling's solids in water under air ([`Fluid::solid_fields`]); `None` without.
+    pub(super) solids: Option<Solids>,
 }
 
 /// Cell-centred copies of the fields for output (compact, nx·ny·nz, i fastest: the order of
@@ -273,6 +276,7 @@ impl Fluid {
             last_solve: Solve::default(),
             porosity: None,
             obstacles: None,
+            solids: None,
         };
         fluid.fill_ghosts();
         Ok(fluid)
@@ -527,6 +531,28 @@ impl Fluid {
     pub fn velocity(&self) -> [&[f64]; 3] {
         let v = &self.state.velocity;
         [&v[0], &v[1], &v[2]]
+    }
+
+    /// With air: the solids the coupling writes (made on the first call), ρ̄ at the cells and
+    /// α, for the mixture of [53] with two fluid phases ([`super::solids`]). The caller fills
+    /// the interior of φ, S and ρ̄, and their ghosts after (`Solids::fill_ghosts`,
+    /// [`Fluid::fill_ghosts`]).
+    pub fn solid_fields(&mut self) -> (&mut Solids, &mut [f64], &[f64]) {
+        let g = self.grid;
+        let solids = self.solids.get_or_insert_with(|| Solids::new(&g));
+        let s = &mut self.state;
+        (solids, &mut s.mixture_density, &s.water_fraction)
+    }
+
+    /// With solids under air: the fluid's weight density ρ_f(α) − ρ_w on the faces of the last
+    /// step [kg m⁻³] ([`super::solids`]).
+    pub fn solid_weight(&self) -> Option<&[Vec<f64>; 3]> {
+        self.solids.as_ref().map(|s| &s.weight)
+    }
+
+    /// μ(α) + μ_SGS at the cells of the last step [Pa s], with air (empty without).
+    pub fn stress_viscosity(&self) -> &[f64] {
+        &self.stress_viscosity
     }
 
     /// Velocity (mutable) and ρ̄ at once: what the coupling's velocity correction [62] changes

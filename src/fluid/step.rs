@@ -26,7 +26,7 @@
 //! conserve volume); the projection moves only interior faces (Neumann pressure).
 
 use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts};
-use super::forcing::body_acceleration;
+use super::forcing::{body_acceleration, solid_body_acceleration};
 use super::grid::{shifted, update_region, update_rows};
 use super::model::Fluid;
 use super::phases::{face_density, set_density, stress_viscosity};
@@ -80,8 +80,14 @@ impl Fluid {
         }
 
         // With air, ρ_f on the faces from α, and the stress divergence carries μ(α) + μ_SGS
-        // (`phases`).
+        // (`phases`). With solids of the coupling, α inside them is first the fluid's around
+        // them, and ρ_f becomes the mixture's ρ̄_f (`solids`).
         if let Some(air) = &par.air {
+            if let Some(solids) = &mut self.solids {
+                let alpha = &mut state.water_fraction;
+                solids.extend_water_fraction(&grid, alpha);
+                fill_scalar_ghosts(&grid, &bcs, alpha);
+            }
             face_density(
                 &grid,
                 &state.water_fraction,
@@ -89,6 +95,9 @@ impl Fluid {
                 air,
                 &mut self.face_density,
             );
+            if let Some(solids) = &mut self.solids {
+                solids.blend(&grid, rho_w, &mut self.face_density);
+            }
             let sgs = par.smagorinsky.map(|_| &state.eddy_viscosity[..]);
             let alpha = &state.water_fraction;
             stress_viscosity(&grid, &bcs, alpha, sgs, mu, air, &mut self.stress_viscosity);
@@ -137,12 +146,13 @@ impl Fluid {
             .force_density(t + 0.5 * dt, rho_w);
         let (c_now, c_old) = (1.0 + 0.5 * r, -0.5 * r);
         // Without the mixture's weight (coupled spheres carry their own) only the drive and F
-        // remain.
-        let g = if self.mixture_weight {
+        // remain; with air the fluid phases keep theirs (`solids`).
+        let g = if self.mixture_weight || par.air.is_some() {
             par.gravity
         } else {
             Vec3::ZERO
         };
+        let weight = self.solids.as_ref().map(|s| &s.weight);
         for a in 0..3 {
             let (h, h_old, f) = (
                 &self.tendency[a],
@@ -168,6 +178,8 @@ impl Fluid {
                         }
                         None => (at(rho, 0), at(rho, -sa)),
                     };
+                    // With solids in air: the mixture's inertia, the fluid's weight (`solids`).
+                    let w = weight.map(|w| at(&w[a], 0));
                     for (i, u) in u_row.iter_mut().enumerate() {
                         let rho_f = 0.5 * (rho_c[i] + rho_m[i]);
                         let ab2 = if first {
@@ -175,7 +187,10 @@ impl Fluid {
                         } else {
                             c_now * h[i] + c_old * h_old[i]
                         };
-                        let b = body_acceleration(drive[a], rho_f, rho_w, g_a, f[i]);
+                        let b = match w {
+                            Some(w) => solid_body_acceleration(drive[a], rho_f, w[i], g_a, f[i]),
+                            None => body_acceleration(drive[a], rho_f, rho_w, g_a, f[i]),
+                        };
                         *u += dt * (ab2 + b);
                     }
                 },
@@ -189,7 +204,11 @@ impl Fluid {
             top[2] = grid.n[2] + 1..grid.n[2] + 2;
             let (rho_f, f) = (&self.face_density[2], &state.body_force[2]);
             update_region(&grid, &top, &mut state.velocity[2], |c, w| {
-                w + dt * body_acceleration(drive[2], rho_f[c], rho_w, g[2], f[c])
+                w + dt
+                    * match weight {
+                        Some(m) => solid_body_acceleration(drive[2], rho_f[c], m[2][c], g[2], f[c]),
+                        None => body_acceleration(drive[2], rho_f[c], rho_w, g[2], f[c]),
+                    }
             });
         }
 

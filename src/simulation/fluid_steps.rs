@@ -44,9 +44,10 @@ impl Simulation {
     /// restored simulation keeps the saved flow.
     pub fn with_coupling(mut self, mut coupling: Coupling) -> Self {
         if let Some(f) = &mut self.fluid {
-            coupling.attach(f);
             if f.steps() == 0 {
                 coupling.initialise(f, &mut self.dem.spheres);
+            } else {
+                coupling.restore(f, &mut self.dem.spheres);
             }
         }
         self.coupling = Some(coupling);

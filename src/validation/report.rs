@@ -94,6 +94,7 @@ pub const CASES: [&str; 23] = [
     "absorption",
     "wavemaker",
     "solitary_wave",
+    "floating_sphere",
     "sheet_flow",
     "sheet_flow_sensitivity",
     "sheet_flow_report",
@@ -165,6 +166,9 @@ pub fn run_validation_cases(
     }
     if run("solitary_wave") {
         all &= super::solitary_wave::report::section(out, quick, &mut md)?;
+    }
+    if run("floating_sphere") {
+        all &= super::floating_sphere::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
         all &= sections::ensemble(out, quick, case5, &mut md)?;

@@ -81,14 +81,13 @@ impl Phases {
 }
 
 /// Checks `[fluid.air]` and `[[fluid.water]]` (water density `rho_w` [kg m⁻³], flow box
-/// [lo, hi]); `coupled` when spheres or blocks share the flow.
+/// [lo, hi]).
 pub(super) fn phases(
     src: &Source,
     f: &FluidSection,
     rho_w: f64,
     lo: Vec3,
     hi: Vec3,
-    coupled: bool,
 ) -> Result<Option<Phases>, ScenarioError> {
     let Some(a) = &f.air else {
         if !f.water.is_empty() {
@@ -100,13 +99,6 @@ pub(super) fn phases(
         }
         return Ok(None);
     };
-    if coupled {
-        return Err(src.invalid(
-            "fluid.air",
-            "spheres and blocks in water under air are not built yet (issue 28: the coupling \
-             with the mixture comes next); run the free surface without them",
-        ));
-    }
     let def = Air::default();
     let density = positive(src, "fluid.air.density", a.density.unwrap_or(def.density))?;
     if density >= rho_w {

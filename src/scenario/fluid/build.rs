@@ -79,7 +79,7 @@ pub(in crate::scenario) fn build_fluid(
     samples(src, f, lo, hi)?;
     gauges(src, f, lo, hi)?;
     let porous = super::porous::zones(src, f, &grid, &boundaries)?;
-    let phases = super::air::phases(src, f, density, lo, hi, !radii.is_empty())?;
+    let phases = super::air::phases(src, f, density, lo, hi)?;
     let waves = super::waves::waves(
         src,
         f,
