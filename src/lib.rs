@@ -18,6 +18,9 @@
 //! * [`shallow`]: the 2D nonlinear shallow-water equations by finite volumes (inundation at
 //!   harbour scale, issue 31); uses nothing else of the crate
 //! * [`coupling`]: the Euler-Lagrange coupling of spheres and water ([53], [59]-[63], drag [5])
+//! * [`debris`]: tsunami debris (containers) as rigid blocks carried one way by the
+//!   shallow-water flow, their contacts by the DEM; the one module using both `shallow` and
+//!   `rigid`/`dem`
 //! * [`simulation`]: the order of the phases of a time step
 //! * [`io`]: VTK and `.pvd` output, CSV time series, plots, checkpoints
 //! * [`scenario`]: TOML scenario files and the checks and derived quantities of `riprap check`
@@ -36,6 +39,7 @@
 
 pub mod bench;
 pub mod coupling;
+pub mod debris;
 pub mod dem;
 pub mod fluid;
 pub mod geometry;

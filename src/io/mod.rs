@@ -8,6 +8,7 @@
 pub mod blocks;
 pub mod checkpoint;
 pub mod csv;
+pub mod debris;
 pub mod plot;
 pub mod pvd;
 pub mod shallow;

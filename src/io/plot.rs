@@ -194,7 +194,7 @@ pub struct Field<'a> {
 /// Draws `field` as coloured cells at `path` (PNG or SVG by the extension), the colour
 /// running from white (0, and every value below it) through yellow and red to dark red (the
 /// largest value; a field without positive values is drawn from its smallest value), with
-/// `series` drawn over it in dark colours. The title should state what the colours mean; the
+/// `series` drawn over it in dark colours (with a legend if one has a label). The title should state what the colours mean; the
 /// range of the colours is appended to it.
 pub fn heat_map(
     path: &Path,
@@ -334,7 +334,8 @@ where
             }
         }
     }
-    if !series.is_empty() {
+    // Unlabelled series (the many tracks of a map) have no legend.
+    if series.iter().any(|s| !s.label.is_empty()) {
         draw_legend(&mut chart)?;
     }
     Ok(())

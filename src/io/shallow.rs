@@ -9,6 +9,7 @@
 //! A checkpoint has the layout of [`super::checkpoint`] (magic, format version, payload
 //! length, postcard payload, CRC-32; written atomically) with its own magic `RIPRAPSW`: the
 //! solver's [`ShallowState`] and the scenario's fingerprint.
+//! The debris of a run has its own, [`DebrisCheckpoint`] (magic `RIPRAPDB`), beside it.
 
 use std::path::Path;
 
@@ -16,6 +17,7 @@ use serde::{Deserialize, Serialize};
 
 use super::checkpoint::CheckpointError;
 use super::vtk::{write_image, Array, Format};
+use crate::debris::DebrisState;
 use crate::math::Vec3;
 use crate::shallow::{velocity, ShallowState, ShallowWater};
 
@@ -35,48 +37,90 @@ pub struct ShallowCheckpoint {
 impl ShallowCheckpoint {
     /// Serialises and writes atomically.
     pub fn write(&self, path: &Path) -> std::io::Result<()> {
-        let payload = postcard::to_stdvec(self).map_err(std::io::Error::other)?;
-        let mut bytes = Vec::with_capacity(payload.len() + 24);
-        bytes.extend_from_slice(MAGIC);
-        bytes.extend_from_slice(&VERSION.to_le_bytes());
-        bytes.extend_from_slice(&(payload.len() as u64).to_le_bytes());
-        bytes.extend_from_slice(&payload);
-        bytes.extend_from_slice(&crc32fast::hash(&payload).to_le_bytes());
-        super::write_atomically(path, &bytes)
+        write_checkpoint(MAGIC, self, path)
     }
 
     /// Reads and verifies (magic, version, length and checksum).
     pub fn read(path: &Path) -> Result<ShallowCheckpoint, CheckpointError> {
-        let name = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|e| CheckpointError::Io(name.clone(), e))?;
-        let bad = |why: &str| CheckpointError::Corrupt(name.clone(), why.to_string());
-        if bytes.len() < 24 || &bytes[..8] != MAGIC {
-            return Err(bad(
-                "missing the RIPRAPSW header (not a checkpoint of a shallow-water run)",
-            ));
-        }
-        let version = u32::from_le_bytes(bytes[8..12].try_into().expect("4 bytes"));
-        if version != VERSION {
-            return Err(bad(&format!(
-                "written in format {version}, and this riprap reads format {VERSION} only; run \
-                 the scenario again from the start"
-            )));
-        }
-        let len = u64::from_le_bytes(bytes[12..20].try_into().expect("8 bytes")) as usize;
-        if bytes.len() != 24 + len {
-            return Err(bad(&format!(
-                "truncated: {} bytes, expected {}",
-                bytes.len(),
-                24 + len
-            )));
-        }
-        let payload = &bytes[20..20 + len];
-        let crc = u32::from_le_bytes(bytes[20 + len..].try_into().expect("4 bytes"));
-        if crc32fast::hash(payload) != crc {
-            return Err(bad("checksum mismatch (the file is corrupted)"));
-        }
-        postcard::from_bytes(payload).map_err(|e| bad(&e.to_string()))
+        read_checkpoint(
+            MAGIC,
+            "missing the RIPRAPSW header (not a checkpoint of a shallow-water run)",
+            path,
+        )
     }
+}
+
+const DEBRIS_MAGIC: &[u8; 8] = b"RIPRAPDB";
+
+/// The saved state of a run's debris (`crate::debris`), beside its [`ShallowCheckpoint`], in
+/// the same layout with the magic `RIPRAPDB`.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct DebrisCheckpoint {
+    /// The debris' state.
+    pub state: DebrisState,
+    /// The fingerprint of the flow's checkpoint it was written with.
+    pub fingerprint: Vec<(String, u32)>,
+}
+
+impl DebrisCheckpoint {
+    /// Serialises and writes atomically.
+    pub fn write(&self, path: &Path) -> std::io::Result<()> {
+        write_checkpoint(DEBRIS_MAGIC, self, path)
+    }
+
+    /// Reads and verifies (magic, version, length and checksum).
+    pub fn read(path: &Path) -> Result<DebrisCheckpoint, CheckpointError> {
+        read_checkpoint(
+            DEBRIS_MAGIC,
+            "missing the RIPRAPDB header (not a checkpoint of a run's debris)",
+            path,
+        )
+    }
+}
+
+fn write_checkpoint<T: Serialize>(magic: &[u8; 8], v: &T, path: &Path) -> std::io::Result<()> {
+    let payload = postcard::to_stdvec(v).map_err(std::io::Error::other)?;
+    let mut bytes = Vec::with_capacity(payload.len() + 24);
+    bytes.extend_from_slice(magic);
+    bytes.extend_from_slice(&VERSION.to_le_bytes());
+    bytes.extend_from_slice(&(payload.len() as u64).to_le_bytes());
+    bytes.extend_from_slice(&payload);
+    bytes.extend_from_slice(&crc32fast::hash(&payload).to_le_bytes());
+    super::write_atomically(path, &bytes)
+}
+
+fn read_checkpoint<T: for<'de> Deserialize<'de>>(
+    magic: &[u8; 8],
+    not_ours: &str,
+    path: &Path,
+) -> Result<T, CheckpointError> {
+    let name = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|e| CheckpointError::Io(name.clone(), e))?;
+    let bad = |why: &str| CheckpointError::Corrupt(name.clone(), why.to_string());
+    if bytes.len() < 24 || &bytes[..8] != magic {
+        return Err(bad(not_ours));
+    }
+    let version = u32::from_le_bytes(bytes[8..12].try_into().expect("4 bytes"));
+    if version != VERSION {
+        return Err(bad(&format!(
+            "written in format {version}, and this riprap reads format {VERSION} only; run \
+             the scenario again from the start"
+        )));
+    }
+    let len = u64::from_le_bytes(bytes[12..20].try_into().expect("8 bytes")) as usize;
+    if bytes.len() != 24 + len {
+        return Err(bad(&format!(
+            "truncated: {} bytes, expected {}",
+            bytes.len(),
+            24 + len
+        )));
+    }
+    let payload = &bytes[20..20 + len];
+    let crc = u32::from_le_bytes(bytes[20 + len..].try_into().expect("4 bytes"));
+    if crc32fast::hash(payload) != crc {
+        return Err(bad("checksum mismatch (the file is corrupted)"));
+    }
+    postcard::from_bytes(payload).map_err(|e| bad(&e.to_string()))
 }
 
 fn origin_spacing(w: &ShallowWater) -> (Vec3, Vec3) {

@@ -5,7 +5,11 @@
 //! `io::shallow`), `series.csv` (volume, wet cells, fastest cell, step), `gauges.csv` (depth,
 //! surface and velocity at each gauge, interpolated as `ShallowWater::sample` does),
 //! `maxima.vti` with `max_depth.png` and `max_speed.png` (the largest depth and speed each cell
-//! saw: the inundation maps), and `checkpoint.ck`. Every output follows simulated time
+//! saw: the inundation maps), and `checkpoint.ck`. With debris (`[[shallow.debris]]`):
+//! `debris_tracks.csv`, `debris.pvd` + `debris_NNNNNN.vtp` with the flow's frames,
+//! `debris_tracks.png` (the tracks over the bed) and `checkpoint_debris.ck` beside each
+//! checkpoint (see `io::debris`); the debris advances after each flow step, in the flow of
+//! its end (`crate::debris`). Every output follows simulated time
 //! (`schedule`): a restart from a checkpoint continues bit for bit and writes its outputs at
 //! the very steps of an uninterrupted run. A fresh run first removes these files left by an
 //! earlier run in its folder; a run stopped by a signal writes its checkpoint and stops.
@@ -19,10 +23,14 @@ use serde::Serialize;
 
 use super::schedule::Schedule;
 use super::RunOptions;
+use crate::debris::Debris;
+use crate::io::csv::read_csv;
 use crate::io::csv::CsvSeries;
+use crate::io::debris::{track_rows, write_debris_frame, TRACK_COLUMNS};
 use crate::io::plot::{heat_map, Axes, Field};
+use crate::io::plot::{LineStyle, Series};
 use crate::io::pvd::PvdSeries;
-use crate::io::shallow::{write_frame, write_maxima, ShallowCheckpoint};
+use crate::io::shallow::{write_frame, write_maxima, DebrisCheckpoint, ShallowCheckpoint};
 use crate::io::vtk::Format;
 use crate::scenario::shallow::{build, BedKind, ShallowSource};
 use crate::shallow::ShallowWater;
@@ -41,7 +49,12 @@ pub const SERIES_COLUMNS: [&str; 9] = [
 ];
 
 /// Files a shallow-water run writes under fixed names.
-const FIXED: [&str; 9] = [
+const FIXED: [&str; 14] = [
+    "debris.pvd",
+    "debris_tracks.csv",
+    "debris_tracks.png",
+    "checkpoint_debris.ck",
+    "shallow_failed_debris.ck",
     "shallow.pvd",
     "series.csv",
     "gauges.csv",
@@ -101,14 +114,23 @@ pub fn fingerprint(src: &ShallowSource) -> Vec<(String, u32)> {
     parts
 }
 
+/// The debris' checkpoint beside the flow's `path`: `checkpoint.ck` → `checkpoint_debris.ck`.
+pub fn debris_checkpoint(path: &Path) -> PathBuf {
+    let stem = path.file_stem().unwrap_or_default().to_string_lossy();
+    path.with_file_name(format!("{stem}_debris.ck"))
+}
+
 /// Whether a file of this name is one a shallow-water run writes.
 pub fn is_owned(name: &str) -> bool {
     let name = name.strip_suffix(".tmp").unwrap_or(name);
     FIXED.contains(&name)
-        || name
-            .strip_prefix("shallow_")
-            .and_then(|n| n.strip_suffix(".vti"))
-            .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()))
+        || [("shallow_", ".vti"), ("debris_", ".vtp")]
+            .iter()
+            .any(|(pre, ext)| {
+                name.strip_prefix(pre)
+                    .and_then(|n| n.strip_suffix(ext))
+                    .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()))
+            })
 }
 
 /// Runs a shallow-water scenario to its end time (or from a checkpoint), writing the outputs.
@@ -134,6 +156,7 @@ pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<Shallow
         eprint!("{}", built.derived.report());
     }
     let mut w = built.water;
+    let mut debris = built.debris;
     let gauges = built.gauges;
     let print = fingerprint(src);
     let resuming = opts.restart.is_some();
@@ -162,6 +185,15 @@ pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<Shallow
         }
         w.restore(ck.state)
             .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+        if let Some(d) = &mut debris {
+            let dp = debris_checkpoint(path);
+            let state = DebrisCheckpoint::read(&dp)?;
+            if state.fingerprint != print {
+                bail!("{}: not written beside {}", dp.display(), path.display());
+            }
+            d.restore(state.state)
+                .map_err(|e| anyhow::anyhow!("{}: {e}", dp.display()))?;
+        }
         if opts.progress {
             eprintln!(
                 "continuing from t = {:.6} s, step {} ({})",
@@ -179,25 +211,50 @@ pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<Shallow
     let mut frames = Schedule::new(interval(o.vtk_interval, 50.0), 0.0, true);
     let mut rows = Schedule::new(interval(o.series_interval, 500.0), 0.0, true);
     let mut saves = Schedule::new(interval(o.checkpoint_interval, 4.0), 0.0, true);
+    let mut tracks = Schedule::new(
+        o.debris_interval
+            .or(o.series_interval)
+            .unwrap_or(file_end / 500.0),
+        0.0,
+        true,
+    );
     let t0 = w.time();
-    for s in [&mut frames, &mut rows, &mut saves] {
+    for s in [&mut frames, &mut rows, &mut saves, &mut tracks] {
         s.start(t0, w.steps());
     }
     let mut out_files = Outputs::open(&out, &gauges, resuming, t0, format)?;
+    let mut debris_files = match &debris {
+        Some(_) => Some(DebrisOutputs::open(&out, resuming, t0)?),
+        None => None,
+    };
     if !resuming {
         out_files.frame(&w)?;
         out_files.rows(&w, 0.0)?;
+        if let (Some(d), Some(f)) = (&debris, &mut debris_files) {
+            f.frame(d, format)?;
+            f.rows(d)?;
+        }
     }
     let ck_path = out.join("checkpoint.ck");
-    let save = |w: &ShallowWater, path: &Path| {
+    let save = |w: &ShallowWater, d: &Option<Debris>, path: &Path| {
         ShallowCheckpoint {
             state: w.state().clone(),
             fingerprint: print.clone(),
         }
         .write(path)
-        .context("cannot write the checkpoint")
+        .context("cannot write the checkpoint")?;
+        if let Some(d) = d {
+            DebrisCheckpoint {
+                state: d.snapshot(),
+                fingerprint: print.clone(),
+            }
+            .write(&debris_checkpoint(path))
+            .context("cannot write the debris' checkpoint")?;
+        }
+        anyhow::Ok(())
     };
     let started = Instant::now();
+    let mut debris_seconds = 0.0;
     let (mut k, mut interrupted_by) = (0u64, None);
     let mut next_report = 0.1;
     while w.time() < end && opts.max_steps.is_none_or(|m| k < m) {
@@ -220,15 +277,30 @@ pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<Shallow
                 out.display()
             );
         }
+        if let Some(d) = &mut debris {
+            let clock = Instant::now();
+            d.advance_to(&w, w.time())
+                .map_err(|e| anyhow::anyhow!("{e}"))?;
+            debris_seconds += clock.elapsed().as_secs_f64();
+        }
         let (t, n) = (w.time(), w.steps());
         if rows.due(t, n) {
             out_files.rows(&w, dt)?;
         }
-        if frames.due(t, n) {
+        let frame_due = frames.due(t, n);
+        if frame_due {
             out_files.frame(&w)?;
         }
+        if let (Some(d), Some(f)) = (&debris, &mut debris_files) {
+            if frame_due {
+                f.frame(d, format)?;
+            }
+            if tracks.due(t, n) {
+                f.rows(d)?;
+            }
+        }
         if saves.due(t, n) {
-            save(&w, &ck_path)?;
+            save(&w, &debris, &ck_path)?;
         }
         if opts.progress && (t - t0) >= next_report * (end - t0) {
             eprintln!(
@@ -239,18 +311,36 @@ pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<Shallow
             next_report += 0.1;
         }
     }
-    save(&w, &ck_path)?;
+    save(&w, &debris, &ck_path)?;
     if interrupted_by.is_none() {
-        if !frames.fired_at(w.steps()) {
+        let last_frame = frames.fired_at(w.steps());
+        if !last_frame {
             out_files.frame(&w)?;
         }
         if !rows.fired_at(w.steps()) {
             out_files.rows(&w, 0.0)?;
         }
+        if let (Some(d), Some(f)) = (&debris, &mut debris_files) {
+            if !last_frame {
+                f.frame(d, format)?;
+            }
+            if !tracks.fired_at(w.steps()) {
+                f.rows(d)?;
+            }
+        }
     }
     write_maxima(&w, &out.join("maxima.vti"), format).context("cannot write maxima.vti")?;
     if o.plots {
         maps(&w, &out, sc.shallow.initial.level)?;
+        if debris.is_some() {
+            track_map(&w, &out)?;
+        }
+    }
+    if opts.progress && debris.is_some() {
+        eprintln!(
+            "debris: {debris_seconds:.1} s of the {:.1} s loop",
+            started.elapsed().as_secs_f64()
+        );
     }
     Ok(ShallowSummary {
         output_dir: out,
@@ -448,6 +538,91 @@ fn maps(w: &ShallowWater, out: &Path, level: Option<f64>) -> anyhow::Result<()> 
     Ok(())
 }
 
+/// The debris' files written during the run.
+struct DebrisOutputs {
+    dir: PathBuf,
+    pvd: PvdSeries,
+    tracks: CsvSeries,
+}
+
+impl DebrisOutputs {
+    fn open(dir: &Path, resuming: bool, t0: f64) -> anyhow::Result<DebrisOutputs> {
+        let pvd_path = dir.join("debris.pvd");
+        let pvd = if resuming && pvd_path.exists() {
+            PvdSeries::resume(&pvd_path, t0)?
+        } else {
+            PvdSeries::new(&pvd_path)
+        };
+        let p = dir.join("debris_tracks.csv");
+        let tracks = if resuming {
+            CsvSeries::resume(&p, &TRACK_COLUMNS, t0)
+        } else {
+            CsvSeries::create(&p, &TRACK_COLUMNS)
+        }
+        .with_context(|| format!("cannot open {}", p.display()))?;
+        Ok(DebrisOutputs {
+            dir: dir.to_path_buf(),
+            pvd,
+            tracks,
+        })
+    }
+
+    fn frame(&mut self, d: &Debris, format: Format) -> anyhow::Result<()> {
+        let name = format!("debris_{:06}.vtp", self.pvd.entries().len());
+        write_debris_frame(d, &self.dir.join(&name), format)
+            .with_context(|| format!("cannot write {name}"))?;
+        self.pvd
+            .add(d.time(), &name, 0)
+            .context("cannot update debris.pvd")
+    }
+
+    fn rows(&mut self, d: &Debris) -> anyhow::Result<()> {
+        track_rows(d, &mut self.tracks).context("cannot write a row of debris_tracks.csv")
+    }
+}
+
+/// `debris_tracks.png`: each piece's track (from `debris_tracks.csv`) over the bed.
+fn track_map(w: &ShallowWater, out: &Path) -> anyhow::Result<()> {
+    let (_, rows) =
+        read_csv(&out.join("debris_tracks.csv")).context("cannot read debris_tracks.csv back")?;
+    let n = rows.iter().map(|r| r[1] as usize + 1).max().unwrap_or(0);
+    let mut tracks: Vec<Vec<(f64, f64)>> = vec![Vec::new(); n];
+    for r in &rows {
+        tracks[r[1] as usize].push((r[2], r[3]));
+    }
+    let g = *w.grid();
+    let xs: Vec<f64> = (0..g.nx).map(|i| g.centre(i as isize, 0)[0]).collect();
+    let ys: Vec<f64> = (0..g.ny).map(|j| g.centre(0, j as isize)[1]).collect();
+    let solid = g.interior(w.solid());
+    let bed = g.interior(w.bed());
+    let low = bed.iter().cloned().fold(f64::INFINITY, f64::min);
+    let v: Vec<f64> = (0..bed.len())
+        .map(|k| if solid[k] { f64::NAN } else { bed[k] - low })
+        .collect();
+    let title = format!("Debris tracks over the bed (colour: bed elevation above {low:.1} m)");
+    let series: Vec<Series> = tracks
+        .iter()
+        .filter(|t| !t.is_empty())
+        .map(|t| Series::new("", t, LineStyle::Line))
+        .collect();
+    heat_map(
+        &out.join("debris_tracks.png"),
+        &Axes {
+            title: &title,
+            x_label: "x [m]",
+            y_label: "y [m]",
+            log_y: false,
+        },
+        &Field {
+            x: &xs,
+            y: &ys,
+            values: &v,
+        },
+        &series,
+    )
+    .context("cannot draw debris_tracks.png")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -457,6 +632,12 @@ mod tests {
         assert!(is_owned("shallow_000012.vti"));
         assert!(is_owned("shallow.pvd.tmp"));
         assert!(is_owned("gauges.csv"));
+        assert!(is_owned("debris_000003.vtp"));
+        assert!(is_owned("checkpoint_debris.ck"));
+        assert_eq!(
+            debris_checkpoint(Path::new("out/checkpoint.ck")),
+            Path::new("out/checkpoint_debris.ck")
+        );
         assert!(!is_owned("shallow_bathymetry.vti"));
         assert!(!is_owned("harbour.asc"));
     }

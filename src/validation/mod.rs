@@ -20,7 +20,9 @@
 //! * the shallow-water solver (`shallow`): [`shallow_lake_at_rest`] (well balanced over a
 //!   rough bed with dry islands), [`shallow_dam_break`] (Stoker and Ritter, L1 error and its
 //!   order), [`shallow_thacker`] (Thacker's moving shoreline in a paraboloid) and
-//!   [`shallow_runup`] (a solitary wave on a plane beach, Synolakis 1987).
+//!   [`shallow_runup`] (a solitary wave on a plane beach, Synolakis 1987); the debris it
+//!   carries (`debris`): [`shallow_debris`] (Archimedes, quadratic drag, Coulomb friction,
+//!   flooding, thread bits, against closed forms).
 
 pub mod absorption;
 pub mod block_settling;
@@ -34,6 +36,7 @@ pub mod linear_flume;
 pub mod regular_waves;
 pub mod report;
 pub mod shallow_dam_break;
+pub mod shallow_debris;
 pub mod shallow_lake_at_rest;
 pub mod shallow_runup;
 pub mod shallow_thacker;
@@ -71,6 +74,9 @@ pub fn shallow_sections(
     }
     if run("shallow_runup") {
         all &= shallow_runup::section(out, quick, md)?;
+    }
+    if run("shallow_debris") {
+        all &= shallow_debris::section(out, md)?;
     }
     Ok(all)
 }

@@ -80,7 +80,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 23] = [
+pub const CASES: [&str; 24] = [
     "cavity",
     "channel",
     "sphere_drag",
@@ -104,6 +104,7 @@ pub const CASES: [&str; 23] = [
     "shallow_dam_break",
     "shallow_thacker",
     "shallow_runup",
+    "shallow_debris",
 ];
 
 /// As [`run_validation`], only the case named `only` (one of [`CASES`]) when given.

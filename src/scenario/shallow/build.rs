@@ -5,7 +5,8 @@
 use std::path::Path;
 
 use super::report::ShallowDerived;
-use super::{BedKind, BoundaryKind, BoundarySection, ShallowSource};
+use super::{debris, BedKind, BoundaryKind, BoundarySection, ShallowSource};
+use crate::debris::Debris;
 use crate::scenario::ScenarioError;
 use crate::shallow::bathymetry::{inside_polygon, read_esri_ascii, read_xyz_csv, Raster};
 use crate::shallow::boundary::SIDES;
@@ -20,6 +21,8 @@ pub struct Built {
     pub derived: ShallowDerived,
     /// The gauges: (name, position [m]).
     pub gauges: Vec<(String, [f64; 2])>,
+    /// The debris, if the scenario has any.
+    pub debris: Option<Debris>,
 }
 
 /// Everything checked and made, before the solver.
@@ -38,6 +41,10 @@ pub(super) struct Plan {
 
 /// Checks the scenario and computes what `riprap check` prints, without making the solver.
 pub fn check(src: &ShallowSource) -> Result<ShallowDerived, ScenarioError> {
+    if !src.scenario.shallow.debris.is_empty() {
+        // The debris' report needs the flow at the start.
+        return build(src).map(|b| b.derived);
+    }
     let plan = plan(src)?;
     Ok(ShallowDerived::of(src, &plan))
 }
@@ -59,10 +66,17 @@ pub fn build(src: &ShallowSource) -> Result<Built, ScenarioError> {
         let (i, j) = grid.cell_of(x, y).expect("a cell centre lies in its cell");
         plan.initial[i + grid.nx * j]
     });
+    let mut derived = derived;
+    let extent = (grid.origin, grid.max());
+    let debris = debris::debris(src, &water, plan.params.gravity, extent)?;
+    if let Some(d) = &debris {
+        derived.lines.extend(debris::report(src, d, &water));
+    }
     Ok(Built {
         water,
         derived,
         gauges: plan.gauges,
+        debris,
     })
 }
 

@@ -52,15 +52,24 @@
 //! name = "harbour_mouth"
 //! position = [1200.0, 300.0]
 //!
+//! [[shallow.debris]]                  # containers and boxes: see `debris`
+//! container = "20ft"
+//! position = [450.0, 120.0]
+//! count = [4, 2]
+//! spacing = [7.0, 3.0]
+//! flooding_time = 600.0
+//!
 //! [output]
 //! vtk_interval = 10.0                 # s (default end_time / 50)
 //! series_interval = 1.0               # s, series.csv and gauges.csv (default end_time / 500)
 //! checkpoint_interval = 150.0         # s (default end_time / 4)
+//! debris_interval = 1.0               # s, debris_tracks.csv (default series_interval)
 //! ```
 //!
 //! [`build`] checks the file and makes the solver; [`report`] is what `riprap check` prints.
 
 mod build;
+pub mod debris;
 mod report;
 
 use std::path::{Path, PathBuf};
@@ -69,6 +78,7 @@ use serde::{Deserialize, Serialize};
 use toml::de::DeTable;
 
 pub use build::{build, check, Built};
+pub use debris::{DebrisEntry, DebrisSettings};
 pub use report::ShallowDerived;
 
 use super::{line_of, parse_error, ScenarioError};
@@ -129,6 +139,12 @@ pub struct ShallowSection {
     /// Gauges.
     #[serde(default, rename = "gauge")]
     pub gauges: Vec<GaugeSection>,
+    /// Debris: pieces or grids of pieces (`debris`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub debris: Vec<DebrisEntry>,
+    /// The debris' settings.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub debris_settings: Option<DebrisSettings>,
 }
 
 /// `[shallow.grid]`
@@ -301,6 +317,9 @@ pub struct OutputSection {
     pub series_interval: Option<f64>,
     /// Interval between checkpoints [s] (default end_time / 4).
     pub checkpoint_interval: Option<f64>,
+    /// Interval between rows of debris_tracks.csv [s] (default: `series_interval`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub debris_interval: Option<f64>,
     /// `"zlib"` (default) or `"none"`.
     #[serde(default)]
     pub compression: Compression,
@@ -323,6 +342,7 @@ impl Default for OutputSection {
             vtk_interval: None,
             series_interval: None,
             checkpoint_interval: None,
+            debris_interval: None,
             compression: Compression::default(),
             precision: Precision::default(),
             plots: true,
