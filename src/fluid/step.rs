@@ -250,10 +250,9 @@ impl Fluid {
         if par.air.is_some() || self.obstacles.is_some() {
             // Air over water, or obstacles: the exact projection (`pressure::pcg`).
             let rho_f = &self.face_density;
-            self.projection.preconditioner = par.air.map_or(
-                Preconditioner::Spectral,
-                |a| a.pressure_preconditioner,
-            );
+            self.projection.preconditioner = par
+                .air
+                .map_or(Preconditioner::Spectral, |a| a.pressure_preconditioner);
             let solve = (self.projection).project_exact(
                 &grid,
                 &bcs,

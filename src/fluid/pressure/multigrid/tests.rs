@@ -83,15 +83,17 @@ fn the_finest_level_is_minus_the_projection_operator() {
         let mut q: [Vec<f64>; 3] = std::array::from_fn(|_| grid.field());
         let mut ax = vec![0.0; x.len()];
         let st = Stencil::new(&grid);
-        super::super::pcg::apply(
-            &grid, &bcs, &regions, &st, &rho_f, &padded, &mut q, &mut ax,
-        );
+        super::super::pcg::apply(&grid, &bcs, &regions, &st, &rho_f, &padded, &mut q, &mut ax);
         let mut bx = vec![0.0; x.len()];
         mg.levels[0].apply(&x, &mut bx);
         let scale = ax.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         for (c, (a, b)) in ax.iter().zip(&bx).enumerate() {
             // Round-off of a 7-point sum of terms up to `scale`: 1e-13 relative is ~500 ulps.
-            assert!((a + b).abs() <= 1e-13 * scale, "{n:?} cell {c}: {a} vs {}", -b);
+            assert!(
+                (a + b).abs() <= 1e-13 * scale,
+                "{n:?} cell {c}: {a} vs {}",
+                -b
+            );
         }
     }
 }
@@ -191,5 +193,8 @@ fn the_bits_do_not_depend_on_the_number_of_threads() {
         })
     };
     let (one, two) = (run(1), run(2));
-    assert!(one.iter().zip(&two).all(|(a, b)| a.to_bits() == b.to_bits()));
+    assert!(one
+        .iter()
+        .zip(&two)
+        .all(|(a, b)| a.to_bits() == b.to_bits()));
 }
