@@ -40,13 +40,35 @@ pub(super) struct Level {
     pub next: Vec<f64>,
 }
 
-/// The rows a row (j, k) reads: its own start and those of its y and z neighbours (`None`
-/// past a wall).
+/// The start of a row (j, k) and of its y and z neighbours (low, high), across the box
+/// whatever the boundary: on a wall the coupling across is zero (module docs of [`super`]).
 #[derive(Clone, Copy)]
 struct Rows {
     own: usize,
-    y: [Option<usize>; 2],
-    z: [Option<usize>; 2],
+    y: [usize; 2],
+    z: [usize; 2],
+}
+
+/// One row's slices of x and of the couplings, for a branch-free stencil.
+struct RowView<'a> {
+    x: &'a [f64],
+    w: [&'a [f64]; 5],
+    xn: [&'a [f64]; 4],
+}
+
+impl RowView<'_> {
+    /// Σ coupling × x over the neighbours of cell i, whose x neighbours are `lo` and `hi`
+    /// (order: x low, x high, y low, y high, z low, z high).
+    #[inline(always)]
+    fn sum(&self, i: usize, lo: usize, hi: usize) -> f64 {
+        let (w, x, xn) = (&self.w, self.x, &self.xn);
+        w[0][i] * x[lo]
+            + w[0][hi] * x[hi]
+            + w[1][i] * xn[0][i]
+            + w[2][i] * xn[1][i]
+            + w[3][i] * xn[2][i]
+            + w[4][i] * xn[3][i]
+    }
 }
 
 impl Level {
@@ -72,59 +94,43 @@ impl Level {
         self.n[0] * self.n[1] * self.n[2]
     }
 
-    /// The neighbour of index `m` along an axis of `n` cells, `step` −1 or +1 (`None` past a
-    /// wall, and on an axis of one cell).
-    #[inline]
-    fn step(&self, a: usize, m: usize, step: isize) -> Option<usize> {
-        let n = self.n[a];
-        if n == 1 {
-            return None;
-        }
-        match (step, m) {
-            (-1, 0) => self.periodic[a].then_some(n - 1),
-            (-1, _) => Some(m - 1),
-            (_, m) if m + 1 == n => self.periodic[a].then_some(0),
-            _ => Some(m + 1),
-        }
-    }
-
     /// The rows that row number `row` (= j + n_y k) reads.
     fn rows(&self, row: usize) -> Rows {
-        let [nx, ny, _] = self.n;
+        let [nx, ny, nz] = self.n;
         let (j, k) = (row % ny, row / ny);
         let at = |j: usize, k: usize| nx * (j + ny * k);
         Rows {
             own: at(j, k),
-            y: [self.step(1, j, -1), self.step(1, j, 1)].map(|m| m.map(|m| at(m, k))),
-            z: [self.step(2, k, -1), self.step(2, k, 1)].map(|m| m.map(|m| at(j, m))),
+            y: [at((j + ny - 1) % ny, k), at((j + 1) % ny, k)],
+            z: [at(j, (k + nz - 1) % nz), at(j, (k + 1) % nz)],
         }
     }
 
-    /// Σ over the neighbours of cell i of row `r` of coupling × x (the order: x low, x high,
-    /// y low, y high, z low, z high).
-    #[inline]
-    fn neighbours(&self, r: &Rows, i: usize, x: &[f64]) -> f64 {
-        let c = r.own + i;
-        let mut s = 0.0;
-        if let Some(m) = self.step(0, i, -1) {
-            s += self.low[0][c] * x[r.own + m];
+    /// The slices of row `r` and its neighbours in `x`.
+    fn view<'a>(&'a self, r: &Rows, x: &'a [f64]) -> RowView<'a> {
+        let nx = self.n[0];
+        let row = |a: usize, start: usize| &self.low[a][start..start + nx];
+        let xr = |start: usize| &x[start..start + nx];
+        RowView {
+            x: xr(r.own),
+            w: [
+                row(0, r.own),
+                row(1, r.own),
+                row(1, r.y[1]),
+                row(2, r.own),
+                row(2, r.z[1]),
+            ],
+            xn: [xr(r.y[0]), xr(r.y[1]), xr(r.z[0]), xr(r.z[1])],
         }
-        if let Some(m) = self.step(0, i, 1) {
-            s += self.low[0][r.own + m] * x[r.own + m];
-        }
-        if let Some(lo) = r.y[0] {
-            s += self.low[1][c] * x[lo + i];
-        }
-        if let Some(hi) = r.y[1] {
-            s += self.low[1][hi + i] * x[hi + i];
-        }
-        if let Some(lo) = r.z[0] {
-            s += self.low[2][c] * x[lo + i];
-        }
-        if let Some(hi) = r.z[1] {
-            s += self.low[2][hi + i] * x[hi + i];
-        }
-        s
+    }
+
+    /// The x neighbours of cell i of a row of `nx` (across the row: a wall's coupling is 0).
+    #[inline(always)]
+    fn along(i: usize, nx: usize) -> (usize, usize) {
+        (
+            if i == 0 { nx - 1 } else { i - 1 },
+            if i + 1 == nx { 0 } else { i + 1 },
+        )
     }
 
     /// Sets the low couplings of an axis of one cell to zero (a cell's face to itself carries
@@ -139,18 +145,16 @@ impl Level {
         let mut diag = std::mem::take(&mut self.diag);
         for_each_chunk(&mut diag, nx, |row, line| {
             let r = self.rows(row);
+            let v = self.view(&r, &self.open);
             for (i, d) in line.iter_mut().enumerate() {
-                let c = r.own + i;
-                let hi_x = self.step(0, i, 1).map_or(0.0, |m| self.low[0][r.own + m]);
-                let hi_y = r.y[1].map_or(0.0, |h| self.low[1][h + i]);
-                let hi_z = r.z[1].map_or(0.0, |h| self.low[2][h + i]);
-                *d = self.low[0][c]
-                    + hi_x
-                    + self.low[1][c]
-                    + hi_y
-                    + self.low[2][c]
-                    + hi_z
-                    + self.open[c];
+                let (_, hi) = Self::along(i, nx);
+                *d = v.w[0][i]
+                    + v.w[0][hi]
+                    + v.w[1][i]
+                    + v.w[2][i]
+                    + v.w[3][i]
+                    + v.w[4][i]
+                    + self.open[r.own + i];
             }
         });
         self.diag = diag;
@@ -166,10 +170,13 @@ impl Level {
     /// out = Â x.
     #[cfg(test)]
     pub fn apply(&self, x: &[f64], out: &mut [f64]) {
-        for_each_chunk(out, self.n[0], |row, line| {
+        let nx = self.n[0];
+        for_each_chunk(out, nx, |row, line| {
             let r = self.rows(row);
+            let v = self.view(&r, x);
             for (i, o) in line.iter_mut().enumerate() {
-                *o = self.diag[r.own + i] * x[r.own + i] - self.neighbours(&r, i, x);
+                let (lo, hi) = Self::along(i, nx);
+                *o = self.diag[r.own + i] * x[r.own + i] - v.sum(i, lo, hi);
             }
         });
     }
@@ -184,11 +191,27 @@ impl Level {
         let x = &self.x;
         for_each_chunk(&mut next, nx, |row, line| {
             let r = self.rows(row);
-            let parity = (row % ny + row / ny + colour) % 2;
-            line.copy_from_slice(&x[r.own..r.own + nx]);
-            for i in (parity..nx).step_by(2) {
-                let c = r.own + i;
-                line[i] = (self.b[c] + self.neighbours(&r, i, x)) * self.inv_diag[c];
+            let v = self.view(&r, x);
+            let (b, inv) = (
+                &self.b[r.own..r.own + nx],
+                &self.inv_diag[r.own..r.own + nx],
+            );
+            line.copy_from_slice(v.x);
+            let first = (row % ny + row / ny + colour) % 2;
+            let mut i = first;
+            // The ends of the row (their x neighbours across it), and the rest branch-free.
+            if i == 0 {
+                let (lo, hi) = Self::along(0, nx);
+                line[0] = (b[0] + v.sum(0, lo, hi)) * inv[0];
+                i = 2;
+            }
+            while i + 1 < nx {
+                line[i] = (b[i] + v.sum(i, i - 1, i + 1)) * inv[i];
+                i += 2;
+            }
+            if i + 1 == nx {
+                let (lo, hi) = Self::along(i, nx);
+                line[i] = (b[i] + v.sum(i, lo, hi)) * inv[i];
             }
         });
         self.next = std::mem::replace(&mut self.x, next);
@@ -206,10 +229,12 @@ impl Level {
             for k in f[2] * ck..(f[2] * ck + f[2]).min(self.n[2]) {
                 for j in f[1] * cj..(f[1] * cj + f[1]).min(self.n[1]) {
                     let r = self.rows(j + self.n[1] * k);
-                    for i in 0..self.n[0] {
+                    let v = self.view(&r, &self.x);
+                    let nx = self.n[0];
+                    for i in 0..nx {
                         let c = r.own + i;
-                        let res = self.b[c] - (self.diag[c] * self.x[c])
-                            + self.neighbours(&r, i, &self.x);
+                        let (lo, hi) = Self::along(i, nx);
+                        let res = self.b[c] - (self.diag[c] * self.x[c]) + v.sum(i, lo, hi);
                         line[i / f[0]] += res;
                     }
                 }
