@@ -2,17 +2,19 @@
 //! couplings on a box of cells, its red-black Gauss-Seidel half-sweeps, and the transfers
 //! to and from the next coarser level.
 //!
-//! Cells are compact, c = i + n_x (j + n_y k). `low[a][c]` is the coupling w [m⁻² m³ kg⁻¹ =
-//! Pa⁻¹ s⁻² … in units of 1/(ρ h²)] across the low a-face of cell c, to its low neighbour
-//! along a (across the box on a periodic axis; 0 on a wall, a closed face, or an axis of one
-//! cell), so that
+//! Cells are compact, c = i + n_x (j + n_y k). `low[a][c]` is the coupling w [m kg⁻¹] across
+//! the low a-face of cell c, to its low neighbour along a (across the box on a periodic
+//! axis; 0 on a wall, a closed face, or an axis of one cell), so that
 //!
 //! ```text
 //! (Â x)_c = diag_c x_c − Σ_a ( low_a[c] x_{c−a} + low_a[c+a] x_{c+a} )
 //! diag_c  = Σ_a ( low_a[c] + low_a[c+a] ) + open_c
 //! ```
 //!
-//! with `open_c` the coupling to the p = 0 face of an open top. Every loop writes each output
+//! with `open_c` the coupling to the p = 0 face of an open top. The stencil reads its
+//! neighbours across the box along every axis (c − a of the first layer is the last layer):
+//! on a wall axis the first layer's low couplings are zero, so what it reads there counts for
+//! nothing, and the rows need no branch. Every loop writes each output
 //! element from one task, reading the others, and every sum runs in an order fixed by the
 //! stencil: the bits do not depend on the number of threads.
 
@@ -262,48 +264,49 @@ impl Level {
     /// re-discretisation with the arithmetic mean of the faces), and the open top likewise.
     pub fn coarsen_into(&self, coarse: &mut Level) {
         let f = factors(self.n);
-        let [cx, cy, _] = coarse.n;
-        let scale = f.map(|f| 1.0 / f as f64);
         for a in 0..3 {
-            let mut low = std::mem::take(&mut coarse.low[a]);
-            let mut open = std::mem::take(&mut coarse.open);
-            let fine = &self.low[a];
-            for_each_chunk(&mut low, cx, |crow, line| {
-                let (cj, ck) = (crow % cy, crow / cy);
-                line.iter_mut().for_each(|v| *v = 0.0);
-                for k in f[2] * ck..(f[2] * ck + f[2]).min(self.n[2]) {
-                    for j in f[1] * cj..(f[1] * cj + f[1]).min(self.n[1]) {
-                        let own = self.n[0] * (j + self.n[1] * k);
-                        for i in 0..self.n[0] {
-                            let m = [i, j, k][a];
-                            if m % f[a] == 0 {
-                                line[i / f[0]] += fine[own + i];
-                            }
+            // The fine low faces of the lowest fine layer along a of each coarse cell.
+            let first_layer = |i: usize, j: usize, k: usize| [i, j, k][a] % f[a] == 0;
+            self.sum_into(
+                &self.low[a],
+                first_layer,
+                &mut coarse.low[a],
+                f[a],
+                coarse.n,
+            );
+        }
+        self.sum_into(&self.open, |_, _, _| true, &mut coarse.open, f[2], coarse.n);
+        coarse.finish();
+    }
+
+    /// out(C) = (1/f) Σ `fine`(c) over the fine cells c of coarse cell C that `take` (in the
+    /// order k, j, i), on a coarse level of `n` cells.
+    fn sum_into(
+        &self,
+        fine: &[f64],
+        take: impl Fn(usize, usize, usize) -> bool + Sync,
+        out: &mut [f64],
+        f_axis: usize,
+        n: [usize; 3],
+    ) {
+        let f = factors(self.n);
+        let [nx, ny, nz] = self.n;
+        let scale = 1.0 / f_axis as f64;
+        for_each_chunk(out, n[0], |crow, line| {
+            let (cj, ck) = (crow % n[1], crow / n[1]);
+            line.iter_mut().for_each(|v| *v = 0.0);
+            for k in f[2] * ck..(f[2] * ck + f[2]).min(nz) {
+                for j in f[1] * cj..(f[1] * cj + f[1]).min(ny) {
+                    let own = nx * (j + ny * k);
+                    for i in 0..nx {
+                        if take(i, j, k) {
+                            line[i / f[0]] += fine[own + i];
                         }
                     }
                 }
-                line.iter_mut().for_each(|v| *v *= scale[a]);
-            });
-            if a == 2 {
-                let fine = &self.open;
-                for_each_chunk(&mut open, cx, |crow, line| {
-                    let (cj, ck) = (crow % cy, crow / cy);
-                    line.iter_mut().for_each(|v| *v = 0.0);
-                    for k in f[2] * ck..(f[2] * ck + f[2]).min(self.n[2]) {
-                        for j in f[1] * cj..(f[1] * cj + f[1]).min(self.n[1]) {
-                            let own = self.n[0] * (j + self.n[1] * k);
-                            for i in 0..self.n[0] {
-                                line[i / f[0]] += fine[own + i];
-                            }
-                        }
-                    }
-                    line.iter_mut().for_each(|v| *v *= scale[2]);
-                });
             }
-            coarse.low[a] = low;
-            coarse.open = open;
-        }
-        coarse.finish();
+            line.iter_mut().for_each(|v| *v *= scale);
+        });
     }
 }
 
