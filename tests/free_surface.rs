@@ -615,12 +615,22 @@ fn the_multigrid_preconditioner_gives_the_spectral_pressure() {
         its_m += m.last_solve().iterations;
         assert!(m.last_solve().residual <= 1e-13, "{:?}", m.last_solve());
     }
-    let scale = s.pressure().iter().fold(0.0f64, |x, p| x.max(p.abs()));
-    let diff = s
-        .pressure()
-        .iter()
-        .zip(m.pressure())
-        .fold(0.0f64, |x, (p, q)| x.max((p - q).abs()));
+    // The pressure of the fluid cells (in the block's it is undetermined: no face of those
+    // cells is open, and each preconditioner leaves its own value there).
+    let (mut scale, mut diff) = (0.0f64, 0.0f64);
+    let g = s.grid();
+    for k in 0..n[2] {
+        for j in 0..n[1] {
+            for i in 0..n[0] {
+                if k < 3 && (3..5).contains(&i) {
+                    continue;
+                }
+                let c = g.cell(i, j, k);
+                scale = scale.max(s.pressure()[c].abs());
+                diff = diff.max((s.pressure()[c] - m.pressure()[c]).abs());
+            }
+        }
+    }
     let v_scale = max_speed(&s);
     let dv = s
         .velocity()
