@@ -178,6 +178,25 @@ fn air_and_water_in_a_scenario_are_checked_by_key() {
     let e = built(&SCENARIO.replacen("[fluid.air]", "[fluid.air]\ninterface = \"plic\"\n#", 1))
         .expect_err("an unknown reconstruction is refused");
     assert!(e.contains("interface") && e.contains("plane"), "{e}");
+    // The projection's preconditioner: spectral by default, multigrid when asked for.
+    use riprap::fluid::pressure::Preconditioner;
+    let mg = SCENARIO.replacen(
+        "[fluid.air]",
+        "[fluid.air]\npressure_preconditioner = \"multigrid\"\n#",
+        1,
+    );
+    let air = built(&mg).unwrap().parameters().air.unwrap();
+    assert_eq!(air.pressure_preconditioner, Preconditioner::Multigrid);
+    let e = built(&SCENARIO.replacen(
+        "[fluid.air]",
+        "[fluid.air]\npressure_preconditioner = \"jacobi\"\n#",
+        1,
+    ))
+    .expect_err("an unknown preconditioner is refused");
+    assert!(
+        e.contains("pressure_preconditioner") && e.contains("multigrid"),
+        "{e}"
+    );
     let refused = |from: &str, to: &str, key: &str, words: &str| {
         let text = SCENARIO.replace(from, to);
         assert_ne!(text, SCENARIO, "{from}");

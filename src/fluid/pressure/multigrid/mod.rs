@@ -60,6 +60,18 @@ pub const COARSEST: usize = 64;
 /// conjugate-gradient iterations per step, and 2 and 3 the least time (equal).
 pub const SWEEPS: usize = 2;
 
+/// The cells of each level for a grid of `n` cells, finest first: halved (rounding up) along
+/// every axis of more than one cell until at most [`COARSEST`] remain.
+pub fn level_sizes(n: [usize; 3]) -> Vec<[usize; 3]> {
+    let mut sizes = vec![n];
+    let mut n = n;
+    while n[0] * n[1] * n[2] > COARSEST {
+        n = coarser(n);
+        sizes.push(n);
+    }
+    sizes
+}
+
 /// The hierarchy of levels, finest first, and the coarsest level's factorisation.
 #[derive(Default)]
 pub struct Multigrid {
@@ -80,15 +92,10 @@ impl Multigrid {
         rho_f: &[Vec<f64>; 3],
     ) {
         if self.levels.first().map(|l| (l.n, l.periodic)) != Some((grid.n, periodic)) {
-            self.levels.clear();
-            let mut n = grid.n;
-            loop {
-                self.levels.push(Level::new(n, periodic));
-                if n[0] * n[1] * n[2] <= COARSEST {
-                    break;
-                }
-                n = coarser(n);
-            }
+            self.levels = level_sizes(grid.n)
+                .into_iter()
+                .map(|n| Level::new(n, periodic))
+                .collect();
         }
         let h = [grid.spacing.x, grid.spacing.y, grid.spacing.z];
         let fine = &mut self.levels[0];
