@@ -56,7 +56,7 @@ impl Dense {
             for k in 0..j {
                 d -= m[j * n + k] * m[j * n + k] * m[k * n + k];
             }
-            if !(d > ZERO_PIVOT * a_jj) {
+            if d.is_nan() || d <= ZERO_PIVOT * a_jj {
                 m[j * n + j] = 0.0;
                 for i in j + 1..n {
                     m[i * n + j] = 0.0;
