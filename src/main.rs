@@ -120,9 +120,13 @@ enum BenchCase {
 /// validated, on the global thread pool; prints its wall time (building the scenario and the
 /// run) and its front's errors against Martin & Moyce, and writes the front (T, Z) to `csv`.
 /// `bench/openfoam/compare_dam_break.sh` compares it with interFoam.
-fn bench_dam_break(n: usize, csv: Option<&std::path::Path>) -> anyhow::Result<()> {
+fn bench_dam_break(
+    n: usize,
+    csv: Option<&std::path::Path>,
+    preconditioner: riprap::fluid::pressure::Preconditioner,
+) -> anyhow::Result<()> {
     use riprap::validation::dam_break::{
-        front_csv, front_leads, mean_abs_lead, run, verdict, SURGE, T_END,
+        front_csv, front_leads, mean_abs_lead, run_with, verdict, SURGE, T_END,
     };
     anyhow::ensure!(
         n >= 2,
@@ -135,11 +139,17 @@ fn bench_dam_break(n: usize, csv: Option<&std::path::Path>) -> anyhow::Result<()
         5 * n / 2,
         rayon::current_num_threads()
     );
-    let r = run(n)?;
+    let r = run_with(n, preconditioner)?;
     let v = verdict(&r);
     println!(
         "steps: {}, most CG iterations: {}, water volume change {:.1e}, clipped {:.1e}",
         r.steps, r.max_iterations, r.volume_change, r.clipped
+    );
+    println!(
+        "pressure preconditioner {preconditioner:?}: {:.1} CG iterations per step, projection \
+         {:.4} s",
+        r.iterations as f64 / r.steps as f64,
+        r.pressure_seconds
     );
     let leads: Vec<String> = front_leads(&r.front)
         .iter()
@@ -479,7 +489,7 @@ fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
         Command::Bench {
             case: BenchCase::Fluid(args),
         } => match args.dam_break {
-            Some(n) => bench_dam_break(n, args.front_csv.as_deref()),
+            Some(n) => bench_dam_break(n, args.front_csv.as_deref(), args.pressure_preconditioner),
             None => riprap::bench::fluid::run_cli(&args),
         }
         .map(|()| None),

@@ -4,6 +4,7 @@
 //! Run: `cargo test --release --test fluid_no_alloc`.
 
 use riprap::fluid::phases::{box_fraction, Air};
+use riprap::fluid::pressure::Preconditioner;
 use riprap::fluid::{
     Boundaries, Boundary, DrivingPressureGradient, Fluid, FluidParameters, InflowVelocity,
     StaggeredGrid,
@@ -71,26 +72,34 @@ fn a_step_allocates_nothing() {
             println!("{n:?}: {during} allocations in 5 steps");
             assert_eq!(during, 0, "{n:?}: step() allocated");
         }
-        // Water and air: the interface scheme and the exact projection (its vectors sized on
-        // the first step).
-        let grid = StaggeredGrid::new([16, 4, 16], Vec3::new(0.4, 0.1, 0.4), Vec3::ZERO);
-        let bcs = Boundaries::periodic()
-            .with(0, Boundary::FreeSlip, Boundary::FreeSlip)
-            .with(2, Boundary::WALL, Boundary::FreeSlip);
-        let mut par = FluidParameters::water();
-        par.air = Some(Air::default());
-        let mut fluid = Fluid::new(grid, bcs, par).unwrap();
-        fluid
-            .set_water_fraction(|lo, hi| box_fraction(lo, hi, [-1.0; 3], [0.1, 1.0, 0.2]))
-            .unwrap();
-        fluid.step(1e-3);
-        let before = ALLOCATIONS.load(Ordering::Relaxed);
-        for _ in 0..5 {
-            let dt = fluid.stable_time_step().min(1e-2);
-            fluid.step(dt);
+        // Water and air: the interface scheme and the exact projection (its vectors and the
+        // multigrid levels sized on the first step), with each preconditioner.
+        for preconditioner in [Preconditioner::Spectral, Preconditioner::Multigrid] {
+            let grid = StaggeredGrid::new([16, 4, 16], Vec3::new(0.4, 0.1, 0.4), Vec3::ZERO);
+            let bcs = Boundaries::periodic()
+                .with(0, Boundary::FreeSlip, Boundary::FreeSlip)
+                .with(2, Boundary::WALL, Boundary::FreeSlip);
+            let mut par = FluidParameters::water();
+            par.air = Some(Air {
+                pressure_preconditioner: preconditioner,
+                ..Air::default()
+            });
+            let mut fluid = Fluid::new(grid, bcs, par).unwrap();
+            fluid
+                .set_water_fraction(|lo, hi| box_fraction(lo, hi, [-1.0; 3], [0.1, 1.0, 0.2]))
+                .unwrap();
+            fluid.step(1e-3);
+            let before = ALLOCATIONS.load(Ordering::Relaxed);
+            for _ in 0..5 {
+                let dt = fluid.stable_time_step().min(1e-2);
+                fluid.step(dt);
+            }
+            let during = ALLOCATIONS.load(Ordering::Relaxed) - before;
+            println!("water and air, {preconditioner:?}: {during} allocations in 5 steps");
+            assert_eq!(
+                during, 0,
+                "water and air, {preconditioner:?}: step() allocated"
+            );
         }
-        let during = ALLOCATIONS.load(Ordering::Relaxed) - before;
-        println!("water and air: {during} allocations in 5 steps");
-        assert_eq!(during, 0, "water and air: step() allocated");
     });
 }

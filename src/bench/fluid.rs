@@ -224,6 +224,20 @@ pub struct FluidBenchArgs {
     /// With --dam-break: write the front (T, Z) there as CSV.
     #[arg(long, requires = "dam_break")]
     pub front_csv: Option<std::path::PathBuf>,
+    /// With --dam-break: the preconditioner of the projection (`spectral` or `multigrid`,
+    /// the `pressure_preconditioner` key of `[fluid.air]`).
+    #[arg(long, requires = "dam_break", default_value = "spectral", value_parser = parse_preconditioner)]
+    pub pressure_preconditioner: crate::fluid::pressure::Preconditioner,
+}
+
+/// `spectral` or `multigrid`.
+fn parse_preconditioner(s: &str) -> Result<crate::fluid::pressure::Preconditioner, String> {
+    use crate::fluid::pressure::Preconditioner;
+    match s {
+        "spectral" => Ok(Preconditioner::Spectral),
+        "multigrid" => Ok(Preconditioner::Multigrid),
+        _ => Err(format!("spectral or multigrid, got {s}")),
+    }
 }
 
 /// Runs `riprap bench fluid` and prints its table.

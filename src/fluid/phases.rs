@@ -35,6 +35,7 @@ use serde::{Deserialize, Serialize};
 
 use super::boundary::fill_scalar_ghosts;
 use super::interface::Reconstruction;
+use super::pressure::Preconditioner;
 use super::{Boundaries, StaggeredGrid};
 
 /// The lighter fluid above the water.
@@ -47,6 +48,10 @@ pub struct Air {
     /// How the surface is placed in a cell when α is carried ([`super::interface`]).
     #[serde(default)]
     pub reconstruction: Reconstruction,
+    /// The preconditioner of the exact projection ([`super::pressure::pcg`]); left out of
+    /// the serialised form when spectral (the default), so that older states read the same.
+    #[serde(default, skip_serializing_if = "Preconditioner::is_spectral")]
+    pub pressure_preconditioner: Preconditioner,
 }
 
 impl Default for Air {
@@ -56,6 +61,7 @@ impl Default for Air {
             density: 1.204,
             dynamic_viscosity: 1.813e-5,
             reconstruction: Reconstruction::Thinc,
+            pressure_preconditioner: Preconditioner::Spectral,
         }
     }
 }

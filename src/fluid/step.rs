@@ -31,7 +31,7 @@ use super::grid::{shifted, update_region, update_rows};
 use super::model::Fluid;
 use super::phases::{face_density, set_density, stress_viscosity};
 use super::porous::FaceDensity;
-use super::pressure::{Passes, PressureFields};
+use super::pressure::{Passes, Preconditioner, PressureFields};
 use super::sgs::eddy_viscosity;
 use super::tendency::{tendency_row, Inertia};
 use crate::math::Vec3;
@@ -269,6 +269,9 @@ impl Fluid {
         if par.air.is_some() || self.obstacles.is_some() {
             // Air over water, or obstacles: the exact projection (`pressure::pcg`).
             let rho_f = &self.face_density;
+            self.projection.preconditioner = par
+                .air
+                .map_or(Preconditioner::Spectral, |a| a.pressure_preconditioner);
             let solve = (self.projection).project_exact(
                 &grid,
                 &bcs,

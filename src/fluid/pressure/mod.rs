@@ -23,6 +23,7 @@
 //! Units: p [Pa], ρ [kg m⁻³], u [m s⁻¹], Δt [s].
 
 pub mod fft;
+pub mod multigrid;
 pub mod pcg;
 
 use super::boundary::{fill_pressure_ghosts, Boundaries};
@@ -54,6 +55,26 @@ pub struct Projection {
     u_star: [Vec<f64>; 3],
     /// The vectors of the exact projection ([`pcg`], sized on first use).
     krylov: pcg::Krylov,
+    /// The preconditioner of the exact projection's conjugate gradients.
+    pub preconditioner: Preconditioner,
+}
+
+/// The preconditioner of the exact projection's conjugate gradients ([`pcg`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Preconditioner {
+    /// The constant-coefficient FFT/DCT solve ([`fft`]).
+    #[default]
+    Spectral,
+    /// A geometric multigrid V-cycle of the variable-coefficient operator ([`multigrid`]).
+    Multigrid,
+}
+
+impl Preconditioner {
+    /// True for the default (spectral), which scenarios and checkpoints leave out.
+    pub fn is_spectral(&self) -> bool {
+        *self == Preconditioner::Spectral
+    }
 }
 
 /// The pressure fields one projection reads and writes (padded, ghosts filled on exit).
@@ -87,6 +108,7 @@ impl Projection {
             q: std::array::from_fn(|_| grid.field()),
             u_star: std::array::from_fn(|_| grid.field()),
             krylov: pcg::Krylov::default(),
+            preconditioner: Preconditioner::Spectral,
         }
     }
 

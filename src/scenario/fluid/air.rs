@@ -156,6 +156,7 @@ pub(super) fn phases(
             } else {
                 Reconstruction::Thinc
             }),
+            pressure_preconditioner: a.pressure_preconditioner.unwrap_or_default(),
         },
         level: a.water_level,
         boxes,

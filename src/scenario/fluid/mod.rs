@@ -177,6 +177,11 @@ pub struct AirSection {
     /// How α's transport places the surface in a cell: "thinc" (default) or "plane" (default
     /// with `[fluid.waves]`).
     pub interface: Option<crate::fluid::interface::Reconstruction>,
+    /// The preconditioner of the pressure projection's conjugate gradients: "spectral"
+    /// (default, the constant-coefficient FFT/DCT solve) or "multigrid" (a V-cycle of the
+    /// variable-density operator, `fluid::pressure::multigrid`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pressure_preconditioner: Option<crate::fluid::pressure::Preconditioner>,
 }
 
 /// `[[fluid.water]]`: a box of water at the start (e.g. the column of a dam break).

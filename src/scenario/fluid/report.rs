@@ -1,6 +1,7 @@
 //! What `riprap check` prints about the flow: grid, memory, the time-step limits at the
 //! velocity scale of the scenario, and the resolution of the spheres by the grid.
 
+use crate::fluid::pressure::{multigrid, Preconditioner};
 use std::fmt::Write as _;
 
 use super::Phases;
@@ -92,6 +93,24 @@ pub fn note_coupling(fd: &mut FluidDerived, c: &CouplingParameters, gravity: Vec
 }
 
 /// A boundary in words.
+/// The projection's preconditioner on a grid of `n` cells, in words.
+fn preconditioner(p: Preconditioner, n: [usize; 3]) -> String {
+    match p {
+        Preconditioner::Spectral => "the constant-density FFT/DCT solve".into(),
+        Preconditioner::Multigrid => {
+            let sizes: Vec<String> = multigrid::level_sizes(n)
+                .iter()
+                .map(|n| format!("{}×{}×{}", n[0], n[1], n[2]))
+                .collect();
+            format!(
+                "a multigrid V-cycle on {} levels ({}, the last solved directly)",
+                sizes.len(),
+                sizes.join(", ")
+            )
+        }
+    }
+}
+
 fn describe(b: Boundary) -> String {
     match b {
         Boundary::Periodic => "periodic".into(),
@@ -255,13 +274,14 @@ impl FluidDerived {
                 s,
                 "free surface: water under air (ρ_a = {} kg/m³, μ_a = {:.4e} Pa s, density ratio \
                  {:.0}), water {} at the start, {:.4e} m³; free-surface step limit at rest \
-                 C √(Δ/g) = {step:.4e} s; projection by conjugate gradients; surface carried \
-                 with {} in each cell",
+                 C √(Δ/g) = {step:.4e} s; projection by conjugate gradients preconditioned \
+                 by {}; surface carried with {} in each cell",
                 sig4(a.density),
                 a.dynamic_viscosity,
                 p.density / a.density,
                 start.join(" and "),
                 self.water_volume,
+                preconditioner(a.pressure_preconditioner, g.n),
                 a.reconstruction.describe()
             );
             // Surface tension is not modelled: it shapes features of a few capillary lengths

@@ -6,6 +6,7 @@ pub mod report;
 
 use std::path::PathBuf;
 
+use crate::fluid::pressure::Preconditioner;
 use crate::fluid::Fluid;
 use crate::scenario::{build, Source};
 
@@ -62,8 +63,12 @@ pub struct Run {
     pub steps: u64,
     /// See [`Run::steps`].
     pub max_iterations: usize,
-    /// Wall-clock time [s].
+    /// Conjugate-gradient iterations of all the projections.
+    pub iterations: usize,
+    /// Wall-clock time [s], and that of the projections alone.
     pub seconds: f64,
+    /// See [`Run::seconds`].
+    pub pressure_seconds: f64,
 }
 
 /// The scenario at `n` cells per a.
@@ -79,8 +84,20 @@ pub fn scenario(n: usize) -> String {
 
 /// Runs the collapse at `n` cells per a, sampling every 0.05 in T up to [`T_END`].
 pub fn run(n: usize) -> anyhow::Result<Run> {
+    run_with(n, Preconditioner::Spectral)
+}
+
+/// [`run`] with the projection's conjugate gradients preconditioned by `preconditioner`
+/// (`pressure_preconditioner` of `[fluid.air]`).
+pub fn run_with(n: usize, preconditioner: Preconditioner) -> anyhow::Result<Run> {
     let start = std::time::Instant::now();
-    let text = scenario(n);
+    let mut text = scenario(n);
+    if preconditioner == Preconditioner::Multigrid {
+        text = text.replace(
+            "[fluid.air]",
+            "[fluid.air]\npressure_preconditioner = \"multigrid\"",
+        );
+    }
     let src = Source::from_str(&text, "dam_break/scenario.toml", PathBuf::from("."))?;
     let mut fluid = build(&src)?
         .simulation
@@ -89,13 +106,14 @@ pub fn run(n: usize) -> anyhow::Result<Run> {
     let v0 = fluid.water_volume();
     let scale = (2.0 * G / A).sqrt();
     let (mut front, mut height) = (Vec::new(), Vec::new());
-    let mut max_iterations = 0;
+    let (mut max_iterations, mut iterations) = (0, 0);
     let samples = (T_END / 0.05).round() as usize;
     for k in 1..=samples {
         let target = k as f64 * 0.05;
         while fluid.time() * scale < target - 1e-12 {
             fluid.step_adaptive(target / scale);
             max_iterations = max_iterations.max(fluid.last_solve().iterations);
+            iterations += fluid.last_solve().iterations;
         }
         front.push((target, front_position(&fluid)));
         height.push((target / 2f64.sqrt(), back_height(&fluid)));
@@ -109,7 +127,9 @@ pub fn run(n: usize) -> anyhow::Result<Run> {
         clipped: c.above + c.below,
         steps: fluid.steps(),
         max_iterations,
+        iterations,
         seconds: start.elapsed().as_secs_f64(),
+        pressure_seconds: fluid.pressure_seconds(),
     })
 }
 
