@@ -354,7 +354,11 @@ fn a_sphere_held_at_its_archimedes_draft_is_held_by_the_water_and_air_it_displac
     let weight = s.dem.spheres.mass[0] * 9.81;
     let load = s.dem.spheres.fluid[0].force;
     eprintln!("held load {load} against the weight {weight} N");
-    assert!((load.z / weight - 1.0).abs() < 3e-3, "{} vs {weight}", load.z);
+    assert!(
+        (load.z / weight - 1.0).abs() < 3e-3,
+        "{} vs {weight}",
+        load.z
+    );
     assert!(load.x.abs() < 1e-6 * weight && load.y.abs() < 1e-6 * weight);
 }
 

@@ -70,7 +70,13 @@ pub fn body_acceleration(drive_a: f64, rho_f: f64, rho_w: f64, g_a: f64, force_a
 /// inertia ρ̄_f [kg m⁻³], the fluid phases' weight density `weight` = ρ_f(α) − ρ_w [kg m⁻³]
 /// (`super::solids`), gravity `g_a`, the drive and F as in [`body_acceleration`].
 #[inline]
-pub fn solid_body_acceleration(drive_a: f64, rho_f: f64, weight: f64, g_a: f64, force_a: f64) -> f64 {
+pub fn solid_body_acceleration(
+    drive_a: f64,
+    rho_f: f64,
+    weight: f64,
+    g_a: f64,
+    force_a: f64,
+) -> f64 {
     (drive_a + weight * g_a + force_a) / rho_f
 }
 
