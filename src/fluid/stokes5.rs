@@ -51,7 +51,7 @@
 use std::f64::consts::PI;
 use std::fmt;
 
-use super::stream_function::MeanCurrent;
+use super::stream_function::{fourier_elevation, fourier_velocity, MeanCurrent};
 use super::waves::doppler_wavenumber;
 
 /// kd above which the coefficients are those of deep water to round-off.
@@ -346,41 +346,15 @@ impl Stokes5 {
 
     /// The surface elevation η(x, t) above the still water level [m].
     pub fn elevation(&self, x: f64, t: f64) -> f64 {
-        let (s1, c1) = (self.k * x - self.omega * t).sin_cos();
-        let (mut cj, mut sj) = (1.0, 0.0);
-        let mut eta = 0.0;
-        for e in &self.elevation {
-            (cj, sj) = (cj * c1 - sj * s1, sj * c1 + cj * s1);
-            eta += e * cj;
-        }
-        eta
+        fourier_elevation(&self.elevation, self.k * x - self.omega * t)
     }
 
     /// The velocity (u, w) [m s⁻¹] in the flume's frame at (x, z), z above the still water
     /// level [m], and t [s].
     pub fn velocity(&self, x: f64, z: f64, t: f64) -> (f64, f64) {
-        let (s1, c1) = (self.k * x - self.omega * t).sin_cos();
-        let (k, h) = (self.k, self.depth);
-        // cosh jk(z+h)/cosh jkh = (pʲ + qʲ)/(1 + rʲ), sinh the same with pʲ − qʲ, with
-        // p = e^{kz}, q = e^{−k(z+2h)}, r = e^{−2kh}: no overflow in deep water.
-        let (p1, q1, r1) = (
-            (k * z).exp(),
-            (-k * (z + 2.0 * h)).exp(),
-            (-2.0 * k * h).exp(),
-        );
-        let (mut p, mut q, mut r) = (1.0, 1.0, 1.0);
-        let (mut cj, mut sj) = (1.0, 0.0);
-        let (mut u, mut w) = (self.eulerian_current, 0.0);
-        for v in &self.velocity {
-            (cj, sj) = (cj * c1 - sj * s1, sj * c1 + cj * s1);
-            p *= p1;
-            q *= q1;
-            r *= r1;
-            let d = v / (1.0 + r);
-            u += d * (p + q) * cj;
-            w += d * (p - q) * sj;
-        }
-        (u, w)
+        let phase = self.k * x - self.omega * t;
+        let (k, h, u0) = (self.k, self.depth, self.eulerian_current);
+        fourier_velocity(&self.velocity, phase, k, h, u0, z)
     }
 }
 

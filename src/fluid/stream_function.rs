@@ -326,41 +326,15 @@ impl StreamFunction {
 
     /// The surface elevation η(x, t) above the still water level [m].
     pub fn elevation(&self, x: f64, t: f64) -> f64 {
-        let (s1, c1) = (self.k * x - self.omega * t).sin_cos();
-        let (mut cj, mut sj) = (1.0, 0.0);
-        let mut eta = 0.0;
-        for e in &self.elevation {
-            (cj, sj) = (cj * c1 - sj * s1, sj * c1 + cj * s1);
-            eta += e * cj;
-        }
-        eta
+        fourier_elevation(&self.elevation, self.k * x - self.omega * t)
     }
 
     /// The velocity (u, w) [m s⁻¹] in the flume's frame at (x, z), z above the still water
     /// level [m], and t [s].
     pub fn velocity(&self, x: f64, z: f64, t: f64) -> (f64, f64) {
-        let (s1, c1) = (self.k * x - self.omega * t).sin_cos();
-        let (k, h) = (self.k, self.depth);
-        // cosh(jk(z+h))/cosh(jkh) = (pʲ + qʲ)/(1 + rʲ) and sinh the same with pʲ − qʲ, with
-        // p = e^{kz}, q = e^{−k(z+2h)}, r = e^{−2kh}: no overflow in deep water.
-        let (p1, q1, r1) = (
-            (k * z).exp(),
-            (-k * (z + 2.0 * h)).exp(),
-            (-2.0 * k * h).exp(),
-        );
-        let (mut p, mut q, mut r) = (1.0, 1.0, 1.0);
-        let (mut cj, mut sj) = (1.0, 0.0);
-        let (mut u, mut w) = (self.eulerian_current, 0.0);
-        for a in &self.velocity {
-            (cj, sj) = (cj * c1 - sj * s1, sj * c1 + cj * s1);
-            p *= p1;
-            q *= q1;
-            r *= r1;
-            let d = a / (1.0 + r);
-            u += d * (p + q) * cj;
-            w += d * (p - q) * sj;
-        }
-        (u, w)
+        let phase = self.k * x - self.omega * t;
+        let (k, h, u0) = (self.k, self.depth, self.eulerian_current);
+        fourier_velocity(&self.velocity, phase, k, h, u0, z)
     }
 }
 
@@ -377,3 +351,51 @@ mod newton;
 use newton::{Criterion, Problem, Tables};
 #[cfg(test)]
 mod tests;
+
+/// η = Σ_j E_j cos jθ [m] of a steady wave's cosine coefficients E_j [m] at phase θ = kx − ωt:
+/// the surface of the Fourier waves here and of Fenton's fifth-order Stokes waves
+/// (`super::stokes5`).
+pub fn fourier_elevation(coefficients: &[f64], phase: f64) -> f64 {
+    let (s1, c1) = phase.sin_cos();
+    let (mut cj, mut sj) = (1.0, 0.0);
+    let mut eta = 0.0;
+    for e in coefficients {
+        (cj, sj) = (cj * c1 - sj * s1, sj * c1 + cj * s1);
+        eta += e * cj;
+    }
+    eta
+}
+
+/// The velocity (u, w) [m s⁻¹] at height z above the still water level [m] and phase θ of the
+/// series u = U + Σ_j B_j cosh jk(z+h)/cosh jkh cos jθ, w = Σ_j B_j sinh jk(z+h)/cosh jkh
+/// sin jθ (B_j `coefficients` [m s⁻¹], k [m⁻¹], h [m], U the Eulerian current [m s⁻¹]).
+pub fn fourier_velocity(
+    coefficients: &[f64],
+    phase: f64,
+    k: f64,
+    h: f64,
+    current: f64,
+    z: f64,
+) -> (f64, f64) {
+    let (s1, c1) = phase.sin_cos();
+    // cosh(jk(z+h))/cosh(jkh) = (pʲ + qʲ)/(1 + rʲ) and sinh the same with pʲ − qʲ, with
+    // p = e^{kz}, q = e^{−k(z+2h)}, r = e^{−2kh}: no overflow in deep water.
+    let (p1, q1, r1) = (
+        (k * z).exp(),
+        (-k * (z + 2.0 * h)).exp(),
+        (-2.0 * k * h).exp(),
+    );
+    let (mut p, mut q, mut r) = (1.0, 1.0, 1.0);
+    let (mut cj, mut sj) = (1.0, 0.0);
+    let (mut u, mut w) = (current, 0.0);
+    for a in coefficients {
+        (cj, sj) = (cj * c1 - sj * s1, sj * c1 + cj * s1);
+        p *= p1;
+        q *= q1;
+        r *= r1;
+        let d = a / (1.0 + r);
+        u += d * (p + q) * cj;
+        w += d * (p - q) * sj;
+    }
+    (u, w)
+}
