@@ -60,9 +60,10 @@
 //! around them). p̄ then holds the air's hydrostatic pressure, which [59]'s sum by shares over
 //! every face a sphere touches would apply to a body thicker than the sphere: [59] takes the
 //! pressure less its hydrostatic part ([`resolved::FlowView::force_density`]), and the
-//! buoyancy is the weight of the water *and* air displaced, face by face with the sphere's
-//! own weights, shared where a block's members overlap ([`resolved::displaced_weight`]): a
-//! block half out of the water is buoyed by its submerged half (validation case `floating_sphere`: Archimedes' draft). Unresolved
+//! buoyancy is the weight of the water *and* air displaced, the sphere's
+//! own volume under the water line placed in each cell, shared where a block's members overlap
+//! ([`buoyancy`]): a block half out of the water is buoyed by its submerged half (validation
+//! case `floating_sphere`: Archimedes' draft). Unresolved
 //! spheres take ρ(α) and ν(α) at their centre for the drag [5] and the buoyancy.
 //!
 //! **Sub-cycling.** The fluid force is *held* over the k DEM sub-steps of a fluid step: the
@@ -78,6 +79,7 @@
 //! terms in slot order ([`slabs`]). Results do not depend on
 //! the number of threads. Nothing allocates in a step unless spheres were added.
 
+pub mod buoyancy;
 pub mod drag;
 pub mod fraction;
 pub mod interpolate;
@@ -339,7 +341,8 @@ impl Coupling {
             &mut self.face_loads,
         );
         self.measure_local_fluid(fluid, spheres);
-        let weight = fluid.solid_weight();
+        let solids = fluid.solid_weight().is_some();
+        let alpha = fluid.water_fraction();
         let this = &*self;
         let b3 = this.b * this.b * this.b;
         let drive = driving_force_density(fluid);
@@ -379,26 +382,29 @@ impl Coupling {
                         x,
                         &this.face_loads,
                     );
-                    // Under air the buoyancy is the weight of the fluid displaced, face by
-                    // face (`resolved::displaced_weight`), and [59] the rest.
-                    let buoyancy = match weight {
-                        Some(w) => {
-                            let g = this.gravity;
-                            let (grid, bcs) = (&this.grid, &this.bcs);
-                            let b = resolved::displaced_weight(
-                                grid,
-                                bcs,
+                    // Under air the buoyancy is the weight of the water and air displaced,
+                    // the water line placed in the cells (`buoyancy`), and [59] the rest.
+                    let buoyancy = match (solids, this.air) {
+                        (true, Some(air)) => {
+                            let phases = buoyancy::Phases {
+                                water: this.rho_w,
+                                air: air.density,
+                            };
+                            let b = buoyancy::displaced_weight(
+                                &this.grid,
+                                &this.bcs,
                                 &boxes[i],
                                 this.b,
                                 own,
-                                &this.weight,
-                                w,
-                                this.rho_w,
-                                g,
+                                (x, r),
+                                alpha,
+                                &this.cell_phi,
+                                phases,
+                                this.gravity,
                             );
                             b + volume * drive
                         }
-                        None => buoyancy,
+                        _ => buoyancy,
                     };
                     load.force = fr + buoyancy;
                     load.torque = tr;

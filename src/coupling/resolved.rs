@@ -274,7 +274,7 @@ impl<'a> FlowView<'a> {
     /// f_a(c) of the module docs [N m⁻³]: −∂p̄/∂x_a + (∇·σ̃)_a − (∇·τ^SGS)_a on the a-face c.
     /// Under air less the hydrostatic part, + (ρ_f(α) − ρ_w) g_a: p̄ holds the air's weight
     /// (`fluid::solids`), which summed by shares over every face a sphere touches would weigh
-    /// a body thicker than the sphere; [`displaced_weight`] adds it back exactly.
+    /// a body thicker than the sphere; [`super::buoyancy`] adds it back exactly.
     #[inline]
     pub fn force_density(&self, a: usize, c: usize) -> f64 {
         let st = &self.st;
@@ -317,43 +317,6 @@ impl<'a> FlowView<'a> {
                 });
         }
     }
-}
-
-/// Under air: the weight of the water and air a sphere displaces, as a force [N],
-///
-/// ```text
-/// B_a = −g_a ΔV Σ_c w(c) min(1, W(c))/W(c) ρ_f(c)      over the a-faces the sphere covers
-/// ```
-///
-/// (box `cells`, fractions `phi`), W = Σ_j w_j the solid on the face (`total`), ρ_f = ρ_w +
-/// `weight` the fluid's density there (`fluid::solids`): the hydrostatic part of the pressure
-/// force that [`FlowView::force_density`] leaves out, with the solid's own volume, so that a
-/// floating sphere sits at Archimedes' draft. Where the members of a block overlap (W > 1) the
-/// volume is shared, so that a block displaces its union once.
-#[allow(clippy::too_many_arguments)]
-pub fn displaced_weight(
-    grid: &StaggeredGrid,
-    bcs: &Boundaries,
-    cells: &CellBox,
-    b: usize,
-    phi: &[f64],
-    total: &[Vec<[f64; 2]>; 3],
-    weight: &[Vec<f64>; 3],
-    rho_w: f64,
-    gravity: Vec3,
-) -> Vec3 {
-    let mut m = Vec3::ZERO;
-    for_each_face(grid, bcs, cells, b, phi, |a, c, w, _| {
-        let t = total[a][c][0];
-        let share = if t > 1.0 { w / t } else { w };
-        m[a] += share * (rho_w + weight[a][c]);
-    });
-    let volume = grid.cell_volume();
-    Vec3::new(
-        -gravity.x * m.x * volume,
-        -gravity.y * m.y * volume,
-        -gravity.z * m.z * volume,
-    )
 }
 
 /// Force [N] and torque about `x` [N m] on the sphere centred at `x` [59] [61], with box
