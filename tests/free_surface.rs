@@ -178,15 +178,17 @@ fn air_and_water_in_a_scenario_are_checked_by_key() {
     let e = built(&SCENARIO.replacen("[fluid.air]", "[fluid.air]\ninterface = \"plic\"\n#", 1))
         .expect_err("an unknown reconstruction is refused");
     assert!(e.contains("interface") && e.contains("plane"), "{e}");
-    // The projection's preconditioner: spectral by default, multigrid when asked for.
+    // The projection's preconditioner: multigrid by default, spectral when asked for.
     use riprap::fluid::pressure::Preconditioner;
-    let mg = SCENARIO.replacen(
+    let air = built(SCENARIO).unwrap().parameters().air.unwrap();
+    assert_eq!(air.pressure_preconditioner, Preconditioner::Multigrid);
+    let spectral = SCENARIO.replacen(
         "[fluid.air]",
-        "[fluid.air]\npressure_preconditioner = \"multigrid\"\n#",
+        "[fluid.air]\npressure_preconditioner = \"spectral\"\n#",
         1,
     );
-    let air = built(&mg).unwrap().parameters().air.unwrap();
-    assert_eq!(air.pressure_preconditioner, Preconditioner::Multigrid);
+    let air = built(&spectral).unwrap().parameters().air.unwrap();
+    assert_eq!(air.pressure_preconditioner, Preconditioner::Spectral);
     let e = built(&SCENARIO.replacen(
         "[fluid.air]",
         "[fluid.air]\npressure_preconditioner = \"jacobi\"\n#",

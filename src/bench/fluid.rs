@@ -226,7 +226,7 @@ pub struct FluidBenchArgs {
     pub front_csv: Option<std::path::PathBuf>,
     /// With --dam-break: the preconditioner of the projection (`spectral` or `multigrid`,
     /// the `pressure_preconditioner` key of `[fluid.air]`).
-    #[arg(long, requires = "dam_break", default_value = "spectral", value_parser = parse_preconditioner)]
+    #[arg(long, requires = "dam_break", default_value = "multigrid", value_parser = parse_preconditioner)]
     pub pressure_preconditioner: crate::fluid::pressure::Preconditioner,
 }
 

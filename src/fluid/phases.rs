@@ -49,8 +49,8 @@ pub struct Air {
     #[serde(default)]
     pub reconstruction: Reconstruction,
     /// The preconditioner of the exact projection ([`super::pressure::pcg`]); left out of
-    /// the serialised form when spectral (the default), so that older states read the same.
-    #[serde(default, skip_serializing_if = "Preconditioner::is_spectral")]
+    /// the serialised form when it is the default (multigrid).
+    #[serde(default, skip_serializing_if = "Preconditioner::is_default")]
     pub pressure_preconditioner: Preconditioner,
 }
 
@@ -61,7 +61,7 @@ impl Default for Air {
             density: 1.204,
             dynamic_viscosity: 1.813e-5,
             reconstruction: Reconstruction::Thinc,
-            pressure_preconditioner: Preconditioner::Spectral,
+            pressure_preconditioner: Preconditioner::default(),
         }
     }
 }

@@ -271,7 +271,7 @@ impl Fluid {
             let rho_f = &self.face_density;
             self.projection.preconditioner = par
                 .air
-                .map_or(Preconditioner::Spectral, |a| a.pressure_preconditioner);
+                .map_or(Preconditioner::default(), |a| a.pressure_preconditioner);
             let solve = (self.projection).project_exact(
                 &grid,
                 &bcs,

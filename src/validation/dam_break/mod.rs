@@ -84,7 +84,7 @@ pub fn scenario(n: usize) -> String {
 
 /// Runs the collapse at `n` cells per a, sampling every 0.05 in T up to [`T_END`].
 pub fn run(n: usize) -> anyhow::Result<Run> {
-    run_with(n, Preconditioner::Spectral)
+    run_with(n, Preconditioner::default())
 }
 
 /// [`run`] with the projection's conjugate gradients preconditioned by `preconditioner`
@@ -92,10 +92,10 @@ pub fn run(n: usize) -> anyhow::Result<Run> {
 pub fn run_with(n: usize, preconditioner: Preconditioner) -> anyhow::Result<Run> {
     let start = std::time::Instant::now();
     let mut text = scenario(n);
-    if preconditioner == Preconditioner::Multigrid {
+    if preconditioner == Preconditioner::Spectral {
         text = text.replace(
             "[fluid.air]",
-            "[fluid.air]\npressure_preconditioner = \"multigrid\"",
+            "[fluid.air]\npressure_preconditioner = \"spectral\"",
         );
     }
     let src = Source::from_str(&text, "dam_break/scenario.toml", PathBuf::from("."))?;
