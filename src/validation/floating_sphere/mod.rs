@@ -184,8 +184,8 @@ pub fn run_scenario(text: &str, rho_s: f64) -> anyhow::Result<Run> {
         .iter()
         .filter(|s| s.0 >= (1.0 - SETTLED) * t_end)
         .collect();
-    let n = window.len() as f64;
-    let draft = window.iter().map(|s| s.2 - (s.1 - RADIUS)).sum::<f64>() / n;
+    let drafts: Vec<(f64, f64)> = window.iter().map(|s| (s.0, s.2 - (s.1 - RADIUS))).collect();
+    let draft = whole_period_mean(&drafts);
     let (lo, hi) = window
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| {
@@ -203,6 +203,29 @@ pub fn run_scenario(text: &str, rho_s: f64) -> anyhow::Result<Run> {
         steps: sim.step,
         seconds: clock.elapsed().as_secs_f64(),
     })
+}
+
+/// The mean of a heaving record `(t, d)` over whole periods: between its first and its last
+/// upward crossing of its plain mean (the trapezoidal rule between them), so that the heave
+/// left adds nothing to the mean but the drift of its amplitude; the plain mean where the
+/// record crosses upwards fewer than twice.
+pub fn whole_period_mean(record: &[(f64, f64)]) -> f64 {
+    let plain = record.iter().map(|s| s.1).sum::<f64>() / record.len() as f64;
+    let up: Vec<usize> = (1..record.len())
+        .filter(|&i| record[i - 1].1 < plain && record[i].1 >= plain)
+        .collect();
+    let (Some(&first), Some(&last)) = (up.first(), up.last()) else {
+        return plain;
+    };
+    if last == first {
+        return plain;
+    }
+    let span = &record[first..=last];
+    let area: f64 = span
+        .windows(2)
+        .map(|w| 0.5 * (w[0].1 + w[1].1) * (w[1].0 - w[0].0))
+        .sum();
+    area / (span[span.len() - 1].0 - span[0].0)
 }
 
 /// The tolerance on the draft, relative to Archimedes' [–]: 1 % (the criterion) at
@@ -223,6 +246,22 @@ pub fn passes(run: &Run) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A sine about 2 sampled over 2.4 periods: the plain mean errs by up to 1/(2.4 π) of
+    /// the amplitude, the whole-period mean by the sampling's error only.
+    #[test]
+    fn the_mean_over_whole_periods_drops_the_heave() {
+        let record: Vec<(f64, f64)> = (0..=2400)
+            .map(|i| {
+                let t = i as f64 * 1e-3;
+                (t, 2.0 + (2.0 * PI * t + 1.0).sin())
+            })
+            .collect();
+        let plain = record.iter().map(|s| s.1).sum::<f64>() / record.len() as f64;
+        assert!((plain - 2.0).abs() > 0.02, "{plain}");
+        let m = whole_period_mean(&record);
+        assert!((m - 2.0).abs() < 1e-3, "{m}");
+    }
 
     /// Half as dense as water (less the air's share), a sphere floats with its centre on the
     /// water line; a cap of the whole sphere is its volume.
