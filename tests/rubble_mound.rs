@@ -66,7 +66,10 @@ fn rubble_mound_armour_settles_on_its_slope_and_stays_at_rest() {
     // dry and wet); a rolling unit moves centimetres and turns tenths of a radian in this time.
     assert!(moved < 0.05 * d_n, "a unit moved {moved:e} m");
     assert!(turned < 0.05, "a unit turned {turned:e} rad");
-    assert!(gap < 1e-4, "a unit's centre is {gap:e} m off its resting height");
+    assert!(
+        gap < 1e-4,
+        "a unit's centre is {gap:e} m off its resting height"
+    );
     // At rest: against m g D_n ≈ 0.07 J per unit, the 30 units hold less than a millionth of it.
     assert!(energy < 1e-6, "blocks' kinetic energy {energy:e} J");
     // The water: the transport of α conserves it to round-off, but the generating zone's
