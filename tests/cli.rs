@@ -45,6 +45,8 @@ fn check_passes_on_every_example_and_prints_the_derived_quantities() {
         "oscillatory_flow.toml",
         "hopper_cloud.toml",
         "sheet_flow.toml",
+        "sloping_beach.toml",
+        "rubble_mound.toml",
     ] {
         assert!(
             names.iter().any(|n| n == expected),
