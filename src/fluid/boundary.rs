@@ -490,4 +490,34 @@ mod tests {
         assert_eq!(u[2][grid.index(4, 1, nz + 1)], -0.1);
         assert_eq!(ghost(3), 0.3);
     }
+
+    /// A current's ends carry U on the faces below the still level (the surface cell's face
+    /// by its wet part), none above; the tangential ghosts are free slip. A current on one x
+    /// face only, or on another axis, is refused.
+    #[test]
+    fn a_current_runs_through_both_x_faces_below_the_still_water() {
+        let grid = StaggeredGrid::new([4, 1, 4], Vec3::new(0.4, 0.1, 0.4), Vec3::ZERO);
+        let c = Boundary::Current(CurrentProfile {
+            velocity: -0.3,
+            level: 0.25,
+        });
+        let bcs = Boundaries::periodic()
+            .with(0, c, c)
+            .with(2, Boundary::FreeSlip, Boundary::FreeSlip);
+        assert!(bcs.validate().is_ok());
+        let mut u = [grid.field(), grid.field(), grid.field()];
+        u[2][grid.index(1, 1, 2)] = 0.7;
+        fill_velocity_ghosts(&grid, &bcs, &mut u, 0.0);
+        for i in [1, 5] {
+            for (k, want) in [(1, -0.3), (2, -0.3), (3, -0.15), (4, 0.0)] {
+                assert!((u[0][grid.index(i, 1, k)] - want).abs() < 1e-15, "{i} {k}");
+            }
+        }
+        assert_eq!(u[2][grid.index(0, 1, 2)], 0.7);
+        assert!(Boundaries::periodic()
+            .with(0, c, Boundary::FreeSlip)
+            .validate()
+            .is_err());
+        assert!(Boundaries::periodic().with(2, c, c).validate().is_err());
+    }
 }

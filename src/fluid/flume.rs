@@ -306,4 +306,36 @@ mod tests {
         // High in the air: zero.
         assert_eq!(u[0][grid.cell(1, 0, 28)], 0.0);
     }
+
+    /// On a current U: at t = 0 (ramp 0) the generating zone's target is U below the surface
+    /// (the wave's part ramped away, the current not), the absorbing zone's U below the still
+    /// level, and both are zero in the air; the start's velocity is U below the still level.
+    #[test]
+    fn on_a_current_the_zones_relax_towards_it() {
+        let u = 0.2;
+        let f = Flume {
+            wave: Wave::Linear(Regular::with_current(0.04, 1.0, 0.4, 9.81, u).unwrap()),
+            current: u,
+            ..flume()
+        };
+        let grid = StaggeredGrid::new([80, 1, 30], Vec3::new(4.0, 0.05, 0.6), Vec3::ZERO);
+        let regions: [IndexBox; 3] =
+            std::array::from_fn(|_| std::array::from_fn(|d| 0..grid.padded()[d]));
+        let mut v = [grid.field(), grid.field(), grid.field()];
+        let rest = v.clone();
+        f.relax_velocity(&grid, &regions, &mut v, &rest, 0.0);
+        for i in [1, 80] {
+            let c = grid.cell(i, 0, 10);
+            let w = f
+                .zone(grid.position(c, Some(0)).x)
+                .map(|(w, _)| w)
+                .unwrap();
+            assert!((v[0][c] - w * u).abs() < 1e-15, "{i}: {} {w}", v[0][c]);
+            assert_eq!(v[2][c], 0.0);
+            assert_eq!(v[0][grid.cell(i, 0, 28)], 0.0);
+        }
+        let dz = grid.spacing.z;
+        assert_eq!(f.current_velocity(Vec3::new(2.0, 0.0, 0.37), dz), Vec3::X * u);
+        assert_eq!(f.current_velocity(Vec3::new(2.0, 0.0, 0.43), dz), Vec3::ZERO);
+    }
 }
