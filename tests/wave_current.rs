@@ -147,7 +147,11 @@ fn measured_wavenumber(f: &mut Fluid, xs: &[f64], t0: f64) -> f64 {
     }
     let m = xs.len() as f64;
     let (mx, mt) = (xs.iter().sum::<f64>() / m, theta.iter().sum::<f64>() / m);
-    let sxy: f64 = xs.iter().zip(&theta).map(|(x, t)| (x - mx) * (t - mt)).sum();
+    let sxy: f64 = xs
+        .iter()
+        .zip(&theta)
+        .map(|(x, t)| (x - mx) * (t - mt))
+        .sum();
     let sxx: f64 = xs.iter().map(|x| (x - mx) * (x - mx)).sum();
     sxy / sxx
 }
@@ -175,7 +179,9 @@ fn doppler_run(u: f64) {
     let k = doppler_wavenumber(omega, H, G, u).unwrap();
     let l = 2.0 * PI / k;
     let edge = f.flume().unwrap().generation.unwrap().inner;
-    let xs: Vec<f64> = (0..6).map(|i| edge + 0.2 * l + i as f64 * l / 5.0).collect();
+    let xs: Vec<f64> = (0..6)
+        .map(|i| edge + 0.2 * l + i as f64 * l / 5.0)
+        .collect();
     let sigma = omega - k * u;
     let n = 0.5 * (1.0 + 2.0 * k * H / (2.0 * k * H).sinh());
     let cg = u + n * sigma / k;
@@ -226,7 +232,10 @@ fn a_current_is_checked_by_key() {
     for words in [
         "on a current U = -0.15 m/s along x (against the waves)".to_string(),
         format!("L = {:.4} m in the flume's frame", 2.0 * PI / k),
-        format!("({:.4} m on still water", 2.0 * PI / wavenumber(omega, H, G)),
+        format!(
+            "({:.4} m on still water",
+            2.0 * PI / wavenumber(omega, H, G)
+        ),
         format!("σ = ω − k U = {sigma:.4} rad/s"),
         format!("2π/σ = {:.4} s", 2.0 * PI / sigma),
         "the current runs through the flume".to_string(),
@@ -240,7 +249,10 @@ fn a_current_is_checked_by_key() {
         "wavemaker",
     );
     refused(
-        &text.replace("current = -0.15", "current = -0.15\nabsorption_length = 0.0"),
+        &text.replace(
+            "current = -0.15",
+            "current = -0.15\nabsorption_length = 0.0",
+        ),
         "fluid.waves.absorption_length",
         "absorbing zone",
     );
@@ -260,7 +272,9 @@ fn a_current_is_checked_by_key() {
         "a current alone",
     );
     refused(
-        &text.replace("height = 0.02", "height = 0.0").replace("current = -0.15\n", ""),
+        &text
+            .replace("height = 0.02", "height = 0.0")
+            .replace("current = -0.15\n", ""),
         "fluid.waves.height",
         "positive",
     );

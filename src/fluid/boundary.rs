@@ -311,7 +311,11 @@ pub fn fill_velocity_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec
                             f[base + sa] = p.velocity(z, t);
                         }
                         if let Some(c) = &current {
-                            let face = if side == LOW { base + sa } else { base + (na + 1) * sa };
+                            let face = if side == LOW {
+                                base + sa
+                            } else {
+                                base + (na + 1) * sa
+                            };
                             f[face] = c.at(grid.position(face, Some(a)).z, dz);
                         }
                         if side == LOW {
@@ -501,9 +505,10 @@ mod tests {
             velocity: -0.3,
             level: 0.25,
         });
-        let bcs = Boundaries::periodic()
-            .with(0, c, c)
-            .with(2, Boundary::FreeSlip, Boundary::FreeSlip);
+        let bcs =
+            Boundaries::periodic()
+                .with(0, c, c)
+                .with(2, Boundary::FreeSlip, Boundary::FreeSlip);
         assert!(bcs.validate().is_ok());
         let mut u = [grid.field(), grid.field(), grid.field()];
         u[2][grid.index(1, 1, 2)] = 0.7;

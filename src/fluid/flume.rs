@@ -326,16 +326,19 @@ mod tests {
         f.relax_velocity(&grid, &regions, &mut v, &rest, 0.0);
         for i in [1, 80] {
             let c = grid.cell(i, 0, 10);
-            let w = f
-                .zone(grid.position(c, Some(0)).x)
-                .map(|(w, _)| w)
-                .unwrap();
+            let w = f.zone(grid.position(c, Some(0)).x).map(|(w, _)| w).unwrap();
             assert!((v[0][c] - w * u).abs() < 1e-15, "{i}: {} {w}", v[0][c]);
             assert_eq!(v[2][c], 0.0);
             assert_eq!(v[0][grid.cell(i, 0, 28)], 0.0);
         }
         let dz = grid.spacing.z;
-        assert_eq!(f.current_velocity(Vec3::new(2.0, 0.0, 0.37), dz), Vec3::X * u);
-        assert_eq!(f.current_velocity(Vec3::new(2.0, 0.0, 0.43), dz), Vec3::ZERO);
+        assert_eq!(
+            f.current_velocity(Vec3::new(2.0, 0.0, 0.37), dz),
+            Vec3::X * u
+        );
+        assert_eq!(
+            f.current_velocity(Vec3::new(2.0, 0.0, 0.43), dz),
+            Vec3::ZERO
+        );
     }
 }

@@ -93,9 +93,7 @@ pub(in crate::scenario) fn build_fluid(
         Some(w) if w.paddle.is_some() => {
             super::waves::with_wavemaker(src, boundaries, w.paddle.unwrap())?
         }
-        Some(w) if w.flume.current != 0.0 => {
-            super::waves::with_current(src, boundaries, &w.flume)?
-        }
+        Some(w) if w.flume.current != 0.0 => super::waves::with_current(src, boundaries, &w.flume)?,
         _ => boundaries,
     };
 
@@ -150,11 +148,12 @@ pub(in crate::scenario) fn build_fluid(
         fluid
             .set_porous(porous.clone())
             .map_err(|e| src.invalid("fluid.porous", e))?;
-        let open = boundaries
-            .faces
-            .iter()
-            .flatten()
-            .any(|b| matches!(b, Boundary::Inflow(_) | Boundary::Outflow | Boundary::Current(_)));
+        let open = boundaries.faces.iter().flatten().any(|b| {
+            matches!(
+                b,
+                Boundary::Inflow(_) | Boundary::Outflow | Boundary::Current(_)
+            )
+        });
         if amplitude > 0.0 || open {
             fluid.project();
         }

@@ -583,7 +583,10 @@ fn current_fits(
         ));
     }
     for (side, name) in ["x_min", "x_max"].iter().enumerate() {
-        if !matches!(bcs.faces[0][side], Boundary::Wall { .. } | Boundary::FreeSlip) {
+        if !matches!(
+            bcs.faces[0][side],
+            Boundary::Wall { .. } | Boundary::FreeSlip
+        ) {
             return Err(src.invalid(
                 &format!("fluid.boundaries.{name}"),
                 "a flume on a current lets its water in and out through its ends, which the \
