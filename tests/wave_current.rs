@@ -216,7 +216,8 @@ fn waves_on_an_opposing_current_take_the_doppler_shifted_length() {
 }
 
 /// `check` prints the current, the wavelength on it and without, and the intrinsic
-/// frequency; bad input is refused by key: a wavemaker, no absorbing zone, x faces given as
+/// frequency; the fifth-order and stream-function waves build on it too; bad input is refused
+/// by key: a wavemaker, no absorbing zone, x faces given as
 /// anything but walls, `height = 0` with another theory, a current blocking the waves.
 #[test]
 fn a_current_is_checked_by_key() {
@@ -243,6 +244,15 @@ fn a_current_is_checked_by_key() {
         assert!(report.contains(&words), "{words}");
     }
     assert!(!report.contains("refuses"));
+    // The steady theories take U as their Eulerian mean current, and run on it too.
+    for theory in ["stokes5", "stream_function"] {
+        let f = fluid_of(&text.replace("\"linear\"", &format!("\"{theory}\""))).unwrap();
+        assert!(matches!(
+            f.boundaries().faces[0][1],
+            Boundary::Current(c) if c.velocity == -0.15
+        ));
+        assert_eq!(f.flume().unwrap().current, -0.15);
+    }
     refused(
         &text.replace("current = -0.15", "current = -0.15\nwavemaker = \"piston\""),
         "fluid.waves.current",
