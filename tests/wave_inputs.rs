@@ -401,18 +401,18 @@ fn a_measured_record_flume() {
 }
 
 /// `current = 0.2` on the example's linear wave: `check` accepts it and prints the wave on
-/// its current (Doppler-shifted: longer, ω = k U + √(g k tanh kh)) with a warning that the
-/// run refuses it; `riprap run`'s build refuses it as not yet carried by the flow. The
+/// its current (Doppler-shifted: longer, ω = k U + √(g k tanh kh)), and `riprap run`'s build
+/// makes its ends carry the current (the flow on a current: `tests/wave_current.rs`). The
 /// cnoidal theory refuses the key (as do the solitary wave and the seas); an opposing
 /// current that blocks the wave (−0.9 m/s against T = 1 s: ω − k U − √(g k tanh kh) stays
 /// positive, no wave) is refused.
 #[test]
-fn a_current_is_checked_but_not_yet_run() {
+fn a_current_is_checked() {
     let text = EXAMPLE.replace("period = 1.0 ", "period = 1.0\ncurrent = 0.2 ");
     assert_ne!(text, EXAMPLE);
     let report = report_of(&text, &std::env::temp_dir()).unwrap();
     println!("{report}");
-    assert!(report.contains("on a current U = 0.2 m/s") && report.contains("refuses"));
+    assert!(report.contains("on a current U = 0.2 m/s") && !report.contains("refuses"));
     let src = Source::from_str(&text, "case.toml", std::env::temp_dir()).unwrap();
     let derived = check(&src).unwrap();
     let w = derived.fluid.unwrap().waves.unwrap();
@@ -420,7 +420,11 @@ fn a_current_is_checked_but_not_yet_run() {
     let omega = 2.0 * PI;
     assert!((omega - k * 0.2 - (9.81 * k * (k * 0.4).tanh()).sqrt()).abs() < 1e-9);
     assert!(w.wavelength > 1.4637 * 1.05);
-    refused(&text, "fluid.waves.current", "not yet");
+    let f = fluid_of(&text).unwrap();
+    assert!(matches!(
+        f.boundaries().faces[0],
+        [riprap::fluid::Boundary::Current(c), _] if c.velocity == 0.2 && c.level == 0.4
+    ));
     for theory in ["stokes5", "stream_function"] {
         let t = text.replace("\"linear\"", &format!("\"{theory}\""));
         assert!(report_of(&t, &std::env::temp_dir())

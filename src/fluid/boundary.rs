@@ -14,6 +14,7 @@
 //! | inflow U_in(t) | U_in · n | u_g = 2 U_in − u_1 |
 //! | wavemaker paddle (x low) | U(z, t) of [`super::wavemaker`] | u_g = u_1 (free slip) |
 //! | outflow | convective, see [`advance_outflow`] | u_g = u_1 (zero gradient) |
+//! | current (both x faces of a flume) | U · (part of the face below the still water) | u_g = u_1 (free slip) |
 //! | open (atmosphere) | moved by the projection | u_g = u_1 out, −u_1 in (inlet-outlet) |
 //!
 //! Scalars (pressure, density, eddy viscosity) get a periodic copy or a zero-gradient copy,
@@ -65,6 +66,25 @@ impl InflowVelocity {
     }
 }
 
+/// The normal velocity of a flume's end on a current: U [m s⁻¹] along x on the part of each
+/// face below the still water level `level` [m] (the wet fraction of the face, as the flume's
+/// zones weigh their targets), zero above.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CurrentProfile {
+    /// U [m s⁻¹] along +x (negative: towards x low).
+    pub velocity: f64,
+    /// The still water surface [m] (z).
+    pub level: f64,
+}
+
+impl CurrentProfile {
+    /// The velocity [m s⁻¹] on a face centred at height `z` [m] of a grid of cell height `dz`
+    /// [m]: U times the part of the face below the still water.
+    pub fn at(&self, z: f64, dz: f64) -> f64 {
+        self.velocity * ((self.level - (z - 0.5 * dz)) / dz).clamp(0.0, 1.0)
+    }
+}
+
 /// What happens on one face of the box.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Boundary {
@@ -89,6 +109,11 @@ pub enum Boundary {
     /// corrected uniformly so that the box conserves volume; tangential velocities have zero
     /// normal gradient.
     Outflow,
+    /// A flume's end on a uniform current ([`CurrentProfile`]): the normal velocity U on the
+    /// part of the face below the still water level, zero in the air above, free slip along
+    /// it. Only on both x faces at once, with the same profile, so that the water that comes
+    /// in at one end leaves at the other, face for face (`super::flume`).
+    Current(CurrentProfile),
     /// Open to the atmosphere, as the top of a laboratory flume: the pressure is zero on the
     /// face, the normal velocity is what the projection makes it (air, or water, leaves and
     /// enters freely), tangential velocities have zero normal gradient where the flow leaves
@@ -169,6 +194,13 @@ impl Boundaries {
                     }
                     Boundary::Wavemaker(p) if !(p.period > 0.0 && p.depth > 0.0) => {
                         return Err("a wavemaker's period and depth must be positive".into())
+                    }
+                    Boundary::Current(_) if a != 0 || hi != lo => {
+                        return Err(format!(
+                            "boundary {} {side}: a current runs through both x faces, with \
+                             the same profile",
+                            NAMES[a]
+                        ))
                     }
                     Boundary::Open if a != 2 || side != "high" => {
                         return Err(format!(
@@ -262,16 +294,29 @@ pub fn fill_velocity_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec
                         Boundary::Inflow(v) => Some(v.at(t)[a]),
                         Boundary::Outflow | Boundary::Open | Boundary::Periodic => None,
                         // Per point of the face, below.
-                        Boundary::Wavemaker(_) => None,
+                        Boundary::Wavemaker(_) | Boundary::Current(_) => None,
                     };
                     let paddle = match bc {
                         Boundary::Wavemaker(p) => Some(p),
                         _ => None,
                     };
+                    let current = match bc {
+                        Boundary::Current(c) => Some(c),
+                        _ => None,
+                    };
+                    let dz = grid.spacing.z;
                     for_each_in_plane(grid, a, |base| {
                         if let Some(p) = &paddle {
                             let z = grid.position(base + sa, Some(a)).z;
                             f[base + sa] = p.velocity(z, t);
+                        }
+                        if let Some(c) = &current {
+                            let face = if side == LOW {
+                                base + sa
+                            } else {
+                                base + (na + 1) * sa
+                            };
+                            f[face] = c.at(grid.position(face, Some(a)).z, dz);
                         }
                         if side == LOW {
                             // Face 0 is slot 1; face −1 (slot 0) is never read by an update
@@ -448,5 +493,36 @@ mod tests {
         assert_eq!(u[2][grid.index(1, 1, nz + 1)], 0.1);
         assert_eq!(u[2][grid.index(4, 1, nz + 1)], -0.1);
         assert_eq!(ghost(3), 0.3);
+    }
+
+    /// A current's ends carry U on the faces below the still level (the surface cell's face
+    /// by its wet part), none above; the tangential ghosts are free slip. A current on one x
+    /// face only, or on another axis, is refused.
+    #[test]
+    fn a_current_runs_through_both_x_faces_below_the_still_water() {
+        let grid = StaggeredGrid::new([4, 1, 4], Vec3::new(0.4, 0.1, 0.4), Vec3::ZERO);
+        let c = Boundary::Current(CurrentProfile {
+            velocity: -0.3,
+            level: 0.25,
+        });
+        let bcs =
+            Boundaries::periodic()
+                .with(0, c, c)
+                .with(2, Boundary::FreeSlip, Boundary::FreeSlip);
+        assert!(bcs.validate().is_ok());
+        let mut u = [grid.field(), grid.field(), grid.field()];
+        u[2][grid.index(1, 1, 2)] = 0.7;
+        fill_velocity_ghosts(&grid, &bcs, &mut u, 0.0);
+        for i in [1, 5] {
+            for (k, want) in [(1, -0.3), (2, -0.3), (3, -0.15), (4, 0.0)] {
+                assert!((u[0][grid.index(i, 1, k)] - want).abs() < 1e-15, "{i} {k}");
+            }
+        }
+        assert_eq!(u[2][grid.index(0, 1, 2)], 0.7);
+        assert!(Boundaries::periodic()
+            .with(0, c, Boundary::FreeSlip)
+            .validate()
+            .is_err());
+        assert!(Boundaries::periodic().with(2, c, c).validate().is_err());
     }
 }

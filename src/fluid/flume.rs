@@ -22,7 +22,37 @@
 //! The zones change the water's volume (they add and take water as the wave does); outside
 //! them the volume is kept as before. Every face and cell is written by one task: the bits do
 //! not depend on the number of threads.
+//!
+//! # On a current
+//!
+//! A flume on a uniform current U [m s⁻¹] along x (`current` ≠ 0; U < 0 against the waves)
+//! carries its water through: both ends are [`Boundary::Current`](super::Boundary::Current)
+//! faces with the normal velocity
+//!
+//! ```text
+//! u = U · wet(z),   wet = clamp((d − (z − Δz/2))/Δz, 0, 1)   (d the still water level [m])
+//! ```
+//!
+//! the same profile at both ends, so that what comes in at one end leaves at the other, face
+//! for face, and the net flux through the box is zero to round-off whatever the top. The
+//! zones relax towards the current as well: the generating zone's target is the wave on its
+//! current (the theories give U plus the wave's velocity, `super::waves`), with the ramp on
+//! the wave's part alone, u = wet (U + r (u_wave − U)); the absorbing zone's is still water
+//! moving at U, u = U wet(z), α the still water's. The water starts moving at U
+//! ([`Flume::current_velocity`]): the ends carry U from the first step, and an incompressible
+//! flow between them cannot ramp up (every section carries the same flux at once).
+//!
+//! Why fixed profiles at both ends and not an inflow and a convective outflow: with an open
+//! top the outflow is not corrected to the inflow (the pressure is fixed there, the volume
+//! free), so the water level would wander with whatever the outflow lets through; with the
+//! profile fixed at both ends the flux balances exactly and the absorbing zone, relaxing α
+//! towards the still level next to the outlet, holds the level there. The water crossing an
+//! end is U wet(z) times the α of the end cell (`super::interface`: the ghost donates at an
+//! inflow); both ends' α are held at the still water's by their zones, so the two match to
+//! what the zones leave over. Across the surface cell a partly wet face carries U wet as a
+//! mixture velocity: put the still level on a cell face to keep the profile sharp.
 
+use super::boundary::CurrentProfile;
 use super::grid::{update_region, IndexBox, StaggeredGrid};
 use super::waves::{RelaxationZone, Wave};
 use crate::math::Vec3;
@@ -40,6 +70,9 @@ pub struct Flume {
     pub absorption: Option<RelaxationZone>,
     /// The time over which the wave ramps up from rest [s] (0: none).
     pub ramp_time: f64,
+    /// The uniform current U [m s⁻¹] along x the water carries (0: none; module docs). The
+    /// wave must be the one on this current (its velocity holds U).
+    pub current: f64,
 }
 
 /// What a zone blends towards at one point.
@@ -56,6 +89,20 @@ impl Flume {
         } else {
             0.5 * (1.0 - (std::f64::consts::PI * t / self.ramp_time).cos())
         }
+    }
+
+    /// The current's profile: U below the still water level ([`CurrentProfile`]).
+    pub fn current_profile(&self) -> CurrentProfile {
+        CurrentProfile {
+            velocity: self.current,
+            level: self.still_water_level,
+        }
+    }
+
+    /// The velocity [m s⁻¹] at t = 0 of a flume on a current, on a face at `p` of a grid of
+    /// cell height `dz` [m]: U on the part of the face below the still water, along x.
+    pub fn current_velocity(&self, p: Vec3, dz: f64) -> Vec3 {
+        Vec3::new(self.current_profile().at(p.z, dz), 0.0, 0.0)
     }
 
     /// The weight at `x` [m] and what it blends towards (none outside the zones).
@@ -96,6 +143,9 @@ impl Flume {
                     return old;
                 };
                 let goal = match target {
+                    Target::Still if a == 0 && self.current != 0.0 => {
+                        self.current_profile().at(p.z, dz)
+                    }
                     Target::Still => 0.0,
                     Target::Wave if a == 1 => 0.0,
                     Target::Wave => {
@@ -107,7 +157,13 @@ impl Flume {
                             let z = p.z.min(eta) - self.still_water_level;
                             let (ux, uz) = self.wave.velocity(p.x, z, t);
                             let r = self.ramp(t);
-                            wet * r * if a == 0 { ux } else { uz }
+                            if a == 0 && self.current != 0.0 {
+                                // The current at once, the wave's part ramped.
+                                let u = self.current;
+                                wet * (u + r * (ux - u))
+                            } else {
+                                wet * r * if a == 0 { ux } else { uz }
+                            }
                         }
                     }
                 };
@@ -172,6 +228,7 @@ mod tests {
                 outer: 4.0,
             }),
             ramp_time: 2.0,
+            current: 0.0,
         }
     }
 
@@ -248,5 +305,40 @@ mod tests {
         assert!(ux.abs() > 0.01);
         // High in the air: zero.
         assert_eq!(u[0][grid.cell(1, 0, 28)], 0.0);
+    }
+
+    /// On a current U: at t = 0 (ramp 0) the generating zone's target is U below the surface
+    /// (the wave's part ramped away, the current not), the absorbing zone's U below the still
+    /// level, and both are zero in the air; the start's velocity is U below the still level.
+    #[test]
+    fn on_a_current_the_zones_relax_towards_it() {
+        let u = 0.2;
+        let f = Flume {
+            wave: Wave::Linear(Regular::with_current(0.04, 1.0, 0.4, 9.81, u).unwrap()),
+            current: u,
+            ..flume()
+        };
+        let grid = StaggeredGrid::new([80, 1, 30], Vec3::new(4.0, 0.05, 0.6), Vec3::ZERO);
+        let regions: [IndexBox; 3] =
+            std::array::from_fn(|_| std::array::from_fn(|d| 0..grid.padded()[d]));
+        let mut v = [grid.field(), grid.field(), grid.field()];
+        let rest = v.clone();
+        f.relax_velocity(&grid, &regions, &mut v, &rest, 0.0);
+        for i in [1, 80] {
+            let c = grid.cell(i, 0, 10);
+            let w = f.zone(grid.position(c, Some(0)).x).map(|(w, _)| w).unwrap();
+            assert!((v[0][c] - w * u).abs() < 1e-15, "{i}: {} {w}", v[0][c]);
+            assert_eq!(v[2][c], 0.0);
+            assert_eq!(v[0][grid.cell(i, 0, 28)], 0.0);
+        }
+        let dz = grid.spacing.z;
+        assert_eq!(
+            f.current_velocity(Vec3::new(2.0, 0.0, 0.37), dz),
+            Vec3::X * u
+        );
+        assert_eq!(
+            f.current_velocity(Vec3::new(2.0, 0.0, 0.43), dz),
+            Vec3::ZERO
+        );
     }
 }

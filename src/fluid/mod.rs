@@ -71,7 +71,7 @@ pub mod timestep;
 pub mod wavemaker;
 pub mod waves;
 
-pub use boundary::{Boundaries, Boundary, InflowVelocity};
+pub use boundary::{Boundaries, Boundary, CurrentProfile, InflowVelocity};
 pub use forcing::DrivingPressureGradient;
 pub use grid::StaggeredGrid;
 pub use model::{CellFields, Fluid, FluidParameters, FluidState};

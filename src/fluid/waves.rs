@@ -1,5 +1,5 @@
-//! Wave theories for the wave flume (issue 28; not yet used by the flow): the surface
-//! elevation and the water's velocity that a generating zone or a wavemaker imposes.
+//! Wave theories for the wave flume (issue 28): the surface elevation and the water's velocity
+//! that a generating zone or a wavemaker imposes.
 //!
 //! Symbols: h the still-water depth [m]; H the wave height [m]; T the period [s]; ω = 2π/T
 //! [s⁻¹]; k = 2π/L the wavenumber [m⁻¹]; θ = k x − ω t [-]; z the height above the still water
@@ -39,8 +39,9 @@
 //! velocity is U plus the wave's of intrinsic frequency σ (the wave as seen moving with the
 //! current). The fifth-order and the stream-function waves take U as their mean Eulerian
 //! current c_E (Fenton's first definition of the wave speed), which for a low wave is the
-//! same dispersion relation. The flume does not yet carry a current
-//! (`scenario::fluid::waves`).
+//! same dispersion relation. The flume carries the current through: its ends let U in and
+//! out below the still water, and its zones relax towards the wave on U and towards still
+//! water moving at U ([`super::flume`], "On a current"; `scenario::fluid::waves`).
 //!
 //! Still open for the flume: higher-order cnoidal theory.
 

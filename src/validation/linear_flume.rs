@@ -125,6 +125,7 @@ impl LinearFlume {
                 outer: length,
             }),
             ramp_time: self.ramp * self.period,
+            current: 0.0,
         })
         .expect("the flume has air");
         f

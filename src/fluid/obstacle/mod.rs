@@ -423,7 +423,10 @@ fn check_open_boundaries(
     const SIDE: [[&str; 2]; 3] = [["x_min", "x_max"], ["y_min", "y_max"], ["z_min", "z_max"]];
     for a in 0..3 {
         for (side, bc) in bcs.faces[a].iter().enumerate() {
-            if !matches!(bc, Boundary::Inflow(_) | Boundary::Outflow) {
+            if !matches!(
+                bc,
+                Boundary::Inflow(_) | Boundary::Outflow | Boundary::Current(_)
+            ) {
                 continue;
             }
             let layer = if side == 0 { 0 } else { grid.n[a] - 1 };
@@ -441,10 +444,10 @@ fn check_open_boundaries(
                                  would flow into a solid cell; keep it a cell away",
                                 obstacles[w as usize - 1].name,
                                 SIDE[a][side],
-                                if matches!(bc, Boundary::Outflow) {
-                                    "outflow"
-                                } else {
-                                    "inflow"
+                                match bc {
+                                    Boundary::Outflow => "outflow",
+                                    Boundary::Current(_) => "end on a current",
+                                    _ => "inflow",
                                 }
                             ));
                         }

@@ -89,9 +89,12 @@ pub(in crate::scenario) fn build_fluid(
         hi,
         gravity.length(),
     )?;
-    let boundaries = match waves.as_ref().and_then(|w| w.paddle) {
-        Some(p) => super::waves::with_wavemaker(src, boundaries, p)?,
-        None => boundaries,
+    let boundaries = match &waves {
+        Some(w) if w.paddle.is_some() => {
+            super::waves::with_wavemaker(src, boundaries, w.paddle.unwrap())?
+        }
+        Some(w) if w.flume.current != 0.0 => super::waves::with_current(src, boundaries, &w.flume)?,
+        _ => boundaries,
     };
 
     let (obstacles, obstacle_summaries) =
@@ -117,17 +120,16 @@ pub(in crate::scenario) fn build_fluid(
                 .map_err(|e| src.invalid("fluid.air", e))?;
         }
         if let Some(w) = &waves {
-            if w.current.is_some() {
-                return Err(src.invalid(
-                    "fluid.waves.current",
-                    "not yet: the flow does not carry a current through a flume (it needs \
-                     ends that let the water through and zones that relax towards the \
-                     current); `riprap check` reports the wave on it",
-                ));
-            }
             fluid
                 .set_flume(w.flume.clone())
                 .map_err(|e| src.invalid("fluid.waves", e))?;
+            if w.flume.current != 0.0 {
+                // The water starts moving at U (`fluid::flume`, "On a current").
+                let (fl, dz) = (&w.flume, grid.spacing.z);
+                fluid.set_velocity(|x| {
+                    u0 + amplitude * perturbation(seed, x) + fl.current_velocity(x, dz)
+                });
+            }
             if w.starts_in_flume {
                 // The wave in the flume at t = 0: its water, and its velocity over the start's.
                 let (fl, dz) = (&w.flume, grid.spacing.z);
@@ -146,11 +148,12 @@ pub(in crate::scenario) fn build_fluid(
         fluid
             .set_porous(porous.clone())
             .map_err(|e| src.invalid("fluid.porous", e))?;
-        let open = boundaries
-            .faces
-            .iter()
-            .flatten()
-            .any(|b| matches!(b, Boundary::Inflow(_) | Boundary::Outflow));
+        let open = boundaries.faces.iter().flatten().any(|b| {
+            matches!(
+                b,
+                Boundary::Inflow(_) | Boundary::Outflow | Boundary::Current(_)
+            )
+        });
         if amplitude > 0.0 || open {
             fluid.project();
         }
@@ -174,6 +177,9 @@ pub(in crate::scenario) fn build_fluid(
             .fold(p.level.unwrap_or(lo.z), f64::max);
         // In a wave flume with no boxes the water does not fall: the waves' phase speed.
         let fall = match &waves {
+            Some(w) if p.boxes.is_empty() && w.flume.current != 0.0 => {
+                w.phase_speed().abs().max(w.flume.current.abs())
+            }
             Some(w) if p.boxes.is_empty() => w.phase_speed(),
             _ => 2.0 * (gravity.length() * (top.min(hi.z) - lo.z)).sqrt(),
         };
@@ -380,6 +386,7 @@ fn boundaries(
                 Boundary::Outflow => "outflow",
                 Boundary::Open => "open",
                 Boundary::Wavemaker(_) => "wavemaker",
+                Boundary::Current(_) => "current",
             };
             let default = |s: usize| {
                 if sections[a][s].is_none() {

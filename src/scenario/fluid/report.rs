@@ -128,6 +128,11 @@ fn describe(b: Boundary) -> String {
             sig4(v.period)
         ),
         Boundary::Outflow => "outflow".into(),
+        Boundary::Current(c) => format!(
+            "a flume's end on a current of {} m/s along x below z = {} m (zero above)",
+            sig4(c.velocity),
+            sig4(c.level)
+        ),
         Boundary::Wavemaker(p) => format!(
             "wavemaker: a {} of stroke {} m, period {} s",
             match p.kind {

@@ -7,7 +7,7 @@
 //! height = 0.04                      # H [m]
 //! period = 1.0                       # T [s]
 //! # order = 32                       # Fourier terms, "stream_function" only
-//! # current = 0.1                    # U [m/s]: `check` only, the flow refuses it (below)
+//! # current = 0.1                    # U [m/s] along +x (negative: against the waves), below
 //!
 //! [fluid.waves]                      # one solitary wave
 //! theory = "solitary"
@@ -49,11 +49,17 @@
 //!
 //! A current `current` = U [m s⁻¹] along x gives the regular theories their Doppler-shifted
 //! wave (`fluid::waves` module docs; U is the Eulerian mean current c_E of the fifth-order
-//! and stream-function waves; without it they carry no mass, c_S = 0). A flume on a current
-//! needs the generating zone to impose the wave plus U, the absorbing zone to relax towards
-//! U in the water (not to rest), and ends that let water through (inflow and outflow in the
-//! water, not walls); the flow has neither yet, so `riprap check` prints the wave on its
-//! current and `riprap run` refuses it ([`Waves::current`]).
+//! and stream-function waves; without it they carry no mass, c_S = 0), and the flow carries
+//! it through the flume (`fluid::flume`, "On a current"): the x faces, which the scenario
+//! gives as walls ("free_slip" or "wall"), become [`Boundary::Current`] ends carrying U below
+//! the still water level, the generating zone relaxes towards the wave on U, the absorbing
+//! zone towards still water moving at U, and the water starts moving at U. `height = 0`
+//! with `theory = "linear"` is a current alone, no waves (the period then only sizes the
+//! zones). Refused: a current with a wavemaker paddle (its face is a wall that moves, with no
+//! water through it), without an absorbing zone (it holds the level where the water
+//! leaves), on x faces given as anything but walls, or one that blocks the waves (against
+//! them and stronger than their group velocity allows). `check` prints U, the wavelength in
+//! the flume's frame with and without it, and the intrinsic frequency σ = ω − k U.
 
 mod describe;
 mod sea;
@@ -65,7 +71,7 @@ use crate::fluid::flume::Flume;
 use crate::fluid::stokes5::{Stokes5, Stokes5Error};
 use crate::fluid::stream_function::{self, MeanCurrent, StreamFunction};
 use crate::fluid::wavemaker::{Paddle, PaddleKind};
-use crate::fluid::waves::{miche_limit, Cnoidal, Regular, RelaxationZone, Wave};
+use crate::fluid::waves::{miche_limit, wavenumber, Cnoidal, Regular, RelaxationZone, Wave};
 use crate::fluid::{Boundaries, Boundary};
 use crate::math::Vec3;
 use crate::scenario::checks::positive;
@@ -106,7 +112,7 @@ pub struct WavesSection {
     /// The ramp-up from rest [periods] (default 2).
     pub ramp_periods: Option<f64>,
     // The keys below came later: none is hashed when absent (`run::fingerprint`).
-    /// A uniform current U [m s⁻¹] along x (regular waves; `check` only, module docs).
+    /// A uniform current U [m s⁻¹] along x (regular waves; module docs).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub current: Option<f64>,
     /// The solitary wave's crest at t = 0 [m] (x).
@@ -232,9 +238,10 @@ pub struct Waves {
     pub wavelength: f64,
     /// Zone lengths [wavelengths].
     pub zones: (f64, f64),
-    /// The current U [m s⁻¹], if given: the flow does not carry it yet, and `riprap run`
-    /// refuses the scenario (module docs).
+    /// The current U [m s⁻¹], if given (module docs).
     pub current: Option<f64>,
+    /// The linear wavelength of the same period without the current [m] (with a current).
+    pub still_water_wavelength: Option<f64>,
     /// The solitary wave's crest at t = 0 [m] and when it passes the generating zone's inner
     /// edge [s].
     pub crest: Option<(f64, f64)>,
@@ -416,6 +423,9 @@ pub(super) fn waves(
             "a wavemaker makes the waves: there is no generating zone to size",
         ));
     }
+    if let Some(u) = w.current {
+        current_fits(src, w, bcs, u)?;
+    }
     let generation = match w.wavemaker {
         Some(_) => 0.0,
         None => w.generation_length.unwrap_or(1.0),
@@ -525,6 +535,7 @@ pub(super) fn waves(
         } else {
             ramp * inc.period
         },
+        current: w.current.unwrap_or(0.0),
     };
     Ok(Some(Waves {
         flume,
@@ -535,11 +546,69 @@ pub(super) fn waves(
         wavelength,
         zones: (generation, absorption),
         current: w.current,
+        still_water_wavelength: w.current.map(|_| {
+            let omega = 2.0 * std::f64::consts::PI / inc.period;
+            2.0 * std::f64::consts::PI / wavenumber(omega, h, g)
+        }),
         crest,
         starts_in_flume,
         sea: inc.sea,
         paddle,
     }))
+}
+
+/// Refuses a current `u` [m s⁻¹] the flume cannot carry (module docs): with a wavemaker,
+/// without an absorbing zone, or on x faces other than walls.
+fn current_fits(
+    src: &Source,
+    w: &WavesSection,
+    bcs: &Boundaries,
+    u: f64,
+) -> Result<(), ScenarioError> {
+    if w.wavemaker.is_some() {
+        return Err(src.invalid(
+            "fluid.waves.current",
+            format!(
+                "a current of {u} m/s needs the generating zone: a wavemaker paddle is a wall \
+                 that moves, and lets no water through the flume's end (give \
+                 generation_length instead of wavemaker)"
+            ),
+        ));
+    }
+    if w.absorption_length == Some(0.0) {
+        return Err(src.invalid(
+            "fluid.waves.absorption_length",
+            "a flume on a current needs an absorbing zone: it holds the still water level \
+             where the current leaves",
+        ));
+    }
+    for (side, name) in ["x_min", "x_max"].iter().enumerate() {
+        if !matches!(
+            bcs.faces[0][side],
+            Boundary::Wall { .. } | Boundary::FreeSlip
+        ) {
+            return Err(src.invalid(
+                &format!("fluid.boundaries.{name}"),
+                "a flume on a current lets its water in and out through its ends, which the \
+                 current makes (U below the still water level): give them as walls \
+                 (\"free_slip\" or \"wall\")",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The flow's boundaries with the current of `flume` through both x faces (walls in the
+/// scenario, checked by [`current_fits`]).
+pub(super) fn with_current(
+    src: &Source,
+    mut bcs: Boundaries,
+    flume: &Flume,
+) -> Result<Boundaries, ScenarioError> {
+    bcs.faces[0] = [Boundary::Current(flume.current_profile()); 2];
+    bcs.validate()
+        .map_err(|e| src.invalid("fluid.waves.current", e))?;
+    Ok(bcs)
 }
 
 /// The flow's boundaries with the wavemaker `paddle` at x = min, which must be a wall (or free
@@ -608,11 +677,19 @@ fn breaking(
 /// A regular wave: linear, Stokes (second or fifth order), cnoidal or stream-function, on
 /// its current if one is given.
 fn regular(src: &Source, w: &WavesSection, h: f64, g: f64) -> Result<Incoming, ScenarioError> {
-    let height = positive(
-        src,
-        "fluid.waves.height",
-        needed(src, w, "height", w.height, "the wave height [m]")?,
-    )?;
+    let height = match needed(src, w, "height", w.height, "the wave height [m]")? {
+        // A current alone, no waves.
+        z if z == 0.0 && w.current.is_some() => {
+            if w.theory != Theory::Linear {
+                return Err(src.invalid(
+                    "fluid.waves.height",
+                    "0 (a current alone, no waves) is for theory = \"linear\"",
+                ));
+            }
+            0.0
+        }
+        z => positive(src, "fluid.waves.height", z)?,
+    };
     let period = positive(
         src,
         "fluid.waves.period",

@@ -80,15 +80,27 @@ impl Waves {
                 }
                 _ => " (Doppler-shifted: ω = k U + √(g k tanh kh))",
             };
+            let way = if u >= 0.0 {
+                "with the waves"
+            } else {
+                "against the waves"
+            };
+            let (omega, k) = (2.0 * PI / self.period, 2.0 * PI / l);
+            let sigma = omega - k * u;
             let _ = writeln!(
                 s,
-                "waves: on a current U = {u} m/s{c_e}: L and kh above are the wave's on it"
+                "waves: on a current U = {u} m/s along x ({way}){c_e}: L = {l:.4} m in the \
+                 flume's frame ({:.4} m on still water, linear), intrinsic frequency σ = ω − k U \
+                 = {sigma:.4} rad/s, intrinsic period 2π/σ = {:.4} s (T = {} s at a fixed point)",
+                self.still_water_wavelength.unwrap_or(f64::NAN),
+                2.0 * PI / sigma,
+                self.period
             );
             let _ = writeln!(
                 s,
-                "warning: `riprap run` refuses this flume: the flow does not yet carry a \
-                 current (its ends are walls, and the zones relax towards the wave and towards \
-                 rest, not towards U)"
+                "waves: the current runs through the flume: both x ends carry U below the still \
+                 water level, the zones relax towards the wave on U and still water moving at U, \
+                 and the water starts moving at U (fluid::flume)"
             );
         }
         if let (Some((x0, t)), true) = (self.crest, self.theory == Theory::Solitary) {
