@@ -104,6 +104,9 @@ pub struct Block {
     pub dt_range: (f64, f64),
     /// The fluid step's split over the block.
     pub times: StepTimes,
+    /// CPU time of the process over the block (user and system, all threads) [s], where
+    /// /proc gives it.
+    pub cpu: Option<f64>,
 }
 
 impl Block {
@@ -143,6 +146,20 @@ pub struct FlumeBench {
     pub field_bytes: f64,
     /// Peak resident memory of the process (VmHWM) [bytes], where /proc gives it.
     pub peak_memory: Option<u64>,
+    /// The machine's load averages over 1, 5 and 15 minutes at the end, where /proc gives
+    /// them.
+    pub load: Option<String>,
+}
+
+/// CPU time of this process so far, user and system, all threads [s]: fields 14 and 15 of
+/// /proc/self/stat, in Linux's USER_HZ = 100 ticks per second.
+pub fn cpu_seconds() -> Option<f64> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    // The fields after the command name (which may hold spaces), from field 3 on.
+    let rest = &stat[stat.rfind(')')? + 1..];
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    let ticks = f.get(11)?.parse::<f64>().ok()? + f.get(12)?.parse::<f64>().ok()?;
+    Some(ticks / 100.0)
 }
 
 impl FlumeBench {
@@ -263,12 +280,13 @@ pub fn run_flume_bench(args: &FlumeBenchArgs) -> anyhow::Result<FlumeBench> {
         let before = sim.fluid.as_ref().expect("a fluid").step_times();
         let t0 = sim.time;
         let mut dt_range = (f64::INFINITY, 0.0f64);
-        let clock = Instant::now();
+        let (clock, cpu0) = (Instant::now(), cpu_seconds());
         for _ in 0..args.steps {
             let dt = step(&mut sim)?;
             dt_range = (dt_range.0.min(dt), dt_range.1.max(dt));
         }
         let wall = clock.elapsed().as_secs_f64();
+        let cpu = cpu_seconds().zip(cpu0).map(|(b, a)| b - a);
         let after = sim.fluid.as_ref().expect("a fluid").step_times();
         blocks.push(Block {
             steps: args.steps,
@@ -276,6 +294,7 @@ pub fn run_flume_bench(args: &FlumeBenchArgs) -> anyhow::Result<FlumeBench> {
             simulated: sim.time - t0,
             dt_range,
             times: after.since(&before),
+            cpu,
         });
     }
     Ok(FlumeBench {
@@ -290,6 +309,9 @@ pub fn run_flume_bench(args: &FlumeBenchArgs) -> anyhow::Result<FlumeBench> {
         blocks,
         field_bytes,
         peak_memory: super::peak_memory(),
+        load: std::fs::read_to_string("/proc/loadavg")
+            .ok()
+            .map(|l| l.split_whitespace().take(3).collect::<Vec<_>>().join(" ")),
     })
 }
 
@@ -335,17 +357,15 @@ pub fn describe(b: &FlumeBench) -> String {
     let timed: usize = b.blocks.iter().map(|k| k.steps).sum();
     let minutes = b.wall_per_period() / 60.0;
     s.push_str(&format!(
-        "wall time per step: {:.4} s ({} of {} block(s)); time step Δt = {:.4e} s: {:.1} steps \
-         per period\n\
+        "wall time per step: {:.4} s ({}); time step Δt = {:.4e} s: {:.1} steps per period\n\
          wall time per wave period: {:.1} s = {:.2} min, extrapolated from {} timed steps \
          (wall per step × T / Δt)\n",
         m.per_step(),
         if b.blocks.len() > 1 {
-            "the median"
+            format!("the median block of {}", b.blocks.len())
         } else {
-            "the"
+            "one block".to_string()
         },
-        b.blocks.len(),
         m.mean_dt(),
         b.steps_per_period(),
         b.wall_per_period(),
@@ -398,6 +418,22 @@ pub fn describe(b: &FlumeBench) -> String {
         b.peak_memory
             .map_or("unknown".into(), |m| format!("{:.0} MB", m as f64 / 1e6)),
     ));
+    let cpu: Option<f64> = b.blocks.iter().map(|k| k.cpu).sum();
+    if let Some(cpu) = cpu {
+        let share = cpu / (wall * b.threads as f64);
+        s.push_str(&format!(
+            "CPU time: {:.4} s per step, {:.0} % of {} thread(s) × the wall time (load average \
+             {}); at that CPU time on {} idle core(s), with perfect parallel efficiency: {:.1} \
+             s = {:.2} min per period (an estimate, not a measurement)\n",
+            cpu / timed as f64,
+            100.0 * share,
+            b.threads,
+            b.load.as_deref().unwrap_or("unknown"),
+            b.threads,
+            b.wall_per_period() * share,
+            b.wall_per_period() * share / 60.0,
+        ));
+    }
     if b.cell_count() >= 1_500_000 {
         let verdict = if minutes < 5.0 { "met" } else { "missed" };
         s.push_str(&format!(
