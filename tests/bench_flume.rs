@@ -35,7 +35,7 @@ fn a_tenth_of_the_flume_runs_and_reports_its_split() {
         assert!(k.dt_range.0 > 0.0 && k.dt_range.0 <= k.mean_dt() && k.mean_dt() <= k.dt_range.1);
     }
     let m = b.median_block();
-    let expected = m.per_step() * 1.5 / m.mean_dt();
+    let expected = m.per_step() * 1.5 / b.mean_dt();
     assert!((b.wall_per_period() - expected).abs() <= 1e-12 * expected);
     let report = describe(&b);
     assert!(

@@ -163,7 +163,7 @@ impl Flume {
                 let prev = &prev[start..start + row.len()];
                 for ((u, &(w, goal)), &q) in row.iter_mut().zip(goals).zip(prev) {
                     if w > 0.0 {
-                        *u = *u + w * (goal - q);
+                        *u += w * (goal - q);
                     }
                 }
             });
