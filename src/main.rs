@@ -114,6 +114,10 @@ enum BenchCase {
     /// A coupled run (default: the sheet flow of validation case 5): wall time per simulated
     /// second and per oscillation period, split into fluid, pressure, coupling and DEM.
     Coupled(riprap::bench::coupled::CoupledBenchArgs),
+    /// The 3D wave flume of issue 28 (bench/flume/flume3d.toml; default at half resolution,
+    /// --scale 1 for its 1.6 million cells): wall time per wave period, split into momentum,
+    /// interface, pressure and relaxation zones.
+    Flume(riprap::bench::flume::FlumeBenchArgs),
 }
 
 /// `riprap bench fluid --dam-break N`: the validation case `dam_break` at a/`n`, run as it is
@@ -496,6 +500,9 @@ fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
         Command::Bench {
             case: BenchCase::Coupled(args),
         } => riprap::bench::coupled::run_cli(&args).map(|()| None),
+        Command::Bench {
+            case: BenchCase::Flume(args),
+        } => riprap::bench::flume::run_cli(&args).map(|()| None),
         Command::Validate {
             quick,
             output,

@@ -23,6 +23,13 @@
 //! them the volume is kept as before. Every face and cell is written by one task: the bits do
 //! not depend on the number of threads.
 //!
+//! The targets depend on x, z and t only, not on y: each step computes them once per (x, z)
+//! of the faces and once per column of cells ([`ZoneTargets`], a workspace the size of an
+//! x-z plane allocated with the flume), then blends every row across the flume with them. The
+//! wave's Fourier series (stream-function and fifth-order waves: tens of terms) is so summed
+//! n_y times less often than face by face, with the same arguments and operations: the same
+//! bits.
+//!
 //! # On a current
 //!
 //! A flume on a uniform current U [m s⁻¹] along x (`current` ≠ 0; U < 0 against the waves)
@@ -53,7 +60,7 @@
 //! mixture velocity: put the still level on a cell face to keep the profile sharp.
 
 use super::boundary::CurrentProfile;
-use super::grid::{update_region, IndexBox, StaggeredGrid};
+use super::grid::{for_each_chunk, update_rows, IndexBox, StaggeredGrid};
 use super::waves::{RelaxationZone, Wave};
 use crate::math::Vec3;
 
@@ -73,6 +80,27 @@ pub struct Flume {
     /// The uniform current U [m s⁻¹] along x the water carries (0: none; module docs). The
     /// wave must be the one on this current (its velocity holds U).
     pub current: f64,
+}
+
+/// The zones' targets of one step on an x-z plane (module docs): for the faces of each
+/// component (w, u_target) at padded (i, k), index k n_x' + i (n_x' the padded row); for the
+/// cells of each column i, w and η at the four points of [`Flume::relax_water_fraction`]'s
+/// mean. w = 0 outside the zones.
+#[derive(Clone, Debug, Default)]
+pub struct ZoneTargets {
+    faces: [Vec<(f64, f64)>; 3],
+    columns: Vec<(f64, [f64; 4])>,
+}
+
+impl ZoneTargets {
+    /// The workspace for `grid`.
+    pub fn new(grid: &StaggeredGrid) -> ZoneTargets {
+        let p = grid.padded();
+        ZoneTargets {
+            faces: std::array::from_fn(|_| vec![(0.0, 0.0); p[0] * p[2]]),
+            columns: vec![(0.0, [0.0; 4]); p[0]],
+        }
+    }
 }
 
 /// What a zone blends towards at one point.
@@ -124,9 +152,41 @@ impl Flume {
         }
     }
 
+    /// The weight and target of component `a` on a face at `p` of a grid of cell height `dz`
+    /// [m] at `t` [s]: (w, u_target); w = 0 outside the zones.
+    fn face_target(&self, a: usize, p: Vec3, dz: f64, t: f64) -> (f64, f64) {
+        let Some((w, target)) = self.zone(p.x) else {
+            return (0.0, 0.0);
+        };
+        let goal = match target {
+            Target::Still if a == 0 && self.current != 0.0 => self.current_profile().at(p.z, dz),
+            Target::Still => 0.0,
+            Target::Wave if a == 1 => 0.0,
+            Target::Wave => {
+                let eta = self.surface(&target, p.x, t);
+                let wet = ((eta - (p.z - 0.5 * dz)) / dz).clamp(0.0, 1.0);
+                if wet == 0.0 {
+                    0.0
+                } else {
+                    let z = p.z.min(eta) - self.still_water_level;
+                    let (ux, uz) = self.wave.velocity(p.x, z, t);
+                    let r = self.ramp(t);
+                    if a == 0 && self.current != 0.0 {
+                        // The current at once, the wave's part ramped.
+                        let u = self.current;
+                        wet * (u + r * (ux - u))
+                    } else {
+                        wet * r * if a == 0 { ux } else { uz }
+                    }
+                }
+            }
+        };
+        (w, goal)
+    }
+
     /// Blends the velocity on the faces of `regions` towards the zones' targets at `t` [s]:
     /// u ← u + w (u_target − u_prev), `previous` the velocity before the step's increment
-    /// (module docs).
+    /// (module docs); `targets` is the workspace ([`ZoneTargets::new`] of `grid`).
     pub fn relax_velocity(
         &self,
         grid: &StaggeredGrid,
@@ -134,40 +194,32 @@ impl Flume {
         u: &mut [Vec<f64>; 3],
         previous: &[Vec<f64>; 3],
         t: f64,
+        targets: &mut ZoneTargets,
     ) {
         let dz = grid.spacing.z;
+        let p = grid.padded();
         for (a, ua) in u.iter_mut().enumerate() {
-            update_region(grid, &regions[a], ua, |c, old| {
-                let p = grid.position(c, Some(a));
-                let Some((w, target)) = self.zone(p.x) else {
-                    return old;
-                };
-                let goal = match target {
-                    Target::Still if a == 0 && self.current != 0.0 => {
-                        self.current_profile().at(p.z, dz)
+            let region = &regions[a];
+            let (i0, j0) = (region[0].start, region[1].start);
+            // The targets on the x-z plane, once for every row across.
+            for_each_chunk(&mut targets.faces[a], p[0], |k, line| {
+                if region[2].contains(&k) {
+                    for i in region[0].clone() {
+                        let at = grid.position(grid.index(i, j0, k), Some(a));
+                        line[i] = self.face_target(a, at, dz, t);
                     }
-                    Target::Still => 0.0,
-                    Target::Wave if a == 1 => 0.0,
-                    Target::Wave => {
-                        let eta = self.surface(&target, p.x, t);
-                        let wet = ((eta - (p.z - 0.5 * dz)) / dz).clamp(0.0, 1.0);
-                        if wet == 0.0 {
-                            0.0
-                        } else {
-                            let z = p.z.min(eta) - self.still_water_level;
-                            let (ux, uz) = self.wave.velocity(p.x, z, t);
-                            let r = self.ramp(t);
-                            if a == 0 && self.current != 0.0 {
-                                // The current at once, the wave's part ramped.
-                                let u = self.current;
-                                wet * (u + r * (ux - u))
-                            } else {
-                                wet * r * if a == 0 { ux } else { uz }
-                            }
-                        }
+                }
+            });
+            let (plane, prev) = (&targets.faces[a], &previous[a]);
+            update_rows(grid, region, ua, |start, row| {
+                let from = start / (p[0] * p[1]) * p[0] + i0;
+                let goals = &plane[from..from + row.len()];
+                let prev = &prev[start..start + row.len()];
+                for ((u, &(w, goal)), &q) in row.iter_mut().zip(goals).zip(prev) {
+                    if w > 0.0 {
+                        *u += w * (goal - q);
                     }
-                };
-                old + w * (goal - previous[a][c])
+                }
             });
         }
     }
@@ -188,24 +240,52 @@ impl Flume {
         Vec3::new(wet * r * u, 0.0, wet * r * w)
     }
 
-    /// Blends the water fraction of the interior cells towards the zones' targets at `t` [s].
-    pub fn relax_water_fraction(&self, grid: &StaggeredGrid, alpha: &mut [f64], t: f64) {
+    /// Blends the water fraction of the interior cells towards the zones' targets at `t` [s]:
+    /// α ← w α_target + (1 − w) α, α_target the mean over four points across the cell of the
+    /// part of it below η; `targets` is the workspace ([`ZoneTargets::new`] of `grid`).
+    pub fn relax_water_fraction(
+        &self,
+        grid: &StaggeredGrid,
+        alpha: &mut [f64],
+        t: f64,
+        targets: &mut ZoneTargets,
+    ) {
         let (dx, dz) = (grid.spacing.x, grid.spacing.z);
         let cells: IndexBox = std::array::from_fn(|a| grid.interior(a));
-        update_region(grid, &cells, alpha, |c, old| {
-            let p = grid.position(c, None);
-            let Some((w, target)) = self.zone(p.x) else {
-                return old;
-            };
-            let goal = (0..4)
-                .map(|q| {
-                    let x = p.x + ((q as f64 + 0.5) / 4.0 - 0.5) * dx;
-                    let eta = self.surface(&target, x, t);
-                    ((eta - (p.z - 0.5 * dz)) / dz).clamp(0.0, 1.0)
-                })
-                .sum::<f64>()
-                / 4.0;
-            w * goal + (1.0 - w) * old
+        let (i0, j0, k0) = (cells[0].start, cells[1].start, cells[2].start);
+        // w and η at the four points of each column, once for the whole column.
+        for_each_chunk(&mut targets.columns, 64, |m, chunk| {
+            for (n, column) in chunk.iter_mut().enumerate() {
+                let i = 64 * m + n;
+                if !cells[0].contains(&i) {
+                    continue;
+                }
+                let x = grid.position(grid.index(i, j0, k0), None).x;
+                *column = match self.zone(x) {
+                    None => (0.0, [0.0; 4]),
+                    Some((w, target)) => (
+                        w,
+                        std::array::from_fn(|q| {
+                            let x = x + ((q as f64 + 0.5) / 4.0 - 0.5) * dx;
+                            self.surface(&target, x, t)
+                        }),
+                    ),
+                };
+            }
+        });
+        let columns = &targets.columns;
+        update_rows(grid, &cells, alpha, |start, row| {
+            let z = grid.position(start, None).z;
+            for (old, &(w, eta)) in row.iter_mut().zip(&columns[i0..]) {
+                if w > 0.0 {
+                    let goal = eta
+                        .iter()
+                        .map(|&eta| ((eta - (z - 0.5 * dz)) / dz).clamp(0.0, 1.0))
+                        .sum::<f64>()
+                        / 4.0;
+                    *old = w * goal + (1.0 - w) * *old;
+                }
+            }
         });
     }
 }
@@ -249,7 +329,7 @@ mod tests {
         let f = flume();
         let mut alpha = grid.field();
         let t = 3.3;
-        f.relax_water_fraction(&grid, &mut alpha, t);
+        f.relax_water_fraction(&grid, &mut alpha, t, &mut ZoneTargets::new(&grid));
         let dx = grid.spacing.x;
         // w at the first column's centre x = Δx/2: ξ = 0.975.
         let w = f.generation.unwrap().weight(0.5 * dx);
@@ -295,7 +375,14 @@ mod tests {
         let mut u = [grid.field(), grid.field(), grid.field()];
         let rest = u.clone();
         let t = 3.0; // ω t = 6π: the crest near x = 0
-        f.relax_velocity(&grid, &regions, &mut u, &rest, t);
+        f.relax_velocity(
+            &grid,
+            &regions,
+            &mut u,
+            &rest,
+            t,
+            &mut ZoneTargets::new(&grid),
+        );
         // An x-face 0.1 m below the still surface in the first column: w u_wave.
         let c = grid.cell(1, 0, 15);
         let p = grid.position(c, Some(0));

@@ -68,6 +68,7 @@ pub mod stokes5;
 pub mod stream_function;
 pub mod tendency;
 pub mod timestep;
+pub mod timing;
 pub mod wavemaker;
 pub mod waves;
 

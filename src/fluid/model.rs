@@ -127,9 +127,10 @@ pub struct Fluid {
     /// pⁿ⁺¹ being computed [Pa].
     pub(super) next_pressure: Vec<f64>,
     pub(super) projection: Projection,
-    /// Wall-clock time spent in the projection so far [s]: a measurement for `riprap bench`,
-    /// not part of the state (not saved, not compared).
-    pub(super) pressure_seconds: f64,
+    /// Wall-clock time per part of the steps so far, the projection's included, and its CG
+    /// iterations: a measurement for `riprap bench`, not part of the state (not saved, not
+    /// compared).
+    pub(super) times: super::timing::StepTimes,
     /// Whether the body force of [51] holds the excess weight (ρ̄ − ρ_w) g of the mixture
     /// ([`Fluid::set_mixture_weight`]).
     pub(super) mixture_weight: bool,
@@ -141,6 +142,8 @@ pub struct Fluid {
     pub(super) flume: Option<super::flume::Flume>,
     /// uⁿ, kept in a flume for the zones' blend of u* (empty otherwise).
     pub(super) flume_velocity: [Vec<f64>; 3],
+    /// The zones' targets of a step on an x-z plane, in a flume (`flume::ZoneTargets`).
+    pub(super) flume_targets: super::flume::ZoneTargets,
     /// ρ_f on the faces of each component [kg m⁻³], with air ([`super::phases::face_density`]),
     /// derived from α at the start of each step.
     pub(super) face_density: [Vec<f64>; 3],
@@ -255,7 +258,7 @@ impl Fluid {
             tendency: zero3(),
             next_pressure: grid.field(),
             projection: Projection::new(&grid, &boundaries),
-            pressure_seconds: 0.0,
+            times: Default::default(),
             mixture_weight: true,
             interface: parameters
                 .air
@@ -267,6 +270,7 @@ impl Fluid {
             },
             flume: None,
             flume_velocity: Default::default(),
+            flume_targets: Default::default(),
             face_density: if parameters.air.is_some() {
                 zero3()
             } else {
@@ -352,6 +356,7 @@ impl Fluid {
         self.flume = Some(flume);
         let g = self.grid;
         self.flume_velocity = [g.field(), g.field(), g.field()];
+        self.flume_targets = super::flume::ZoneTargets::new(&g);
         Ok(())
     }
 
@@ -470,7 +475,13 @@ impl Fluid {
 
     /// Wall-clock time spent in the pressure projection since the fluid was made [s].
     pub fn pressure_seconds(&self) -> f64 {
-        self.pressure_seconds
+        self.times.pressure
+    }
+
+    /// Wall-clock time per part of the steps since the fluid was made, with the exact
+    /// projection's CG iterations (`timing`).
+    pub fn step_times(&self) -> super::timing::StepTimes {
+        self.times
     }
 
     /// The grid.

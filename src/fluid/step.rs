@@ -34,6 +34,7 @@ use super::porous::FaceDensity;
 use super::pressure::{Passes, Preconditioner, PressureFields};
 use super::sgs::eddy_viscosity;
 use super::tendency::{tendency_row, Inertia};
+use super::timing::lap;
 use crate::math::Vec3;
 
 /// Most passes of the variable-density projection on the first step: the error shrinks by
@@ -64,6 +65,9 @@ impl Fluid {
         let rho_w = par.density;
         let mu = par.dynamic_viscosity();
         let state = &mut self.state;
+        // The split of the wall time (`timing`): laps between the stages, outside their loops.
+        let times = &mut self.times;
+        let clock = std::time::Instant::now();
 
         // The coupling may have changed ρ̄ in the interior.
         fill_scalar_ghosts(&grid, &bcs, &mut state.mixture_density);
@@ -133,12 +137,15 @@ impl Fluid {
             porosity.measure(&st, [&v[0], &v[1], &v[2]]);
         }
 
+        let clock = lap(clock, &mut times.momentum);
+
         // A flume keeps uⁿ for its zones' blend.
         if self.flume.is_some() {
             for (keep, u) in self.flume_velocity.iter_mut().zip(&state.velocity) {
                 keep.copy_from_slice(u);
             }
         }
+        let clock = lap(clock, &mut times.relaxation);
 
         // u* = uⁿ + Δt [AB2(H) + B].
         let drive = par
@@ -223,13 +230,17 @@ impl Fluid {
             porosity.resist(&st, &mut state.velocity, &state.pressure, density, dt);
         }
 
+        let clock = lap(clock, &mut times.momentum);
+
         // A flume's zones: u* += w (u_target − uⁿ), the blend of uⁿ towards the target with the
         // step's own increment kept (it holds the weight the pressure balances), so that the
         // projection makes the blended field divergence-free.
         if let Some(flume) = &self.flume {
-            let prev = &self.flume_velocity;
-            flume.relax_velocity(&grid, &self.regions, &mut state.velocity, prev, t + dt);
+            let (prev, work) = (&self.flume_velocity, &mut self.flume_targets);
+            let regions = &self.regions;
+            flume.relax_velocity(&grid, regions, &mut state.velocity, prev, t + dt, work);
         }
+        let clock = lap(clock, &mut times.relaxation);
 
         // Fixed obstacles: their faces closed, to the projection too (`obstacle`).
         if let Some(obstacles) = &self.obstacles {
@@ -259,7 +270,7 @@ impl Fluid {
         };
         fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
         advance_outflow(&grid, &bcs, &mut state.velocity, dt);
-        let clock = std::time::Instant::now();
+        let clock = lap(clock, &mut times.other);
         let fields = PressureFields {
             current: &state.pressure,
             previous: &state.previous_pressure,
@@ -283,12 +294,15 @@ impl Fluid {
                 r,
             );
             self.last_solve = solve;
+            times.solves += 1;
+            times.cg_iterations += solve.iterations as u64;
         } else {
             self.projection
                 .project(&grid, &bcs, &self.projected, u, fields, rho, dt, r, passes);
         }
-        self.pressure_seconds += clock.elapsed().as_secs_f64();
+        let clock = lap(clock, &mut times.pressure);
         fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
+        let mut clock = lap(clock, &mut times.other);
 
         // With air: α carried by uⁿ⁺¹, then ρ̄ from it for the next step.
         if let (Some(air), Some(interface)) = (&par.air, &mut self.interface) {
@@ -296,11 +310,15 @@ impl Fluid {
             let c = interface.advect(alpha, &state.velocity, dt, state.steps);
             self.clipped.above += c.above;
             self.clipped.below += c.below;
+            clock = lap(clock, &mut times.interface);
             if let Some(flume) = &self.flume {
-                flume.relax_water_fraction(&grid, alpha, t + dt);
+                let work = &mut self.flume_targets;
+                flume.relax_water_fraction(&grid, alpha, t + dt, work);
+                clock = lap(clock, &mut times.relaxation);
             }
             fill_scalar_ghosts(&grid, &bcs, alpha);
             set_density(alpha, rho_w, air, &mut state.mixture_density);
+            clock = lap(clock, &mut times.interface);
         }
 
         // Rotate: pⁿ⁻¹ ← pⁿ ← pⁿ⁺¹, Hⁿ⁻¹ ← Hⁿ. After the first step p⁰ is no pressure of the
@@ -314,6 +332,7 @@ impl Fluid {
         state.previous_dt = dt;
         state.time = t + dt;
         state.steps += 1;
+        lap(clock, &mut times.other);
     }
 
     /// Takes one step of the stable size of [`Fluid::stable_time_step`] towards `t_end` [s]
@@ -321,7 +340,9 @@ impl Fluid {
     /// remain they are split evenly (no sliver of a step, which would make the Adams-Bashforth
     /// step ratio tiny). Panics if `t_end` is not after the current time.
     pub fn step_adaptive(&mut self, t_end: f64) -> f64 {
+        let clock = std::time::Instant::now();
         let stable = self.stable_time_step();
+        lap(clock, &mut self.times.time_step);
         let remaining = t_end - self.state.time;
         let dt = if remaining <= stable {
             remaining
