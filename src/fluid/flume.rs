@@ -410,7 +410,14 @@ mod tests {
             std::array::from_fn(|_| std::array::from_fn(|d| 0..grid.padded()[d]));
         let mut v = [grid.field(), grid.field(), grid.field()];
         let rest = v.clone();
-        f.relax_velocity(&grid, &regions, &mut v, &rest, 0.0);
+        f.relax_velocity(
+            &grid,
+            &regions,
+            &mut v,
+            &rest,
+            0.0,
+            &mut ZoneTargets::new(&grid),
+        );
         for i in [1, 80] {
             let c = grid.cell(i, 0, 10);
             let w = f.zone(grid.position(c, Some(0)).x).map(|(w, _)| w).unwrap();
