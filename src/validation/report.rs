@@ -152,8 +152,8 @@ pub fn run_validation_cases(
     if run("standing_wave") {
         all &= super::standing_wave::report::section(out, quick, &mut md)?;
     }
-    // An hour at its full level, which has not yet been re-run with the momentum advection of
-    // 2026-12-06 (src/validation/regular_waves/README.md): only when named.
+    // Three quarters of an hour at its full level (src/validation/regular_waves/README.md):
+    // only when named.
     if only == Some("regular_waves") {
         all &= super::regular_waves::report::section(out, quick, &mut md)?;
     }
