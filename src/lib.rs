@@ -37,6 +37,7 @@
 
 #![warn(missing_docs)]
 
+pub mod armour;
 pub mod bench;
 pub mod coupling;
 pub mod debris;

@@ -1,0 +1,20 @@
+//! Armour layers under waves (issue 29): the damage of rock and concrete armour on a
+//! breakwater slope, and the design formulas a coastal engineer sets beside a simulated damage
+//! (required size for a design wave, expected damage S or N_od after N waves).
+//!
+//! The formulas are empirical fits to model tests; each function cites its source and
+//! [`validity`] says where the tests ended. Only the deep-water forms are here (h/H_s ≥ 3):
+//! the shallow-foreshore form of Van Gent et al. (2003) is out of scope.
+//!
+//! * [`formulas`]: Hudson (1959, SPM 1984 form) and Van der Meer (1988) for rock, each in both
+//!   directions (wave height → size or damage, and back)
+//! * [`concrete`]: Van der Meer (1988) for concrete cubes and tetrapods, both directions
+//! * [`coefficients`]: Hudson's K_D table and the damage levels S of Van der Meer / the Rock
+//!   Manual, with their sources
+//! * [`validity`]: the validity ranges of each formula as data, and the list of the ranges an
+//!   input violates
+
+pub mod coefficients;
+pub mod concrete;
+pub mod formulas;
+pub mod validity;
