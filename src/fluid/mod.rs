@@ -60,6 +60,7 @@ pub mod plic;
 pub mod porous;
 pub mod pressure;
 pub mod reflection;
+pub mod sea_state;
 pub mod sgs;
 pub mod solids;
 pub mod solitary;
