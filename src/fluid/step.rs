@@ -290,10 +290,16 @@ impl Fluid {
         self.pressure_seconds += clock.elapsed().as_secs_f64();
         fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
 
-        // With air: α carried by uⁿ⁺¹, then ρ̄ from it for the next step.
+        // With air: α carried by uⁿ⁺¹ (with solids, less their share: `solids`), then ρ̄ from
+        // it for the next step.
         if let (Some(air), Some(interface)) = (&par.air, &mut self.interface) {
             let alpha = &mut state.water_fraction;
-            let c = interface.advect(alpha, &state.velocity, dt, state.steps);
+            // With solids, the fluid's own flux carries α (`solids`).
+            let u = match &mut self.solids {
+                Some(solids) => solids.fluid_velocity(&grid, &self.projected, &state.velocity),
+                None => &state.velocity,
+            };
+            let c = interface.advect(alpha, u, dt, state.steps);
             self.clipped.above += c.above;
             self.clipped.below += c.below;
             if let Some(flume) = &self.flume {
