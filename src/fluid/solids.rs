@@ -77,6 +77,9 @@ pub struct Solids {
     pub velocity: [Vec<f64>; 3],
     /// The velocity u_α that carries α (scratch of the step) [m s⁻¹].
     carrier: [Vec<f64>; 3],
+    /// The fluid's own face densities ρ_f(α) of the step, before [`Solids::blend`] [kg m⁻³]:
+    /// the weights of the transported velocity in the momentum advection (module docs).
+    pub(super) fluid_density: [Vec<f64>; 3],
     /// The extension's two buffers and known-masks.
     next: Vec<f64>,
     known: Vec<u8>,
@@ -93,6 +96,7 @@ impl Solids {
             weight: std::array::from_fn(|_| grid.field()),
             velocity: std::array::from_fn(|_| grid.field()),
             carrier: std::array::from_fn(|_| grid.field()),
+            fluid_density: std::array::from_fn(|_| grid.field()),
             next: grid.field(),
             known: vec![0; grid.len()],
             known_next: vec![0; grid.len()],
@@ -209,15 +213,23 @@ impl Solids {
     /// density and replaces them by the mixture's ρ̄_f (module docs).
     pub fn blend(&mut self, grid: &StaggeredGrid, rho_w: f64, face_density: &mut [Vec<f64>; 3]) {
         let (phi, s) = (&self.fraction, &self.density);
-        for (a, (rho, w)) in face_density.iter_mut().zip(&mut self.weight).enumerate() {
+        let fluid = &mut self.fluid_density;
+        for (a, ((rho, w), f)) in face_density
+            .iter_mut()
+            .zip(&mut self.weight)
+            .zip(fluid)
+            .enumerate()
+        {
             let sa = grid.strides()[a];
             rho.par_iter_mut()
                 .zip(w.par_iter_mut())
+                .zip(f.par_iter_mut())
                 .enumerate()
-                .for_each(|(c, (rho, w))| {
+                .for_each(|(c, ((rho, w), f))| {
                     let m = c.saturating_sub(sa);
                     let (phi_f, s_f) = (0.5 * (phi[c] + phi[m]), 0.5 * (s[c] + s[m]));
                     *w = *rho - rho_w;
+                    *f = *rho;
                     *rho = (1.0 - phi_f) * *rho + s_f;
                 });
         }

@@ -117,9 +117,13 @@ impl Fluid {
                 None => (&state.eddy_viscosity[..], par.smagorinsky.is_some(), mu),
             };
             for (a, h) in self.tendency.iter_mut().enumerate() {
-                let inertia = match par.air {
-                    Some(_) => Inertia::Faces(&self.face_density[a]),
-                    None => Inertia::Cells(rho),
+                let inertia = match (par.air, &self.solids) {
+                    (Some(_), Some(solids)) => Inertia::Mixture {
+                        inertia: &self.face_density[a],
+                        fluid: &solids.fluid_density[a],
+                    },
+                    (Some(_), None) => Inertia::Faces(&self.face_density[a]),
+                    (None, _) => Inertia::Cells(rho),
                 };
                 update_rows(&grid, &self.regions[a], h, |start, row| {
                     tendency_row(&st, a, sgs, u, mu_t, inertia, mu, start, row);
