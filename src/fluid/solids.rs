@@ -12,7 +12,8 @@
 //! ```
 //!
 //! ρ_f(α) the face density of the fluid alone ([`super::phases::face_density`]). The inertia
-//! is the mixture's, as without air; the weight is that of the *fluid* phases on the whole
+//! is the mixture's, as without air (the momentum advection's weights stay ρ_f(α):
+//! `super::advection`); the weight is that of the *fluid* phases on the whole
 //! face, solid part included, and never the solid's own: the DEM carries the solid's exact
 //! weight and the coupling its buoyancy −ρ_w V g, and over the solid the weight of the
 //! fluid it displaces makes p̄ there the hydrostatic pressure of that fluid, so that [59]'s
