@@ -308,6 +308,7 @@ impl Coupling {
             // As the last correction left them: the next load reuses fractions and weights.
             self.accumulate_weights(spheres);
             self.set_mixture_density(fluid, spheres);
+            self.hand_solid_velocity(fluid, 0..self.grid.len());
         }
     }
 
@@ -750,6 +751,24 @@ impl Coupling {
                         let rho_f = 0.5 * (density[c] + density[c - sa]);
                         *f = rho_f * (*u - u_star) / dt_f; // [63]
                     }
+                });
+        }
+        if self.air.is_some() {
+            self.hand_solid_velocity(fluid, faces);
+        }
+    }
+
+    /// Under air: φ_f u_p of [62] on the faces `faces` (storage indices), the solids' share of
+    /// the face velocity, for the flow to take out of the velocity that carries α
+    /// (`fluid::solids`, "What carries α"). Zero where no solid covers a face.
+    fn hand_solid_velocity(&self, fluid: &mut Fluid, faces: std::ops::Range<usize>) {
+        let (solids, _, _) = fluid.solid_fields();
+        for (a, weight) in self.weight.iter().enumerate() {
+            solids.velocity[a][faces.clone()]
+                .par_iter_mut()
+                .zip(weight[faces.clone()].par_iter())
+                .for_each(|(v, &[w, wu])| {
+                    *v = if w > 0.0 { w.min(1.0) * (wu / w) } else { 0.0 };
                 });
         }
     }

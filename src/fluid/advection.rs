@@ -35,7 +35,10 @@
 //! surge pushed its momentum into the air ahead and slowed (front speed 1.12 and 1.15 against
 //! the measured 1.30; the plain self-transport gives 1.24 and 1.29, the standing wave's period
 //! is unchanged to 0.2 %: `validation/dam_break/README.md`). One fluid keeps the plain mean and
-//! its bits.
+//! its bits. With solids of the coupling the weights stay the *fluid's* ρ_f(α), not the
+//! mixture's ρ̄_f (`solids`): the flow does not carry the solids' mass, and weighted by it an
+//! air face beside one a stone barely touches took that face's velocity downwind, which blew up
+//! the air over a rubble mound's armour (`tests/coupling.rs`).
 //!
 //! Units: u [m s⁻¹], Δ [m], ρ [kg m⁻³], A_a [m s⁻²].
 

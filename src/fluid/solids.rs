@@ -12,7 +12,8 @@
 //! ```
 //!
 //! ρ_f(α) the face density of the fluid alone ([`super::phases::face_density`]). The inertia
-//! is the mixture's, as without air; the weight is that of the *fluid* phases on the whole
+//! is the mixture's, as without air (the momentum advection's weights stay ρ_f(α):
+//! `super::advection`); the weight is that of the *fluid* phases on the whole
 //! face, solid part included, and never the solid's own: the DEM carries the solid's exact
 //! weight and the coupling its buoyancy −ρ_w V g, and over the solid the weight of the
 //! fluid it displaces makes p̄ there the hydrostatic pressure of that fluid, so that [59]'s
@@ -31,10 +32,30 @@
 //! Archimedes' draft follows (validation case `floating_sphere`). Cut cells keep their α: the
 //! water there is real. The volume Σ α (1 − φ) ΔV of the fluid part is what the extension
 //! leaves unchanged up to the cells' solid share.
+//!
+//! **What carries α.** α is the water fraction of a cell's *fluid* part, so it moves with the
+//! fluid's volume flux through each face, not with the mixture's face velocity u, which [62]
+//! makes u = (1 − φ_f) u_fluid + φ_f u_p on the faces a solid covers:
+//!
+//! ```text
+//! u_α = u − φ_f u_p        φ_f u_p: the solids' velocity times their share of the face [m s⁻¹]
+//! ```
+//!
+//! φ_f u_p ([`Solids::velocity`]) is what the coupling's last correction [62] imposed (its
+//! face weights and solid velocities, `coupling`). u_α is zero inside a solid and u itself
+//! away from solids; its divergence in a cut cell, −∇·(φ u_p), is the solid entering or
+//! leaving the cell, which the dilatation term of the α transport (`interface`, Weymouth &
+//! Yue 2010) turns into a change of the fluid part's volume at its own α. Carried by u
+//! instead, the fluid in a cut cell travelled with the solid: a stone settling through the
+//! water line took the air of its cut cells under the water, where the buoyant pockets, held
+//! to the stone's velocity on its faces, burst out over it (a sphere pushed down through the
+//! surface at 0.05 m/s drove the air over it to 0.59 m/s, 0.13 m/s now: `tests/coupling.rs`;
+//! in the rubble-mound breakwater, stones sliding down at the water line stopped the run).
 
 use rayon::prelude::*;
 
 use super::boundary::fill_scalar_ghosts;
+use super::grid::{update_region, IndexBox};
 use super::{Boundaries, StaggeredGrid};
 
 /// The solid fraction from which a cell counts as filled, its α taken from the fluid around
@@ -52,6 +73,14 @@ pub struct Solids {
     pub planes: (usize, usize),
     /// The fluid's weight density ρ_f(α) − ρ_w on the faces of each component [kg m⁻³].
     pub(super) weight: [Vec<f64>; 3],
+    /// φ_f u_p on the faces of each component, from the coupling's last correction [62]
+    /// [m s⁻¹] (module docs, "What carries α"); zero where no solid covers a face.
+    pub velocity: [Vec<f64>; 3],
+    /// The velocity u_α that carries α (scratch of the step) [m s⁻¹].
+    carrier: [Vec<f64>; 3],
+    /// The fluid's own face densities ρ_f(α) of the step, before [`Solids::blend`] [kg m⁻³]:
+    /// the weights of the transported velocity in the momentum advection (module docs).
+    pub(super) fluid_density: [Vec<f64>; 3],
     /// The extension's two buffers and known-masks.
     next: Vec<f64>,
     known: Vec<u8>,
@@ -66,6 +95,9 @@ impl Solids {
             density: grid.field(),
             planes: (0, 0),
             weight: std::array::from_fn(|_| grid.field()),
+            velocity: std::array::from_fn(|_| grid.field()),
+            carrier: std::array::from_fn(|_| grid.field()),
+            fluid_density: std::array::from_fn(|_| grid.field()),
             next: grid.field(),
             known: vec![0; grid.len()],
             known_next: vec![0; grid.len()],
@@ -162,19 +194,43 @@ impl Solids {
         }
     }
 
+    /// The velocity that carries α: u_α = u − φ_f u_p on the faces of `faces` (those the
+    /// projection moves), u elsewhere [m s⁻¹] (module docs, "What carries α").
+    pub fn fluid_velocity(
+        &mut self,
+        grid: &StaggeredGrid,
+        faces: &[IndexBox; 3],
+        u: &[Vec<f64>; 3],
+    ) -> &[Vec<f64>; 3] {
+        for a in 0..3 {
+            let (out, solid) = (&mut self.carrier[a], &self.velocity[a]);
+            out.copy_from_slice(&u[a]);
+            update_region(grid, &faces[a], out, |c, v| v - solid[c]);
+        }
+        &self.carrier
+    }
+
     /// From the fluid's face densities ρ_f(α) in `face_density`: keeps ρ_f − ρ_w as the weight
     /// density and replaces them by the mixture's ρ̄_f (module docs).
     pub fn blend(&mut self, grid: &StaggeredGrid, rho_w: f64, face_density: &mut [Vec<f64>; 3]) {
         let (phi, s) = (&self.fraction, &self.density);
-        for (a, (rho, w)) in face_density.iter_mut().zip(&mut self.weight).enumerate() {
+        let fluid = &mut self.fluid_density;
+        for (a, ((rho, w), f)) in face_density
+            .iter_mut()
+            .zip(&mut self.weight)
+            .zip(fluid)
+            .enumerate()
+        {
             let sa = grid.strides()[a];
             rho.par_iter_mut()
                 .zip(w.par_iter_mut())
+                .zip(f.par_iter_mut())
                 .enumerate()
-                .for_each(|(c, (rho, w))| {
+                .for_each(|(c, ((rho, w), f))| {
                     let m = c.saturating_sub(sa);
                     let (phi_f, s_f) = (0.5 * (phi[c] + phi[m]), 0.5 * (s[c] + s[m]));
                     *w = *rho - rho_w;
+                    *f = *rho;
                     *rho = (1.0 - phi_f) * *rho + s_f;
                 });
         }

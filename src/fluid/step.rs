@@ -121,9 +121,13 @@ impl Fluid {
                 None => (&state.eddy_viscosity[..], par.smagorinsky.is_some(), mu),
             };
             for (a, h) in self.tendency.iter_mut().enumerate() {
-                let inertia = match par.air {
-                    Some(_) => Inertia::Faces(&self.face_density[a]),
-                    None => Inertia::Cells(rho),
+                let inertia = match (par.air, &self.solids) {
+                    (Some(_), Some(solids)) => Inertia::Mixture {
+                        inertia: &self.face_density[a],
+                        fluid: &solids.fluid_density[a],
+                    },
+                    (Some(_), None) => Inertia::Faces(&self.face_density[a]),
+                    (None, _) => Inertia::Cells(rho),
                 };
                 update_rows(&grid, &self.regions[a], h, |start, row| {
                     tendency_row(&st, a, sgs, u, mu_t, inertia, mu, start, row);
@@ -304,10 +308,16 @@ impl Fluid {
         fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
         let mut clock = lap(clock, &mut times.other);
 
-        // With air: α carried by uⁿ⁺¹, then ρ̄ from it for the next step.
+        // With air: α carried by uⁿ⁺¹ (with solids, less their share: `solids`), then ρ̄ from
+        // it for the next step.
         if let (Some(air), Some(interface)) = (&par.air, &mut self.interface) {
             let alpha = &mut state.water_fraction;
-            let c = interface.advect(alpha, &state.velocity, dt, state.steps);
+            // With solids, the fluid's own flux carries α (`solids`).
+            let u = match &mut self.solids {
+                Some(solids) => solids.fluid_velocity(&grid, &self.projected, &state.velocity),
+                None => &state.velocity,
+            };
+            let c = interface.advect(alpha, u, dt, state.steps);
             self.clipped.above += c.above;
             self.clipped.below += c.below;
             clock = lap(clock, &mut times.interface);

@@ -25,6 +25,15 @@ pub enum Inertia<'a> {
     Cells(&'a [f64]),
     /// ρ_f on the a-faces themselves [kg m⁻³] (water and air: `phases::face_density`).
     Faces(&'a [f64]),
+    /// With solids in water under air: the mixture's ρ̄_f on the a-faces for the inertia, and
+    /// the fluid's own ρ_f(α) for the weights of the transported velocity [kg m⁻³]
+    /// (`super::solids`: the solids' mass is not carried by the flow).
+    Mixture {
+        /// ρ̄_f [kg m⁻³].
+        inertia: &'a [f64],
+        /// ρ_f(α) [kg m⁻³].
+        fluid: &'a [f64],
+    },
 }
 
 /// Writes H_a [m s⁻²] for the `out.len()` consecutive a-faces from padded index `start` on.
@@ -44,7 +53,7 @@ pub fn tendency_row(
     start: usize,
     out: &mut [f64],
 ) {
-    let weighted = matches!(rho, Inertia::Faces(_));
+    let weighted = !matches!(rho, Inertia::Cells(_));
     match (a, sgs, weighted) {
         (0, false, false) => row::<0, false, false>(st, u, mu_t, rho, mu, start, out),
         (1, false, false) => row::<1, false, false>(st, u, mu_t, rho, mu, start, out),
@@ -99,12 +108,13 @@ fn row<const A: usize, const SGS: bool, const W: bool>(
     // ρ̄_f = (r0 + rma) / 2: the mean of two cells, or of a face row with itself (exact).
     let (r0, rma) = match rho {
         Inertia::Cells(r) => (at(r, 0), at(r, -sa)),
-        Inertia::Faces(f) => (at(f, 0), at(f, 0)),
+        Inertia::Faces(f) | Inertia::Mixture { inertia: f, .. } => (at(f, 0), at(f, 0)),
     };
     // With `W`, the a-face densities either side along each b (for the transported velocity).
     let rf = match rho {
-        Inertia::Cells(r) | Inertia::Faces(r) => r,
+        Inertia::Cells(r) | Inertia::Faces(r) | Inertia::Mixture { fluid: r, .. } => r,
     };
+    let r_own = at(rf, 0);
     let rp: [&[f64]; 3] = std::array::from_fn(|b| at(rf, s[b]));
     let rm: [&[f64]; 3] = std::array::from_fn(|b| at(rf, -s[b]));
     // μ_SGS rows; without the model they are never read (any in-bounds row will do).
@@ -148,7 +158,7 @@ fn row<const A: usize, const SGS: bool, const W: bool>(
             if W && b != A {
                 // Across the faces parallel to u_a the transported u_a is the density-weighted
                 // mean of the two faces (advection::advection_weighted).
-                let q = r0[i];
+                let q = r_own[i];
                 let m_hi = (q * c + rp[b][i] * up[b][i]) / (q + rp[b][i]);
                 let m_lo = (rm[b][i] * um[b][i] + q * c) / (rm[b][i] + q);
                 let t_hi = 0.5 * (vbp[b][i] + vbpma[b][i]);
