@@ -19,6 +19,7 @@ const MAP: &[(&str, &[&str])] = &[
     ("rigid", &["math", "geometry", "dem"]),
     ("fluid", &["math"]),
     ("shallow", &[]),
+    ("armour", &["math"]),
     ("coupling", &["math", "geometry", "dem", "rigid", "fluid"]),
     ("debris", &["math", "geometry", "dem", "rigid", "shallow"]),
     (
@@ -29,6 +30,7 @@ const MAP: &[(&str, &[&str])] = &[
         "io",
         &[
             "shallow",
+            "armour",
             "math",
             "geometry",
             "dem",
@@ -43,6 +45,7 @@ const MAP: &[(&str, &[&str])] = &[
         "scenario",
         &[
             "shallow",
+            "armour",
             "math",
             "geometry",
             "dem",
@@ -58,6 +61,7 @@ const MAP: &[(&str, &[&str])] = &[
         "run",
         &[
             "shallow",
+            "armour",
             "math",
             "geometry",
             "dem",
@@ -74,6 +78,7 @@ const MAP: &[(&str, &[&str])] = &[
         "bench",
         &[
             "shallow",
+            "armour",
             "math",
             "geometry",
             "dem",
@@ -90,6 +95,7 @@ const MAP: &[(&str, &[&str])] = &[
         "validation",
         &[
             "shallow",
+            "armour",
             "math",
             "geometry",
             "dem",
