@@ -105,7 +105,7 @@ fn probe_height(centre_z: f64, radius: f64, probe_radius: f64, rho2: f64) -> Opt
 /// z_ki = max( base(x_i), max over spheres of z_probe(c, r, x_i, y_k) )
 ///
 /// with `base(x)` [m] what the probe reads where it meets no sphere (the under-layer plane,
-/// e.g. `|x| slope.plane_z(x)`). A maximum does not depend on the order of the spheres, so the
+/// e.g. `|x| slope.plane_z(x)`); spheres with a non-finite centre are skipped. A maximum does not depend on the order of the spheres, so the
 /// result is the same bit for bit for any order. Each sphere visits only the points within
 /// r + r_p of it: the cost is Σ (r + r_p)/Δx per line, not spheres × points.
 pub fn measure_profiles(
@@ -369,8 +369,9 @@ mod tests {
             lines: vec![0.1 * R],
             probe_radius: 0.0,
         };
-        let c = [Vec3::new(R, sl.width - 0.1 * R, R)];
-        let p = measure_profiles(&sl, &g, &c, &[R], |_| -1.0);
+        // The second sphere, removed from the simulation (NaN), is skipped.
+        let c = [Vec3::new(R, sl.width - 0.1 * R, R), Vec3::NAN];
+        let p = measure_profiles(&sl, &g, &c, &[R, R], |_| -1.0);
         let expected = R + (R * R - 0.04 * R * R).sqrt();
         assert!((p.lines[1] - expected).abs() < 1e-12 * R);
         // At x = 0, ρ² = r² + (0.2 r)² > r²: the probe misses and reads the base.

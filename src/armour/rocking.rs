@@ -23,6 +23,10 @@
 //! literature (video counts rely on the observer); 0.02 rad lifts the edge of a unit by about
 //! 0.02 D_n, a millimetre on a 5 cm model unit, about what a camera over the flume resolves.
 
+use crate::math::Quat;
+
+use super::damage::rotation_angle;
+
 /// Default h [rad] of the swing criterion (see the module doc).
 pub const ROCKING_THRESHOLD: f64 = 0.02;
 
@@ -123,6 +127,17 @@ pub fn count_rocks(angles: &[f64], threshold: f64) -> u32 {
     c.rocks()
 }
 
+/// Rocks [-] of a unit from its orientation series Q_k (body → world), through the angle
+/// θ_k = [`rotation_angle`](super::damage::rotation_angle)(Q⁰, Q_k) [rad] from the reference
+/// orientation Q⁰: every tilt off the seat and back counts one rock per swing pair.
+pub fn count_rocks_of_orientations(reference: Quat, series: &[Quat], threshold: f64) -> u32 {
+    let mut c = RockingCounter::new(threshold);
+    series
+        .iter()
+        .for_each(|&q| c.push(rotation_angle(reference, q)));
+    c.rocks()
+}
+
 /// Rocking units: how many of the per-unit rock counts are at least `min_rocks` [-]. With
 /// [`super::damage::per_strip`] this gives N_or of Van der Meer (1988).
 pub fn rocking_units(rocks: &[u32], min_rocks: u32) -> usize {
@@ -201,6 +216,19 @@ mod tests {
         let mut c = RockingCounter::new(H);
         noisy.iter().for_each(|&a| c.push(a));
         assert_eq!((c.swings(), c.rocks()), (1, 0));
+    }
+
+    /// A unit tilting back and forth about a fixed axis, θ = A sin ωt with A = 5 h over 3
+    /// periods, seen through its orientation: the angle from the reference is |θ|, 6 rocks.
+    #[test]
+    fn orientation_series() {
+        let q0 = Quat::from_rotation_z(0.7);
+        let axis = crate::math::Vec3::new(1.0, 2.0, -0.5).normalize();
+        let qs: Vec<Quat> = sine(5.0 * H, 3, 0.0, 0)
+            .iter()
+            .map(|&a| Quat::from_axis_angle(axis, a) * q0)
+            .collect();
+        assert_eq!(count_rocks_of_orientations(q0, &qs, H), 6);
     }
 
     #[test]
