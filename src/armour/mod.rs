@@ -13,8 +13,16 @@
 //!   Manual, with their sources
 //! * [`validity`]: the validity ranges of each formula as data, and the list of the ranges an
 //!   input violates
+//! * [`slope`]: the slope frame, flume (x, z) ↔ along-slope and normal (s, η), periodic in y
+//! * [`damage`]: per-unit displacement, direction and layer exit, and N_od (Van der Meer 1988)
+//! * [`rocking`]: rocks of a unit from its rotation-angle series (hysteresis), for N_or
+//! * [`profile`]: profiler-like surface profiles, eroded area A_e and damage level S
 
 pub mod coefficients;
 pub mod concrete;
+pub mod damage;
 pub mod formulas;
+pub mod profile;
+pub mod rocking;
+pub mod slope;
 pub mod validity;
