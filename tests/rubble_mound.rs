@@ -22,7 +22,7 @@ const END: f64 = 0.3;
 
 #[test]
 fn rubble_mound_armour_settles_on_its_slope_and_stays_at_rest() {
-    let text = EXAMPLE.replace("end_time = 3.6 ", &format!("end_time = {END} "));
+    let text = EXAMPLE.replace("end_time = 6.4 ", &format!("end_time = {END} "));
     assert_ne!(text, EXAMPLE, "the example's end_time line changed");
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples");
     let src = Source::from_str(&text, "rubble_mound.toml", dir).unwrap();
