@@ -349,12 +349,22 @@ max = [1.5, 0.04, 0.1]
 
 /// Still water over a sloping beach (1:5, a plane) under air, open at the top: it stays still
 /// and keeps its volume. The level, 0.203 m, lies inside a cell.
+///
+/// The volume bound follows the projection's stopping rule: the CG stops at a residual of
+/// 10⁻¹³ of the right-hand side (`pcg::TOLERANCE`), which here holds gravity's divergence at
+/// the surface, and the divergence it leaves moves the water. With the multigrid
+/// preconditioner (the default), which does not see the beach's closed faces, the last
+/// iteration lands just under the tolerance: −2.6e-12 of the volume in 105 steps (2.5e-14 a
+/// step); bound 10⁻¹¹. The spectral one overshoots it and keeps the volume to 10⁻¹³. The bound
+/// was 10⁻¹³ for both until multigrid became the default, which this test caught.
 #[test]
 fn still_water_over_a_sloping_beach_stays_still() {
-    let text = format!(
-        r#"{TANK}
+    for (preconditioner, bound) in [("multigrid", 1e-11), ("spectral", 1e-13)] {
+        let text = format!(
+            r#"{TANK}
 [fluid.air]
 water_level = 0.203
+pressure_preconditioner = "{preconditioner}"
 
 [[fluid.obstacles]]
 name = "beach"
@@ -362,28 +372,30 @@ kind = "plane"
 point = [0.1, 0.0, 0.0]
 normal = [-1.0, 0.0, 5.0]
 "#
-    );
-    let mut f = fluid_of(&text);
-    let v0 = f.water_volume();
-    let mut worst = 0.0f64;
-    while f.time() < 1.0 {
-        f.step_adaptive(1.0);
-        worst = worst.max(largest(&f));
+        );
+        let mut f = fluid_of(&text);
+        let v0 = f.water_volume();
+        let mut worst = 0.0f64;
+        while f.time() < 1.0 {
+            f.step_adaptive(1.0);
+            worst = worst.max(largest(&f));
+        }
+        let dv = (f.water_volume() - v0) / v0;
+        let (lo, hi) = f
+            .water_fraction()
+            .iter()
+            .fold((1.0f64, 0.0f64), |(l, h), &a| (l.min(a), h.max(a)));
+        eprintln!(
+            "still water over a 1:5 beach ({preconditioner}), 1 s in {} steps: largest |u| \
+             {worst:.2e} m/s, volume change {dv:.1e}, α in [{lo:e}, {hi}], {} CG iterations in \
+             the last step",
+            f.steps(),
+            f.last_solve().iterations
+        );
+        assert!(worst < 1e-9, "{preconditioner}: {worst:e}");
+        assert!(dv.abs() < bound, "{preconditioner}: {dv:e}");
+        assert!(lo >= 0.0 && hi <= 1.0);
     }
-    let dv = (f.water_volume() - v0) / v0;
-    let (lo, hi) = f
-        .water_fraction()
-        .iter()
-        .fold((1.0f64, 0.0f64), |(l, h), &a| (l.min(a), h.max(a)));
-    eprintln!(
-        "still water over a 1:5 beach, 1 s in {} steps: largest |u| {worst:.2e} m/s, volume \
-         change {dv:.1e}, α in [{lo:e}, {hi}], {} CG iterations in the last step",
-        f.steps(),
-        f.last_solve().iterations
-    );
-    assert!(worst < 1e-9, "{worst:e}");
-    assert!(dv.abs() < 1e-13, "{dv:e}");
-    assert!(lo >= 0.0 && hi <= 1.0);
 }
 
 /// The force on a wall between two basins of still water, against the hydrostatic one.
