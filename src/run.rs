@@ -10,6 +10,9 @@
 //! With a fluid (`[fluid]`): `flow.pvd` + `flow_NNNNNN.vti`, `sample_<name>.csv` and fluid
 //! columns in `series.csv` ([`flow`]); every output then follows simulated time (the steps
 //! vary), see [`schedule`]. A flow-only scenario writes no sphere or wall files.
+//!
+//! With `[armour]`: `armour.csv` during the run, `armour_profile.csv` and `armour_damage.png`
+//! at its end ([`armour`]).
 
 pub mod armour;
 pub mod fingerprint;
@@ -35,7 +38,6 @@ use crate::io::csv::{read_csv, CsvSeries};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
 use crate::io::pvd::PvdSeries;
 use crate::io::vtk::{write_points, write_surface, Array, Format};
-use crate::scenario::armour::armour_settings;
 use crate::scenario::schema::{OutputKind, OutputSection};
 use crate::scenario::{build, Source};
 use crate::simulation::Simulation;
@@ -278,17 +280,10 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     };
     let mut reference =
         DisplacementReference::new(sc.output.displacement_reference_time, t0, &sim.rigid);
-    let mut armour = match armour_settings(src)? {
-        Some(a) => {
-            let every = a
-                .interval
-                .unwrap_or(interval(sc.output.series_interval, 500.0));
-            let resume = resuming.then_some((t0, saved_armour));
-            let (timing, pending) = ((every, dt, by_time), reference.pending());
-            Some(ArmourOutput::open(a, &sim, &out, resume, timing, pending).context(ARMOUR)?)
-        }
-        None => None,
-    };
+    let series_every = interval(sc.output.series_interval, 500.0);
+    let resume = resuming.then_some((t0, saved_armour));
+    let timing = (series_every, dt, by_time);
+    let mut armour = ArmourOutput::of(src, &sim, &out, resume, timing, reference.pending())?;
     let flow_interval = sc.output.flow_interval.unwrap_or(vtk_interval);
     let mut flow_out = FlowOutput::open(
         &sim,

@@ -24,6 +24,8 @@
 
 use std::path::{Path, PathBuf};
 
+use anyhow::Context;
+
 use crate::armour::damage::count_damage;
 use crate::armour::profile::{damage_level, eroded_area, measure_profiles, ProfileGrid};
 use crate::armour::rocking::RockingCounter;
@@ -31,7 +33,8 @@ use crate::io::checkpoint::ArmourState;
 use crate::io::csv::{read_csv, CsvSeries};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
 use crate::math::Vec3;
-use crate::scenario::armour::ArmourSettings;
+use crate::scenario::armour::{armour_settings, ArmourSettings};
+use crate::scenario::Source;
 use crate::simulation::Simulation;
 
 use super::schedule::Schedule;
@@ -79,7 +82,6 @@ impl ArmourOutput {
     /// Opens armour.csv in `out` (resumed at `t0` [s] with `saved`, the checkpoint's state, on
     /// restart), rows every `interval` [s] (steps of `dt` [s], or by time with a fluid), and
     /// takes the reference now unless the displacement reference is still `pending`.
-    #[allow(clippy::too_many_arguments)]
     pub fn open(
         settings: ArmourSettings,
         sim: &Simulation,
@@ -126,6 +128,26 @@ impl ArmourOutput {
             a.start(sim)?;
         }
         Ok(a)
+    }
+
+    /// [`open`](Self::open) for a run of `src` with `[armour]` (None without), rows every
+    /// `[armour] interval`, else the series' interval (`timing.0`).
+    pub fn of(
+        src: &Source,
+        sim: &Simulation,
+        out: &Path,
+        resume: Option<(f64, Option<ArmourState>)>,
+        (series_interval, dt, by_time): (f64, f64, bool),
+        pending: bool,
+    ) -> anyhow::Result<Option<ArmourOutput>> {
+        let Some(a) = armour_settings(src)? else {
+            return Ok(None);
+        };
+        let every = a.interval.unwrap_or(series_interval);
+        let a = ArmourOutput::open(a, sim, out, resume, (every, dt, by_time), pending);
+        Ok(Some(a.context(
+            "cannot write the armour's damage (armour.csv)",
+        )?))
     }
 
     /// The state a checkpoint keeps (None before the reference time).
