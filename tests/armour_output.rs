@@ -287,3 +287,33 @@ fn bad_armour_keys_are_refused_naming_file_line_key_and_reason() {
     let no_blocks = format!("{BASE}{ARMOUR}");
     refused(&no_blocks, "[armour]", "armour", "no [[blocks]]");
 }
+
+/// The example's `[armour]`: the wave period comes from `[fluid.waves]` (T = 0.8 s), and
+/// `riprap check` prints the slope, D_n and the stability number of its header, H/(Δ D_n) = 0.60.
+#[test]
+fn the_rubble_mound_example_measures_its_armour_and_check_reports_it() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples");
+    let text = std::fs::read_to_string(dir.join("rubble_mound.toml")).unwrap();
+    let src = Source::from_str(&text, "rubble_mound.toml", dir).unwrap();
+    let a = riprap::scenario::armour::armour_settings(&src)
+        .unwrap()
+        .expect("the example has [armour]");
+    assert_eq!(a.wave_period, Some(0.8));
+    assert_eq!(
+        (a.slope.toe_x, a.slope.toe_z, a.slope.cot_alpha),
+        (1.6, 0.0, 2.0)
+    );
+    assert_eq!(a.slope.width, 0.18);
+    // The crest of the core's slope: x = 1.6 + 2 × 0.28 = 2.16 m.
+    assert!((a.slope.plane_x(a.layer.crest_z) - 2.16).abs() < 1e-12);
+    let report = riprap::scenario::check(&src).unwrap().report();
+    let line = report
+        .lines()
+        .find(|l| l.starts_with("armour:"))
+        .expect(&report);
+    assert!(
+        line.contains("slope 1:2") && line.contains("D_n = 0.04 m"),
+        "{line}"
+    );
+    assert!(line.contains("H/(Δ D_n) = 0.60"), "{line}");
+}
