@@ -10,7 +10,11 @@
 //! With a fluid (`[fluid]`): `flow.pvd` + `flow_NNNNNN.vti`, `sample_<name>.csv` and fluid
 //! columns in `series.csv` ([`flow`]); every output then follows simulated time (the steps
 //! vary), see [`schedule`]. A flow-only scenario writes no sphere or wall files.
+//!
+//! With `[armour]`: `armour.csv` during the run, `armour_profile.csv` and `armour_damage.png`
+//! at its end ([`armour`]).
 
+pub mod armour;
 pub mod fingerprint;
 pub mod flow;
 pub mod owned;
@@ -37,6 +41,7 @@ use crate::io::vtk::{write_points, write_surface, Array, Format};
 use crate::scenario::schema::{OutputKind, OutputSection};
 use crate::scenario::{build, Source};
 use crate::simulation::Simulation;
+use armour::ArmourOutput;
 use fingerprint::Fingerprint;
 use flow::FlowOutput;
 use progress::Progress;
@@ -183,8 +188,9 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     let mut ck_every = Schedule::new(interval(sc.output.checkpoint_interval, 4.0), dt, by_time);
 
     let resuming = opts.restart.is_some();
+    let mut saved_armour = None;
     if let Some(path) = &opts.restart {
-        let ck = Checkpoint::read(path)?;
+        let mut ck = Checkpoint::read(path)?;
         if ck.dt.to_bits() != dt.to_bits() {
             bail!(
                 "{}: saved with time step {:e} s, the scenario now gives {:e} s",
@@ -217,6 +223,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
                 ck.time
             );
         }
+        saved_armour = ck.armour.take();
         sim = restore(sim, ck);
         if opts.progress {
             eprintln!(
@@ -273,6 +280,10 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
     };
     let mut reference =
         DisplacementReference::new(sc.output.displacement_reference_time, t0, &sim.rigid);
+    let series_every = interval(sc.output.series_interval, 500.0);
+    let resume = resuming.then_some((t0, saved_armour));
+    let timing = (series_every, dt, by_time);
+    let mut armour = ArmourOutput::of(src, &sim, &out, resume, timing, reference.pending())?;
     let flow_interval = sc.output.flow_interval.unwrap_or(vtk_interval);
     let mut flow_out = FlowOutput::open(
         &sim,
@@ -335,7 +346,8 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         }
         // Without a fluid or probes, the steps up to the next output run as one stretch
         // (`Simulation::advance`, which is faster), at most `STRETCH` for the progress bar.
-        let stretch = if by_time || !probes.is_empty() || reference.pending() {
+        // The armour's rocking counters take every step.
+        let stretch = if by_time || !probes.is_empty() || reference.pending() || armour.is_some() {
             1
         } else {
             [&vtk_every, &csv_every, &ck_every]
@@ -364,6 +376,9 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         }
         k += stretch;
         reference.after_step(&mut sim.rigid, sim.time);
+        if let Some(a) = &mut armour {
+            a.after_step(&sim, reference.pending()).context(ARMOUR)?;
+        }
         record_probes(&sim, &mut probes).context(PROBES)?;
         let (n, t) = (sim.step, sim.time);
         if csv_every.due(t, n) {
@@ -379,7 +394,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             f.after_step(&sim)?;
         }
         if ck_every.due(t, n) {
-            save(&sim, &fingerprint, &ck_path)?;
+            save(&sim, &fingerprint, &armour, &ck_path)?;
         }
         if let Some(p) = &mut progress {
             p.update(&sim);
@@ -392,7 +407,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             p.finish();
         }
     }
-    save(&sim, &fingerprint, &ck_path)?;
+    save(&sim, &fingerprint, &armour, &ck_path)?;
     // An interrupted run adds no closing frame or row: its restart writes them where an
     // uninterrupted run would.
     if interrupted_by.is_none() {
@@ -407,6 +422,9 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             if let Some(series) = &mut series {
                 series.row(&series_row(&sim)).context(SERIES)?;
             }
+        }
+        if let Some(a) = &mut armour {
+            a.finish(&sim, kinds.plots).context(ARMOUR)?;
         }
     }
     if kinds.plots && particles {
@@ -433,6 +451,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
 const SERIES: &str = "cannot write a row of the time series";
 const PROBES: &str = "cannot write a row of a probe";
 const BLOCKS: &str = "cannot write the block files";
+const ARMOUR: &str = "cannot write the armour's damage (armour.csv)";
 
 fn open_pvd(path: &Path, resuming: bool, t0: f64) -> std::io::Result<PvdSeries> {
     if resuming && path.exists() {
@@ -458,12 +477,19 @@ pub fn checkpoint_of(sim: &Simulation) -> Checkpoint {
         rigid: sim.rigid.clone(),
         fluid: sim.fluid.as_ref().map(|f| f.state().clone()),
         fingerprint: Vec::new(),
+        armour: None,
     }
 }
 
-fn save(sim: &Simulation, fingerprint: &Fingerprint, path: &Path) -> anyhow::Result<()> {
+fn save(
+    sim: &Simulation,
+    fingerprint: &Fingerprint,
+    armour: &Option<ArmourOutput>,
+    path: &Path,
+) -> anyhow::Result<()> {
     let mut ck = checkpoint_of(sim);
     ck.fingerprint = fingerprint.clone();
+    ck.armour = armour.as_ref().and_then(ArmourOutput::state);
     ck.write(path).context("cannot write the checkpoint")
 }
 

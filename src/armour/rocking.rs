@@ -30,7 +30,7 @@ use super::damage::rotation_angle;
 /// Default h [rad] of the swing criterion (see the module doc).
 pub const ROCKING_THRESHOLD: f64 = 0.02;
 
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 enum Phase {
     /// No swing yet: the lowest and highest θ so far [rad].
     Start { low: f64, high: f64 },
@@ -41,8 +41,9 @@ enum Phase {
 }
 
 /// A swing counter fed one sample at a time, for a run to update every step of every unit
-/// without storing the series (a few words of state, no allocation).
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// without storing the series (a few words of state, no allocation). Serialisable, so that a
+/// checkpoint carries the count and the phase of the swing in progress.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct RockingCounter {
     threshold: f64,
     phase: Option<Phase>,

@@ -8,6 +8,7 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
+use crate::armour::rocking::RockingCounter;
 use crate::dem::contacts::SavedContact;
 use crate::dem::insertion::Feeder;
 use crate::dem::spheres::Spheres;
@@ -20,8 +21,9 @@ use crate::rigid::bodies::RigidBodies;
 const MAGIC: &[u8; 8] = b"RIPRAPCK";
 /// 2: blocks and links; 3: the fluid state; 4: the storage order, the neighbour-build
 /// positions, the contact history by pair, and the fluid's held load on each sphere
-/// (`Spheres::fluid`); 5: the scenario's fingerprint (`run::fingerprint`).
-const VERSION: u32 = 6;
+/// (`Spheres::fluid`); 5: the scenario's fingerprint (`run::fingerprint`); 7: the armour's
+/// damage bookkeeping ([`ArmourState`]).
+const VERSION: u32 = 7;
 
 /// The saved state.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -54,6 +56,23 @@ pub struct Checkpoint {
     /// What the state means: a hash per part of the scenario that wrote it
     /// (`run::fingerprint`), checked on restart; empty when written outside a run.
     pub fingerprint: Vec<(String, u32)>,
+    /// The armour's bookkeeping (`run::armour`), once its reference time is reached.
+    pub armour: Option<ArmourState>,
+}
+
+/// What armour.csv needs beyond the blocks' own state (whose displacements and rotations since
+/// the reference are in [`RigidBodies`]): the units, the profile at the reference time, and the
+/// rocking counters, which remember the swing in progress.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ArmourState {
+    /// t_ref, the reference time [s].
+    pub reference_time: f64,
+    /// The block ids of the units, those present at t_ref.
+    pub units: Vec<u32>,
+    /// The width-averaged profile z̄ at t_ref [m], one per profiler point.
+    pub before: Vec<f64>,
+    /// One counter per unit, aligned with `units`.
+    pub counters: Vec<RockingCounter>,
 }
 
 /// What can go wrong reading a checkpoint.
@@ -142,6 +161,7 @@ mod tests {
             rigid: Default::default(),
             fluid: None,
             fingerprint: vec![("time step".to_string(), 7)],
+            armour: None,
         }
     }
 

@@ -3,7 +3,7 @@
 //!
 //! Covered: the time step, the run's settings that shape the state (skin, reference velocity),
 //! the domain, contact law, materials, walls (with their STL files), sphere sets and feeders,
-//! block templates, blocks with their wires and bonds, the fluid (with a wave record's file
+//! block templates, blocks with their wires and bonds, `[armour]` (when given), the fluid (with a wave record's file
 //! and its obstacles' STL files) and the coupling, and the spheres the scenario creates at the
 //! start (so an edited sphere file counts as well). Not covered, so that a run can be extended or
 //! its output changed between restarts: the run's name and end time, `max_speed` and
@@ -99,6 +99,9 @@ pub fn fingerprint(src: &Source, sim: &Simulation) -> Fingerprint {
         ("coupling", hash(&sc.coupling)),
     ]
     .into_iter()
+    // The armour's counts are state (`run::armour`); without the section nothing is hashed,
+    // so that other scenarios' checkpoints keep their parts.
+    .chain(sc.armour.as_ref().map(|a| ("armour", hash(a))))
     .map(|(name, h)| (name.to_string(), h))
     .collect()
 }

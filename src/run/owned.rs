@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 
 /// Names written as they are.
-const FIXED: [&str; 11] = [
+const FIXED: [&str; 14] = [
     "spheres.pvd",
     "walls.pvd",
     "blocks.pvd",
@@ -18,6 +18,9 @@ const FIXED: [&str; 11] = [
     "series.csv",
     "blocks.csv",
     "breakages.csv",
+    "armour.csv",
+    "armour_profile.csv",
+    "armour_damage.png",
     "energy.png",
     "checkpoint.ck",
     "spheres_failed.vtu",

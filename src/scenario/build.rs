@@ -3,6 +3,7 @@
 //! one every time, and the memory is refused before anything in proportion to it is
 //! allocated), and the derived quantities of `riprap check` are computed.
 
+use super::armour::{armour_settings, report_line as armour_line};
 use super::blocks::{build_blocks, template};
 use super::checks::{material_of, non_negative, positive};
 use super::contact::{contact_laws, materials, Materials};
@@ -178,6 +179,7 @@ fn parts(src: &Source, run: bool) -> Result<Parts, ScenarioError> {
     let skin = skin(src, &kinds)?;
     report.block_lines = block_lines(src, &materials, &bodies.rigid)?;
     check_output(src, bodies.spheres.len() + report.n_fed)?;
+    armour_settings(src)?;
     let limits = limits(src, report.v_ref)?;
     let radii: Vec<f64> = kinds.iter().map(|k| k.radius).collect();
     let fluid = flow(src, &domain, gravity, (&kinds, &radii), run, &mut report)?;
@@ -369,6 +371,8 @@ fn derived(src: &Source, dem: &Dem, blocks: usize, r: Report) -> Derived {
         let cells = r.fluid.as_ref().and_then(|f| f.cells_per_diameter());
         coupling_report(&c, cells, r.stokes)
     });
+    let armour = (armour_settings(src).ok().flatten())
+        .map(|a| armour_line(&a, densities(src, r.fluid.as_ref())));
     Derived {
         reference_velocity: r.v_ref,
         min_period: r.steps.min_period,
@@ -383,8 +387,18 @@ fn derived(src: &Source, dem: &Dem, blocks: usize, r: Report) -> Derived {
         coupling,
         fluid: r.fluid,
         mesh_lines: mesh_lines(src, &dem.walls),
+        armour,
         output,
     }
+}
+
+/// (ρ_s, ρ_w) [kg m⁻³] of the first block template's material and the water, for the armour's
+/// stability number; None without a flow.
+fn densities(src: &Source, fluid: Option<&FluidDerived>) -> Option<(f64, f64)> {
+    let sc = &src.scenario;
+    let name = &sc.block_templates.first()?.material;
+    let rho_s = sc.materials.iter().find(|m| &m.name == name)?.density;
+    Some((rho_s, fluid?.parameters.density))
 }
 
 #[cfg(test)]

@@ -38,6 +38,8 @@ pub struct Derived {
     pub coupling: Option<String>,
     /// One line per mesh wall: its triangles, so that a file cut short shows.
     pub mesh_lines: Vec<String>,
+    /// The armour layer's line (`scenario::armour`), with `[armour]`.
+    pub armour: Option<String>,
     /// The line estimating the output's size (`output_size`).
     pub output: String,
 }
@@ -58,6 +60,9 @@ impl Derived {
         }
         for l in &self.mesh_lines {
             let _ = writeln!(s, "{l}");
+        }
+        if let Some(a) = &self.armour {
+            s.push_str(a);
         }
         s.push_str(&self.memory.report());
         s.push_str(&self.output);

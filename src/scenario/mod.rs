@@ -2,6 +2,7 @@
 //!
 //! Every error names the file, the line, the key and the reason. Unknown keys are errors.
 
+pub mod armour;
 mod blocks;
 mod build;
 mod checks;

@@ -38,7 +38,7 @@ pub struct OutputEstimate {
     pub blocks: u64,
     /// One `flow_*.vti`.
     pub flow: u64,
-    /// All CSV files at the end: series, probes, blocks, samples.
+    /// All CSV files at the end: series, probes, blocks, armour, samples.
     pub csv: u64,
 }
 
@@ -102,6 +102,11 @@ impl OutputEstimate {
         let mut values = series_rows * (11 + if grid.is_some() { 4 } else { 0 });
         values += o.probes.len() as u64 * (steps + 1) * 17;
         values += e.frames * blocks as u64 * 11;
+        // armour.csv: 12 columns every `[armour] interval` (else the series'), at most.
+        if let Some(a) = &sc.armour {
+            let every = a.interval.or(o.series_interval).unwrap_or(end / 500.0);
+            values += ((end / every).floor() as u64 + 2) * 12;
+        }
         if let Some(g) = grid {
             let cells = g.cell_count() as u64;
             if o.writes(OutputKind::Flow) {

@@ -46,6 +46,8 @@ pub struct Scenario {
     pub fluid: Option<super::fluid::FluidSection>,
     /// The coupling of spheres and water (`scenario::coupling`).
     pub coupling: Option<super::coupling::CouplingSection>,
+    /// The armour layer whose damage the run measures (`scenario::armour`).
+    pub armour: Option<super::armour::ArmourSection>,
 }
 
 /// `[run]`
