@@ -4,7 +4,7 @@
 
 use riprap::validation::morison_sphere::{drag_band, inertia_band, level, passes, run_morison};
 
-/// The quick level (D/Δ = 4, β = 10): C_M at KC = 2 and C_D at KC = 10 inside their
+/// The quick level (D/Δ = 4, β = 10): C_M at KC = 2 and 5, C_D at KC = 10 and 20 inside their
 /// reference bands widened by the README's tolerances.
 #[test]
 fn morison_coefficients_of_a_fixed_sphere_at_four_cells_per_diameter() {
