@@ -80,10 +80,11 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 24] = [
+pub const CASES: [&str; 25] = [
     "cavity",
     "channel",
     "sphere_drag",
+    "morison_sphere",
     "cylinder_strouhal",
     "block_settling",
     "hopper_cloud",
@@ -133,6 +134,9 @@ pub fn run_validation_cases(
     }
     if run("sphere_drag") {
         all &= sphere_drag_section(out, quick, &mut md)?;
+    }
+    if run("morison_sphere") {
+        all &= super::morison_sphere::report::section(out, quick, &mut md)?;
     }
     if run("cylinder_strouhal") {
         all &= cylinder_section(out, quick, &mut md)?;
