@@ -156,9 +156,25 @@ fn a_unit_moved_more_than_a_diameter_is_displaced_and_units_at_rest_are_not() {
         "ends at the end time: {last:?}"
     );
     assert_eq!(get(&cols, last, "waves"), last[0] / 0.05);
-    for f in ["armour_profile.csv", "armour_damage.png"] {
+    for f in [
+        "armour_profile.csv",
+        "armour_damage.png",
+        "armour_profile.png",
+        "armour_units.png",
+        "armour_units.csv",
+    ] {
         assert!(dir.join(f).exists(), "{f} written");
     }
+    // The report: dry, so no waves and no formulas; four units, none moved.
+    let md = std::fs::read_to_string(dir.join("armour_report.md")).unwrap();
+    for s in [
+        "| units at t_ref | 4 (4 in the layer) |",
+        "0 of 4 units moved more than 0.1 D_n",
+        "![damage against the waves](armour_damage.png)",
+    ] {
+        assert!(md.contains(s), "missing {s:?} in\n{md}");
+    }
+    assert!(!md.contains("## Incident waves"), "{md}");
 
     // One unit glides 0.1 m = 2.5 D_n up the slope, staying in the layer.
     let dir = temp_dir("moved");
@@ -190,6 +206,19 @@ fn a_unit_moved_more_than_a_diameter_is_displaced_and_units_at_rest_are_not() {
     let (pc, profile) = read(&dir.join("armour_profile.csv"));
     assert_eq!(pc, ["x", "before", "after"]);
     assert!(profile.iter().any(|r| r[1] > r[2]) && profile.iter().any(|r| r[1] < r[2]));
+    // armour_units.csv: the one that glided 0.1 m up the slope, displaced, in the layer.
+    let (uc, units) = read(&dir.join("armour_units.csv"));
+    let moved: Vec<_> = units
+        .iter()
+        .filter(|r| get(&uc, r, "displaced") == 1.0)
+        .collect();
+    assert_eq!(moved.len(), 1, "{units:?}");
+    let ds = get(&uc, moved[0], "ds");
+    assert!((ds - 0.1).abs() < 2e-3, "Δs = {ds}");
+    assert!((get(&uc, moved[0], "distance_dn") - ds / DN).abs() < 0.1);
+    assert_eq!(get(&uc, moved[0], "out_of_layer"), 0.0);
+    let md = std::fs::read_to_string(dir.join("armour_report.md")).unwrap();
+    assert!(md.contains("1 of 4 units moved more than 0.1 D_n"), "{md}");
 }
 
 /// Blocks spinning at 80 rad/s about the slope's normal: the rotation angle θ ∈ [0, π] rises,

@@ -13,6 +13,7 @@
 //!   Manual, with their sources
 //! * [`validity`]: the validity ranges of each formula as data, and the list of the ranges an
 //!   input violates
+//! * [`design`]: the formulas for one structure and sea state side by side, for a report
 //! * [`slope`]: the slope frame, flume (x, z) ↔ along-slope and normal (s, η), periodic in y
 //! * [`damage`]: per-unit displacement, direction and layer exit, and N_od (Van der Meer 1988)
 //! * [`rocking`]: rocks of a unit from its rotation-angle series (hysteresis), for N_or
@@ -21,6 +22,7 @@
 pub mod coefficients;
 pub mod concrete;
 pub mod damage;
+pub mod design;
 pub mod formulas;
 pub mod profile;
 pub mod rocking;

@@ -121,7 +121,7 @@ pub fn violations(ranges: &[ValidityRange], values: &[(Quantity, f64)]) -> Vec<S
                 found.push(format!(
                     "{} = {} outside {}..{} ({})",
                     quantity.symbol(),
-                    value,
+                    short(value),
                     r.min,
                     upper,
                     r.source
@@ -130,6 +130,20 @@ pub fn violations(ranges: &[ValidityRange], values: &[(Quantity, f64)]) -> Vec<S
         }
     }
     found
+}
+
+/// A value as a sentence shows it: four decimals without trailing zeros (0.07, 2.5, 8000),
+/// or two significant digits in e-notation below 10⁻³ (5.62e-4).
+fn short(v: f64) -> String {
+    if v != 0.0 && v.abs() < 1e-3 {
+        return format!("{v:.2e}");
+    }
+    let s = format!("{v:.4}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
 }
 
 /// The violated ranges of [`VAN_DER_MEER_ROCK_RANGES`] for a slope, Δ [-], a storm, the water

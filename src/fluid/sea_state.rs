@@ -13,6 +13,7 @@
 //!   statistics (H_1/3, H_max, T_1/3, mean period, number of waves) (Goda 2010, §2.2).
 //! - [`separation`]: the incident and the reflected spectra of an irregular sea from three or
 //!   more gauges (Mansard & Funke 1980, per FFT bin), H_m0,I, H_m0,R and K_r.
+//! - [`incident`]: the sea at the toe of a structure over a window, from all its gauges.
 //!
 //! References: Mansard, E.P.D. & Funke, E.R. (1980), The measurement of incident and
 //! reflected spectra using a least squares method, Proc. 17th ICCE, 154-172. Goda, Y. (2010),
@@ -21,10 +22,12 @@
 //! measurement of the peak frequency of a wave spectrum (see [`spectrum`]). Welch, P.D.
 //! (1967), IEEE Trans. Audio Electroacoust. 15(2), 70-73.
 
+pub mod incident;
 pub mod separation;
 pub mod spectrum;
 pub mod zero_crossing;
 
+pub use incident::{incident_sea, whole_periods, GaugeSea, IncidentSea};
 pub use separation::{separate_irregular, IrregularSeparation};
 pub use spectrum::{variance_spectrum, SpectralStatistics, VarianceSpectrum};
 pub use zero_crossing::{zero_down_crossing, IndividualWave, WaveStatistics};

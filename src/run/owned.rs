@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 
 /// Names written as they are.
-const FIXED: [&str; 14] = [
+const FIXED: [&str; 18] = [
     "spheres.pvd",
     "walls.pvd",
     "blocks.pvd",
@@ -21,6 +21,10 @@ const FIXED: [&str; 14] = [
     "armour.csv",
     "armour_profile.csv",
     "armour_damage.png",
+    "armour_profile.png",
+    "armour_units.png",
+    "armour_units.csv",
+    "armour_report.md",
     "energy.png",
     "checkpoint.ck",
     "spheres_failed.vtu",

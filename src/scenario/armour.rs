@@ -17,6 +17,10 @@
 //! rocking_threshold = 0.02   # h of a swing of a unit's rotation angle [rad] (default 0.02)
 //! wave_period = 0.8          # T [s], for the waves column (default: [fluid.waves] period)
 //! interval = 0.1             # s between rows of armour.csv (default: [output] series_interval)
+//! unit = "rock"              # the design formulas of the report: rock, cube or tetrapod
+//! notional_permeability = 0.4 # Van der Meer's P of the structure [-] (default 0.4)
+//! analysis_start = 2.8       # s: the incident waves are analysed from here (default: module
+//!                            # `run::armour`, when the full waves have reached the gauges)
 //! ```
 
 use serde::{Deserialize, Serialize};
@@ -24,6 +28,7 @@ use serde::{Deserialize, Serialize};
 use super::checks::{non_negative, positive};
 use super::{ScenarioError, Source};
 use crate::armour::damage::{ArmourLayer, DISPLACED_THRESHOLD_DN};
+use crate::armour::design::ArmourUnit;
 use crate::armour::rocking::ROCKING_THRESHOLD;
 use crate::armour::slope::Slope;
 
@@ -62,7 +67,46 @@ pub struct ArmourSection {
     pub wave_period: Option<f64>,
     /// Time between rows of armour.csv [s] (default: `[output] series_interval`).
     pub interval: Option<f64>,
+    // The keys below came later: none is hashed when absent (`run::fingerprint`).
+    /// The unit, which picks the report's design formulas: "rock" (default), "cube",
+    /// "tetrapod".
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unit: Option<UnitName>,
+    /// Van der Meer's notional permeability P of the structure [-] (default 0.4: a two-layer
+    /// armour on a filter over a permeable core, Van der Meer 1988; 0.1 impermeable core,
+    /// 0.5 no filter, 0.6 homogeneous).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub notional_permeability: Option<f64>,
+    /// When the report's analysis of the incident waves starts [s] (default `run::armour`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub analysis_start: Option<f64>,
 }
+
+/// `[armour] unit`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum UnitName {
+    /// Quarry stone.
+    Rock,
+    /// Concrete cubes.
+    Cube,
+    /// Tetrapods.
+    Tetrapod,
+}
+
+impl UnitName {
+    /// The unit of `crate::armour::design`.
+    pub fn unit(self) -> ArmourUnit {
+        match self {
+            UnitName::Rock => ArmourUnit::Rock,
+            UnitName::Cube => ArmourUnit::Cube,
+            UnitName::Tetrapod => ArmourUnit::Tetrapod,
+        }
+    }
+}
+
+/// The default notional permeability P [-] (a two-layer armour, filter, permeable core).
+pub const DEFAULT_NOTIONAL_PERMEABILITY: f64 = 0.4;
 
 /// `[armour]` checked: what the run's bookkeeping needs.
 #[derive(Clone, Debug, PartialEq)]
@@ -85,6 +129,12 @@ pub struct ArmourSettings {
     pub wave_height: Option<f64>,
     /// Interval between rows [s], if given (else the series interval).
     pub interval: Option<f64>,
+    /// The unit of the design formulas.
+    pub unit: ArmourUnit,
+    /// Van der Meer's notional permeability P [-].
+    pub permeability: f64,
+    /// The start of the incident waves' analysis [s], if given.
+    pub analysis_start: Option<f64>,
 }
 
 /// Checks `[armour]` (None without the section): sizes positive, the toe inside the domain's
@@ -154,6 +204,21 @@ pub fn armour_settings(src: &Source) -> Result<Option<ArmourSettings>, ScenarioE
         Some(i) => Some(positive(src, "armour.interval", i)?),
         None => None,
     };
+    let permeability = a
+        .notional_permeability
+        .unwrap_or(DEFAULT_NOTIONAL_PERMEABILITY);
+    if !(permeability > 0.0 && permeability <= 1.0) {
+        return Err(src.invalid(
+            "armour.notional_permeability",
+            format!(
+                "must lie in (0, 1] (0.1 impermeable core … 0.6 homogeneous), got {permeability}"
+            ),
+        ));
+    }
+    let analysis_start = match a.analysis_start {
+        Some(t) => Some(non_negative(src, "armour.analysis_start", t)?),
+        None => None,
+    };
     let mut layer = ArmourLayer::new(dn, thickness, a.crest_level);
     layer.displaced_threshold_dn = k;
     Ok(Some(ArmourSettings {
@@ -172,6 +237,9 @@ pub fn armour_settings(src: &Source) -> Result<Option<ArmourSettings>, ScenarioE
         wave_period,
         wave_height: waves.and_then(|w| w.height.or(w.significant_height)),
         interval,
+        unit: a.unit.map_or(ArmourUnit::Rock, UnitName::unit),
+        permeability,
+        analysis_start,
     }))
 }
 
