@@ -452,6 +452,24 @@ mod tests {
         assert!(fit.residual < 1e-3);
     }
 
+    /// The volume the grid sees: the sphere's fractions hold its exact volume; the cube's
+    /// union is near D_n³ and less than its members' volumes summed (they overlap).
+    #[test]
+    fn the_seen_volume_is_the_union_of_the_members() {
+        let grid = StaggeredGrid::new([16, 16, 16], Vec3::splat(4.0), Vec3::ZERO);
+        let centre = Vec3::splat(2.0);
+        let sphere = seen_volume(&grid, &Shape::Sphere.members(centre));
+        assert!((sphere - PI / 6.0).abs() < 1e-9, "{sphere}");
+        let members = Shape::Cube.members(centre);
+        let cube = seen_volume(&grid, &members);
+        let sum: f64 = members.iter().map(|m| 4.0 / 3.0 * PI * m.1.powi(3)).sum();
+        eprintln!("cube: seen {cube:.4} D_n³, members {sum:.4} D_n³");
+        assert!(
+            (cube - 1.0).abs() < 0.1 && sum > 1.02 * cube,
+            "{cube} {sum}"
+        );
+    }
+
     /// The references: the Stokes C_M at β = 10 and the quasi-steady C_D at high Re tends to
     /// the standard curve's value (C_D varies slowly there).
     #[test]
