@@ -85,6 +85,26 @@ pub fn clift_grace_weber_1978(re: f64) -> f64 {
     }
 }
 
+/// The drag coefficient of a non-spherical, isometric particle of sphericity `psi` [–]
+/// (Haider & Levenspiel 1989, Powder Technol. 58, 63-70, eq. 10 with Table 3's fit), on the
+/// volume-equivalent sphere: Re = U d_v / ν and F = ½ ρ C_D (π d_v²/4) U² [–]:
+///
+/// ```text
+/// C_D = 24/Re (1 + A Re^B) + C / (1 + D/Re)
+/// A = exp(2.3288 − 6.4581 ψ + 2.4486 ψ²),  B = 0.0964 + 0.5565 ψ
+/// C = exp(4.905 − 13.8944 ψ + 18.4222 ψ² − 10.2599 ψ³)
+/// D = exp(1.4681 + 12.2584 ψ − 20.7322 ψ² + 15.8855 ψ³)
+/// ```
+///
+/// A fit to settling particles (randomly oriented) for Re up to 2.6e5.
+pub fn haider_levenspiel_1989(re: f64, psi: f64) -> f64 {
+    let a = (2.3288 - 6.4581 * psi + 2.4486 * psi * psi).exp();
+    let b = 0.0964 + 0.5565 * psi;
+    let c = (4.905 - 13.8944 * psi + 18.4222 * psi.powi(2) - 10.2599 * psi.powi(3)).exp();
+    let dd = (1.4681 + 12.2584 * psi - 20.7322 * psi.powi(2) + 15.8855 * psi.powi(3)).exp();
+    24.0 / re * (1.0 + a * re.powf(b)) + c / (1.0 + dd / re)
+}
+
 /// The drag force on a sphere of diameter `d` [m] at relative velocity `u_rel` = u − v
 /// [m s⁻¹] in water of density `rho` [kg m⁻³] and kinematic viscosity `nu` [m² s⁻¹], [5] [N].
 ///

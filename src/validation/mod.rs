@@ -8,7 +8,7 @@
 //!   [`channel180`] (turbulent channel flow, Moser, Kim & Mansour 1999);
 //! * the coupling's cases 1 to 5 of METHOD.md §5: [`sphere_drag`], [`cylinder_strouhal`],
 //!   [`block_settling`], [`hopper_cloud`] and [`sheet_flow`]; [`morison_sphere`] (Morison's
-//!   C_D and C_M of a fixed sphere in oscillatory flow, issue 29);
+//!   C_D and C_M of a fixed sphere and a fixed cube in oscillatory flow, issue 29);
 //! * beyond the source: [`wet_rebound`] (a sphere rebounding from a wall in a liquid, against
 //!   the measurements of Gondret et al. 2002), the lubrication film of wet contacts;
 //!   [`dam_break`] (a water column collapsing under air, against Martin & Moyce 1952) and

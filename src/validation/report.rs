@@ -27,6 +27,7 @@ use super::channel180::{
     mkm_1999_bulk_velocity, mkm_1999_profile, run_channel, ChannelCase, ChannelResult,
 };
 use super::cylinder_strouhal::{cylinder_level, roshko_1954, run_cylinder};
+use super::morison_sphere::Shape;
 use super::sheet_flow::sections::{self, CaseFive};
 use super::sphere_drag::{run_sphere_drag, sphere_drag_level, standard_drag_curve};
 use crate::coupling::drag::{clift_grace_weber_1978, schiller_naumann_1933};
@@ -80,11 +81,12 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 25] = [
+pub const CASES: [&str; 26] = [
     "cavity",
     "channel",
     "sphere_drag",
     "morison_sphere",
+    "morison_cube",
     "cylinder_strouhal",
     "block_settling",
     "hopper_cloud",
@@ -136,7 +138,10 @@ pub fn run_validation_cases(
         all &= sphere_drag_section(out, quick, &mut md)?;
     }
     if run("morison_sphere") {
-        all &= super::morison_sphere::report::section(out, quick, &mut md)?;
+        all &= super::morison_sphere::report::section(out, quick, Shape::Sphere, &mut md)?;
+    }
+    if run("morison_cube") {
+        all &= super::morison_sphere::report::section(out, quick, Shape::Cube, &mut md)?;
     }
     if run("cylinder_strouhal") {
         all &= cylinder_section(out, quick, &mut md)?;

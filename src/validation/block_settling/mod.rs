@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 use crate::math::Vec3;
 
-use crate::coupling::drag::clift_grace_weber_1978;
+use crate::coupling::drag::{clift_grace_weber_1978, haider_levenspiel_1989};
 use crate::scenario::{build, Source};
 
 /// The case's scenario (Δ = d/8).
@@ -133,11 +133,7 @@ pub fn estimates() -> (f64, f64) {
     };
     let broadside = solve(D, &clift_grace_weber_1978);
     let psi = 3f64.powf(2.0 / 3.0) / 3.0;
-    let a = (2.3288 - 6.4581 * psi + 2.4486 * psi * psi).exp();
-    let b = 0.0964 + 0.5565 * psi;
-    let c = (4.905 - 13.8944 * psi + 18.4222 * psi.powi(2) - 10.2599 * psi.powi(3)).exp();
-    let dd = (1.4681 + 12.2584 * psi - 20.7322 * psi.powi(2) + 15.8855 * psi.powi(3)).exp();
-    let haider = move |re: f64| 24.0 / re * (1.0 + a * re.powf(b)) + c / (1.0 + dd / re);
+    let haider = move |re: f64| haider_levenspiel_1989(re, psi);
     let d_v = 3f64.cbrt() * D;
     // Haider & Levenspiel hold to Re = 2.6e5: no cap needed; solve without the 1500 cap.
     let mut w: f64 = 0.3;
