@@ -68,6 +68,9 @@ pub struct ArmourOutput {
     p: Vec<Vec3>,
     /// What the report needs from the scenario and the flow.
     context: ReportContext,
+    /// When this process opened the file, and the simulated time then [s]: the cost per
+    /// wave the report gives.
+    opened: (std::time::Instant, f64),
 }
 
 /// The columns of armour.csv, `waves` only when the period is known.
@@ -137,6 +140,7 @@ impl ArmourOutput {
             p0: Vec::new(),
             p: Vec::new(),
             context: ReportContext::default(),
+            opened: (std::time::Instant::now(), sim.time),
         };
         if a.state.is_none() && !pending {
             a.start(sim)?;
@@ -254,10 +258,22 @@ impl ArmourOutput {
                 incident: incident.as_ref(),
                 design: design.as_ref(),
                 figures: plots,
+                cost: self.cost(sim.time),
             },
         )
         .context("cannot write armour_report.md")?;
         Ok(())
+    }
+
+    /// Wall time [s] per wave period of simulated time, since this process opened the file,
+    /// and the worker threads (None without a period or simulated time).
+    fn cost(&self, t: f64) -> Option<(f64, usize)> {
+        let period = self.settings.wave_period?;
+        let simulated = t - self.opened.1;
+        (simulated > 0.0).then(|| {
+            let wall = self.opened.0.elapsed().as_secs_f64();
+            (wall * period / simulated, rayon::current_num_threads())
+        })
     }
 
     /// The incident waves from gauges.csv (None without a flume, or without the file).

@@ -277,6 +277,8 @@ pub struct Report<'a> {
     pub design: Option<&'a DesignCheck>,
     /// Whether the figures were drawn.
     pub figures: bool,
+    /// Wall time per wave period [s] and the worker threads, in this process.
+    pub cost: Option<(f64, usize)>,
 }
 
 /// Writes `armour_report.md` in `out`.
@@ -310,6 +312,16 @@ pub fn markdown(r: &Report) -> String {
             "## Figures\n\n![damage against the waves](armour_damage.png)\n\n\
              ![profile before and after](armour_profile.png)\n\n\
              ![the units that moved, across the slope](armour_units.png)\n"
+        );
+    }
+    if let Some((per_wave, threads)) = r.cost {
+        let _ = writeln!(
+            m,
+            "## Cost\n\n{per_wave:.1} s of wall time per wave period simulated ({:.2} min; \
+             {threads} worker threads; this process only, a restart counts from itself): \
+             100 waves take {:.1} h.\n",
+            per_wave / 60.0,
+            per_wave * 100.0 / 3600.0
         );
     }
     let _ = writeln!(
@@ -681,6 +693,7 @@ mod tests {
             incident: Some(&inc),
             design: Some(&design),
             figures: true,
+            cost: Some((96.0, 1)),
         });
         for s in [
             "## The structure",
@@ -694,6 +707,7 @@ mod tests {
             "## Measured damage",
             "| 8.00 |",
             "armour_units.png",
+            "100 waves take 2.7 h",
         ] {
             assert!(md.contains(s), "missing {s:?} in\n{md}");
         }
