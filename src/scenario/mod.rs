@@ -13,6 +13,7 @@ pub mod default;
 mod derived;
 pub mod fluid;
 pub mod memory;
+pub mod mound;
 pub mod output_size;
 mod pairings;
 pub mod schema;

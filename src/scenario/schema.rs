@@ -51,7 +51,7 @@ pub struct Scenario {
     /// A rubble-mound breakwater by its profile, expanded on reading into walls, blocks, porous
     /// zones, a crown wall and `[armour]` (`scenario::breakwater`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub breakwater: Option<super::breakwater::BreakwaterSection>,
+    pub breakwater: Option<super::mound::BreakwaterSection>,
 }
 
 /// `[run]`
