@@ -47,6 +47,7 @@ fn check_passes_on_every_example_and_prints_the_derived_quantities() {
         "sheet_flow.toml",
         "sloping_beach.toml",
         "rubble_mound.toml",
+        "breakwater.toml",
     ] {
         assert!(
             names.iter().any(|n| n == expected),

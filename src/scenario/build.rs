@@ -388,6 +388,8 @@ fn derived(src: &Source, dem: &Dem, blocks: usize, r: Report) -> Derived {
         fluid: r.fluid,
         mesh_lines: mesh_lines(src, &dem.walls),
         armour,
+        breakwater: (src.breakwater.as_ref())
+            .map(|b| b.report(sc.output.displacement_reference_time)),
         output,
     }
 }

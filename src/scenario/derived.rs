@@ -40,6 +40,8 @@ pub struct Derived {
     pub mesh_lines: Vec<String>,
     /// The armour layer's line (`scenario::armour`), with `[armour]`.
     pub armour: Option<String>,
+    /// What `[breakwater]` made (`scenario::breakwater`).
+    pub breakwater: Option<String>,
     /// The line estimating the output's size (`output_size`).
     pub output: String,
 }
@@ -60,6 +62,9 @@ impl Derived {
         }
         for l in &self.mesh_lines {
             let _ = writeln!(s, "{l}");
+        }
+        if let Some(b) = &self.breakwater {
+            s.push_str(b);
         }
         if let Some(a) = &self.armour {
             s.push_str(a);

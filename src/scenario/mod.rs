@@ -4,6 +4,7 @@
 
 pub mod armour;
 mod blocks;
+pub mod breakwater;
 mod build;
 mod checks;
 mod contact;
@@ -12,6 +13,7 @@ pub mod default;
 mod derived;
 pub mod fluid;
 pub mod memory;
+pub mod mound;
 pub mod output_size;
 mod pairings;
 pub mod schema;
@@ -89,6 +91,9 @@ pub struct Source {
     pub file: String,
     /// Folder against which relative paths (STL files) are resolved.
     pub dir: PathBuf,
+    /// What `[breakwater]` expanded into, for `riprap check` (its walls, blocks, porous zones
+    /// and `[armour]` are in `scenario`).
+    pub breakwater: Option<breakwater::BreakwaterSummary>,
 }
 
 impl Source {
@@ -106,12 +111,15 @@ impl Source {
     /// Parses scenario text; `file` names it in messages.
     pub fn from_str(text: &str, file: &str, dir: PathBuf) -> Result<Source, ScenarioError> {
         let scenario: Scenario = toml::from_str(text).map_err(|e| parse_error(text, file, e))?;
-        Ok(Source {
+        let mut src = Source {
             scenario,
             text: text.to_string(),
             file: file.to_string(),
             dir,
-        })
+            breakwater: None,
+        };
+        src.breakwater = breakwater::expand(&mut src)?;
+        Ok(src)
     }
 
     /// An `Invalid` error for `key` (a dotted path such as `spheres[1].diameter`), at its line.

@@ -48,6 +48,10 @@ pub struct Scenario {
     pub coupling: Option<super::coupling::CouplingSection>,
     /// The armour layer whose damage the run measures (`scenario::armour`).
     pub armour: Option<super::armour::ArmourSection>,
+    /// A rubble-mound breakwater by its profile, expanded on reading into walls, blocks, porous
+    /// zones, a crown wall and `[armour]` (`scenario::breakwater`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub breakwater: Option<super::mound::BreakwaterSection>,
 }
 
 /// `[run]`

@@ -1,0 +1,309 @@
+//! `[breakwater]` (issue 29): a rubble-mound section described by its profile expands into the
+//! under-layer plane and the bed, the core's porous steps, a crown wall, the armour units placed
+//! to a packing density, and `[armour]`; `examples/breakwater.toml` is the lab section of
+//! `rubble_mound.toml` with a double layer placed at random.
+//!
+//! Run: `cargo test --release --test breakwater -- --nocapture` (the settling test steps the
+//! DEM alone for 0.6 s).
+
+use std::path::PathBuf;
+
+use riprap::math::Vec3;
+use riprap::scenario::fluid::ObstacleKind;
+use riprap::scenario::schema::{BlockSet, WallSection};
+use riprap::scenario::{build, check, ScenarioError, Source};
+
+const EXAMPLE: &str = include_str!("../examples/breakwater.toml");
+
+fn dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples")
+}
+
+fn source(text: &str) -> Result<Source, ScenarioError> {
+    Source::from_str(text, "breakwater.toml", dir())
+}
+
+fn example() -> Source {
+    source(EXAMPLE).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The example with `from` replaced by `to` (which must be there).
+fn edited(from: &str, to: &str) -> String {
+    assert!(EXAMPLE.contains(from), "the example has no `{from}`");
+    EXAMPLE.replacen(from, to, 1)
+}
+
+/// The error of an edited example, as text.
+fn error(from: &str, to: &str) -> String {
+    source(&edited(from, to))
+        .err()
+        .unwrap_or_else(|| panic!("`{to}` was accepted"))
+        .to_string()
+}
+
+/// The armour units' list: (centre, rotation vector) of each.
+fn units(src: &Source) -> Vec<([f64; 3], [f64; 3])> {
+    match src.scenario.blocks.last() {
+        Some(BlockSet::List(l)) => l.blocks.iter().map(|b| (b.position, b.rotation)).collect(),
+        other => panic!("no list of units: {other:?}"),
+    }
+}
+
+#[test]
+fn the_profile_expands_into_the_plane_the_bed_the_porous_steps_and_the_crown_wall() {
+    let src = example();
+    let sc = &src.scenario;
+    let planes: Vec<_> = sc
+        .walls
+        .iter()
+        .filter_map(|w| match w {
+            WallSection::Plane(p) => Some(p),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(planes.len(), 2);
+    assert_eq!(planes[0].name.as_deref(), Some("breakwater_underlayer"));
+    let n = Vec3::from_array(planes[0].normal);
+    assert!((n - Vec3::new(-1.0, 0.0, 2.0).normalize()).length() < 1e-12);
+    assert_eq!(planes[0].point, [1.6, 0.0, 0.0]);
+    assert_eq!(planes[1].normal, [0.0, 0.0, 1.0]);
+    assert_eq!(planes[1].material, "rock");
+    // 1 cm steps from the bed to the crest (0.28 m), each from where the slope crosses its
+    // middle: x = 1.6 + 2 (z + 0.005), out to the flume's end.
+    let f = sc.fluid.as_ref().unwrap();
+    assert_eq!(f.porous.len(), 28);
+    for (j, z) in f.porous.iter().enumerate() {
+        let lo = 0.01 * j as f64;
+        assert!(
+            (z.min[0] - (1.61 + 0.02 * j as f64)).abs() < 1e-9,
+            "{j}: {:?}",
+            z.min
+        );
+        assert!((z.min[2] - lo).abs() < 1e-9 && (z.max[2] - lo - 0.01).abs() < 1e-9);
+        assert_eq!((z.max[0], z.min[1], z.max[1]), (2.4, 0.0, 0.18));
+        assert_eq!((z.porosity, z.grain_diameter), (0.4, 0.015));
+    }
+    let crown = f.obstacles.iter().find(|o| o.name == "crown_wall").unwrap();
+    assert_eq!(crown.kind, ObstacleKind::Box);
+    let (min, max) = (crown.min.unwrap(), crown.max.unwrap());
+    assert!((min[0] - 2.26).abs() < 1e-9 && (max[0] - 2.30).abs() < 1e-9);
+    assert!((min[2] - 0.28).abs() < 1e-12 && (max[2] - 0.34).abs() < 1e-12);
+}
+
+#[test]
+fn random_placement_reaches_the_target_count_and_check_reports_it() {
+    let src = example();
+    let s = src.breakwater.as_ref().unwrap();
+    // φ = 2 × 1.00 × (1 − 0.37) = 1.26 on 0.28 √5 × 0.18 m² of slope, D_n = 4 cm: 88.7 units.
+    assert!((s.packing.0 - 1.26).abs() < 1e-12);
+    assert_eq!((s.target, s.placed), (89, 89));
+    assert!(
+        (s.packing.1 - s.packing.0).abs() < 0.5 / 70.4 + 1e-12,
+        "{:?}",
+        s.packing
+    );
+    assert_eq!(units(&src).len(), 89);
+    let derived = check(&src).unwrap_or_else(|e| panic!("{e}"));
+    let report = derived.report();
+    eprintln!("{report}");
+    for needle in [
+        "breakwater: 89 units placed (Random), target 89 (φ = 1.260",
+        "placed φ = 1.264",
+        "t_a = n k_t D_n = 2 × 1 × 0.0400 = 0.0800 m",
+        "porous zones: 28 core and 0 filter boxes",
+        "crown wall",
+        "armour: slope 1:2",
+        "displacement_reference_time = 1 s",
+    ] {
+        assert!(report.contains(needle), "no `{needle}` in\n{report}");
+    }
+}
+
+#[test]
+fn the_same_seed_gives_the_same_bits_another_seed_another_layer() {
+    let bits = |src: &Source| -> Vec<u64> {
+        units(src)
+            .iter()
+            .flat_map(|(c, r)| c.iter().chain(r).map(|v| v.to_bits()).collect::<Vec<_>>())
+            .collect()
+    };
+    let a = bits(&example());
+    assert_eq!(a, bits(&example()));
+    let other = source(&edited("seed = 1\n", "seed = 2\n")).unwrap();
+    assert_ne!(a, bits(&other));
+}
+
+#[test]
+fn pattern_placement_gives_whole_rows_across_the_width() {
+    let text = edited("placement = \"random\"", "placement = \"pattern\"")
+        .replace("layer_porosity = 0.37 ", "packing_density = 0.8");
+    let src = source(&text).unwrap_or_else(|e| panic!("{e}"));
+    let s = src.breakwater.as_ref().unwrap();
+    let across = s.across as usize;
+    assert_eq!(s.across, across as f64);
+    assert_eq!(s.placed % (2 * across), 0, "{s:?}");
+    assert_eq!(units(&src).len(), s.placed);
+    // Within half a row of each layer of the target.
+    assert!(
+        (s.placed as f64 - s.target as f64).abs() <= across as f64,
+        "{s:?}"
+    );
+    check(&src).unwrap_or_else(|e| panic!("{e}"));
+    // Denser than flat stones can lie: refused, naming the key.
+    let e = error("layer_porosity = 0.37 ", "packing_density = 2.5");
+    let e2 = source(&text.replace("packing_density = 0.8", "packing_density = 2.5"))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("breakwater.armour.packing_density"), "{e}");
+    assert!(
+        e2.contains("denser than the units lying flat allow"),
+        "{e2}"
+    );
+}
+
+#[test]
+fn bad_input_names_the_key_and_the_reason() {
+    let cases = [
+        (
+            "slope = 2.0 ",
+            "slope = -2.0 ",
+            "breakwater.slope",
+            "positive",
+        ),
+        (
+            "crest_level = 0.28",
+            "crest_level = -0.1",
+            "breakwater.crest_level",
+            "above the toe",
+        ),
+        (
+            "template = \"armour_stone\"",
+            "template = \"tetrapod\"",
+            "breakwater.armour.template",
+            "armour_stone",
+        ),
+        (
+            "layers = 2 ",
+            "layers = 3 ",
+            "breakwater.armour.layers",
+            "1 or 2",
+        ),
+        (
+            "layer_porosity = 0.37 ",
+            "packing_density = 4.0",
+            "breakwater.armour.packing_density",
+            "random placement reached",
+        ),
+        (
+            "offset = 0.1 }",
+            "offset = 0.5 }",
+            "breakwater.crown_wall",
+            "does not stand on the crest",
+        ),
+        (
+            "core = { porosity = 0.4,",
+            "core = { porosity = 1.4,",
+            "breakwater.core.porosity",
+            "(0, 1]",
+        ),
+        (
+            "gap = 0.001 ",
+            "gaps = 0.001 ",
+            "breakwater.armour.gaps",
+            "unknown field",
+        ),
+    ];
+    for (from, to, key, why) in cases {
+        let e = error(from, to);
+        assert!(e.starts_with("breakwater.toml:"), "{e}");
+        assert!(e.contains(key) && e.contains(why), "`{to}`: {e}");
+    }
+    // The packing error says how many were placed.
+    let e = error("layer_porosity = 0.37 ", "packing_density = 4.0");
+    assert!(e.contains("of the 282 units"), "{e}");
+}
+
+#[test]
+fn armour_is_taken_from_the_breakwater_unless_given() {
+    let src = example();
+    let a = src.scenario.armour.as_ref().unwrap();
+    assert_eq!(a.toe, [1.6, 0.0]);
+    assert_eq!((a.slope, a.crest_level), (2.0, 0.28));
+    assert!((a.nominal_diameter - 0.04).abs() < 1e-12);
+    // t_a = n k_t D_n = 2 × 1.00 × 0.04.
+    assert!((a.layer_thickness - 0.08).abs() < 1e-12);
+    assert!(src.breakwater.as_ref().unwrap().armour_defaulted);
+    let given = format!(
+        "{EXAMPLE}\n[armour]\ntoe = [1.6, 0.0]\nslope = 2.0\nnominal_diameter = 0.04\n\
+         layer_thickness = 0.1\ncrest_level = 0.25\n"
+    );
+    let src = source(&given).unwrap();
+    let a = src.scenario.armour.as_ref().unwrap();
+    assert_eq!((a.layer_thickness, a.crest_level), (0.1, 0.25));
+    assert!(!src.breakwater.as_ref().unwrap().armour_defaulted);
+}
+
+/// The example without the water (and so without the crown wall): the DEM alone.
+fn dry(end: f64) -> String {
+    let i = EXAMPLE.find("\n[coupling]").unwrap();
+    let j = EXAMPLE.find("\n[output]").unwrap();
+    let text = format!("{}{}", &EXAMPLE[..i], &EXAMPLE[j..]);
+    text.replace("end_time = 6.4 ", &format!("end_time = {end} "))
+        .replace(
+            "crown_wall = { height = 0.06, width = 0.04, offset = 0.1 }",
+            "",
+        )
+}
+
+/// The units, placed 1 mm clear of the plane and of each other, fall and settle dry without
+/// blowing up: no member overlaps at the start, and after 0.6 s they have come nearly to rest.
+#[test]
+fn the_units_settle_under_gravity_without_blowing_up() {
+    const END: f64 = 0.6;
+    let src = source(&dry(END)).unwrap_or_else(|e| panic!("{e}"));
+    let mut sim = build(&src).unwrap_or_else(|e| panic!("{e}")).simulation;
+    assert_eq!(sim.rigid.blocks.len(), 89);
+    let s = &sim.dem.spheres;
+    let mut clearance = f64::INFINITY;
+    for i in 0..s.len() {
+        for j in i + 1..s.len() {
+            if s.same_body(i, j) {
+                continue;
+            }
+            let d = sim.dem.domain.minimum_image(s.position[j] - s.position[i]);
+            clearance = clearance.min(d.length() - s.radius[i] - s.radius[j]);
+        }
+    }
+    assert!(clearance >= 0.001 - 1e-9, "members {clearance:e} m apart");
+    let start = sim.rigid.blocks.centre.clone();
+    while !sim.reached(END) {
+        sim.step_towards(END).unwrap_or_else(|e| panic!("{e}"));
+    }
+    let b = &sim.rigid.blocks;
+    let domain = sim.dem.domain;
+    let normal = Vec3::new(-1.0, 0.0, 2.0).normalize();
+    let eta = |c: Vec3| (c - Vec3::new(1.6, 0.0, 0.0)).dot(normal);
+    let (mut moved, mut mean, mut far) = (0.0f64, 0.0, 0);
+    let (mut top0, mut top1) = (0.0f64, 0.0f64);
+    for (k, &c0) in start.iter().enumerate() {
+        assert!(b.centre[k].is_finite());
+        let d = domain.minimum_image(b.centre[k] - c0).length();
+        moved = moved.max(d);
+        mean += d / start.len() as f64;
+        far += usize::from(d > 0.5 * 0.04);
+        top0 = top0.max(eta(c0));
+        top1 = top1.max(eta(b.centre[k]));
+    }
+    let energy = b.kinetic_energy();
+    // Against m g D_n ≈ 0.07 J a unit.
+    eprintln!(
+        "breakwater dry settle, {END} s in {} steps: largest displacement {moved:.3e} m, mean \
+         {mean:.3e} m, {far} units moved more than D_n/2; highest centre above the plane \
+         {top0:.4} m at the start, {top1:.4} m at the end; blocks' kinetic energy {energy:.2e} J",
+        sim.step
+    );
+    // The loose heap compacts: its top units come down about a D_n, and a few roll a few D_n
+    // down the slope (measured: 3 D_n at most); nothing flies off.
+    assert!(moved < 4.0 * 0.04, "a unit moved {moved:e} m");
+    assert!(energy < 1e-2, "blocks' kinetic energy {energy:e} J");
+}
