@@ -51,6 +51,7 @@ mod profile;
 use super::armour::ArmourSection;
 use super::blocks::template;
 use super::checks::{finite, non_negative, positive};
+use super::armour::UnitName;
 use super::schema::{BlockEntry, BlockSet, ListBlocks, PlaneWall, ShapeName, WallSection};
 use super::{ScenarioError, Source};
 use crate::armour::slope::Slope;
@@ -411,6 +412,14 @@ fn expansion(src: &Source, b: &BreakwaterSection) -> Result<Expansion, ScenarioE
         rocking_threshold: None,
         wave_period: None,
         interval: None,
+        // The report's formulas follow the units' shape (a user's own shape: rock's).
+        unit: Some(match shape {
+            ShapeName::Cube => UnitName::Cube,
+            ShapeName::Tetrapod => UnitName::Tetrapod,
+            _ => UnitName::Rock,
+        }),
+        notional_permeability: None,
+        analysis_start: None,
     };
     let summary = BreakwaterSummary {
         placement: b.armour.placement,
