@@ -27,6 +27,14 @@ fn check(shape: Shape) {
             r.steps,
             r.seconds
         );
+        // The coupling's Froude-Krylov force takes the unit's own volume V (the cube's
+        // members their shares of the union, not their whole spheres: 1.126 V).
+        assert!(
+            (r.member_volume - 1.0).abs() < 1e-9,
+            "{}: {}",
+            shape.name(),
+            r.member_volume
+        );
         assert!(
             passes(&r),
             "{} KC {}: C_D {}, C_M {}",

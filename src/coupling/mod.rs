@@ -93,8 +93,9 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
+use crate::dem::material::Material;
 use crate::dem::par::MIN_SPHERES_PER_TASK;
-use crate::dem::spheres::Spheres;
+use crate::dem::spheres::{Spheres, NO_BODY};
 use crate::fluid::phases::{self, Air};
 use crate::fluid::{Boundaries, Fluid, StaggeredGrid};
 pub use drag::DragLaw;
@@ -211,7 +212,7 @@ struct Spans {
 /// sphere gets the Froude-Krylov force of the uniform gradient over its volume:
 ///
 /// ```text
-/// F_FK = V (−∇P_drive) ,  V = (4/3) π r³                       [N]
+/// F_FK = V (−∇P_drive) ,  V = (4/3) π r³ (a block's member: m_i / ρ_s)   [N]
 /// oscillatory drive: −∇P_drive = ρ_w dU_∞/dt = ρ_w U_max (2π/T) cos(2π t/T)
 /// ```
 ///
@@ -332,7 +333,22 @@ impl Coupling {
     /// ([`driving_force_density`]); unresolved: the fluid velocity at its centre, buoyancy and
     /// the Froude-Krylov force), which
     /// replaces the last one in the forces the next half kick uses. `dt` is the DEM step [s].
-    pub fn fluid_forces(&mut self, fluid: &Fluid, spheres: &mut Spheres, dt: f64) {
+    ///
+    /// The buoyancy and the Froude-Krylov force take a free sphere's whole volume
+    /// (4/3) π r³, and a block member's share of its block, V_i = m_i / ρ_s (its fitted mass,
+    /// `rigid::member_masses`, over its material's density in `materials`), resolved or not,
+    /// with air or without: the members overlap, and their whole volumes would count the
+    /// overlaps twice (the library cube's 27: 1.126 V). As Σ m_i = M = ρ_s V and
+    /// Σ m_i x_i = M x_g [34], Σ V_i = V and Σ V_i x_i = V x_g: a submerged block gets its
+    /// exact buoyancy −ρ_w V g at its centroid, and the drive's V (−∇P_drive). `materials` is
+    /// read only for block members (free spheres alone may pass `&[]`).
+    pub fn fluid_forces(
+        &mut self,
+        fluid: &Fluid,
+        spheres: &mut Spheres,
+        materials: &[Material],
+        dt: f64,
+    ) {
         spheres.with_fluid_loads();
         if self.compute_fractions(spheres) {
             self.accumulate_weights(spheres);
@@ -359,7 +375,11 @@ impl Coupling {
             .enumerate()
             .for_each(|(i, ((load, f), t))| {
                 let (x, r) = (s.position[i], s.radius[i]);
-                let volume = 4.0 / 3.0 * PI * r.powi(3);
+                let volume = if s.body[i] == NO_BODY {
+                    4.0 / 3.0 * PI * r.powi(3)
+                } else {
+                    s.mass[i] / materials[s.material[i] as usize].density
+                };
                 load.unresolved = !this.is_resolved(r);
                 // Buoyancy and the Froude-Krylov force of the driving gradient:
                 // V (−ρ_w g) + V (−∇P_drive). An unresolved sphere under air: ρ(α) at its
@@ -780,7 +800,7 @@ mod tests {
         let mut u_water = 0.0;
         for _ in 0..3 {
             fluid.step(dt);
-            coupling.fluid_forces(&fluid, &mut spheres, dt);
+            coupling.fluid_forces(&fluid, &mut spheres, &[], dt);
             let t_mid = fluid.time() - 0.5 * dt;
             let du_dt = u_max * TAU / period * (TAU * t_mid / period).cos();
             let expected = rho * volume * du_dt;

@@ -120,7 +120,8 @@ impl Simulation {
         self.check_fluid()?;
         if let (Some(c), Some(f)) = (&mut self.coupling, &self.fluid) {
             self.projected_divergence = f.max_divergence();
-            c.fluid_forces(f, &mut self.dem.spheres, dt); // [59] [61], held
+            let (spheres, materials) = (&mut self.dem.spheres, &self.dem.materials);
+            c.fluid_forces(f, spheres, materials, dt); // [59] [61], held
             let d = &self.dem;
             c.find_lubricated(&d.spheres, &d.walls, &d.domain, self.time, k * dt);
             clock = lap(clock, &mut self.times.fluid_loads);

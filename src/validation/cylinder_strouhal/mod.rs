@@ -139,7 +139,7 @@ pub fn run_cylinder(case: &CylinderCase) -> CylinderResult {
     let (mut lift, mut drag, mut time) = (Vec::new(), 0.0, 0.0);
     while fluid.time() < t_end - 1e-9 {
         let dt = fluid.step_adaptive(t_end);
-        coupling.fluid_forces(&fluid, &mut spheres, dt);
+        coupling.fluid_forces(&fluid, &mut spheres, &[], dt);
         coupling.correct(&mut fluid, &mut spheres, dt, dt);
         let f = coupling.obstacle_force;
         lift.push((fluid.time(), f.y / q));

@@ -7,17 +7,18 @@
 //! and ρ = 1: a periodic box, the flow driven by the uniform pressure gradient
 //! −∇P = ρ dU_∞/dt of U_∞(t) = U_m sin ωt ([`DrivingPressureGradient::Oscillatory`]), period
 //! T = KC D / U_m, ν = U_m D / (β KC), no subgrid model. The unit ([`Shape`]) is made of fixed
-//! resolved DEM spheres, one for the sphere, the cube's 27 members for the cube ([62] holds
-//! the water in them at rest, [59] gives their force, summed over the members, plus the
-//! Froude-Krylov force V_s (−∇P) of the drive on the volume V_s the grid sees, the union of
-//! the members' cell fractions). The in-line force F(t) is fitted by least squares over whole
-//! periods after a start-up with
+//! resolved DEM spheres, one for the sphere, the cube's 27 members for the cube, a block's
+//! members with its fitted masses ([62] holds the water in them at rest, [59] gives their
+//! force, plus the Froude-Krylov force of the drive, V_i (−∇P) on each member's share V_i of
+//! the unit's volume, `Coupling::fluid_forces`; all summed over the members). The in-line
+//! force F(t) is fitted by least squares over whole periods after a start-up with
 //!
 //! F = ½ ρ C_D A |U| U + ρ V C_M dU/dt   [N],
 //!
 //! A = π D²/4, V = π D³/6 (sphere) or A = D_n², V = D_n³ (cube, face-on) [m², m³], U the mean
-//! velocity of the water in the box [m s⁻¹]. The drive's Froude-Krylov force is ρ V_s dU/dt,
-//! so C_M = V_s/V + C_a (1 + C_a for the sphere, whose fractions hold its exact volume).
+//! velocity of the water in the box [m s⁻¹]. The drive's Froude-Krylov force is ρ V dU/dt
+//! (Σ V_i = V), so C_M = 1 + C_a for both units. (The grid sees the cube's volume as V_s, the
+//! union of the members' cell fractions: 1.09 V at D/Δ = 4; its added mass is the grid's.)
 
 pub mod report;
 pub mod shape;
@@ -27,6 +28,7 @@ use std::time::Instant;
 
 use crate::coupling::drag::clift_grace_weber_1978;
 use crate::coupling::{Coupling, CouplingMode, CouplingParameters};
+use crate::dem::material::Material;
 use crate::dem::spheres::{NewSphere, Spheres};
 use crate::fluid::forcing::DrivingPressureGradient;
 use crate::fluid::{Boundaries, Fluid, FluidParameters, StaggeredGrid};
@@ -96,8 +98,9 @@ pub struct MorisonResult {
     pub velocity_ratio: f64,
     /// The volume the grid sees, V_s = Σ_c min(1, Σ_i φ_ic) Δ³, over V [–].
     pub seen_volume: f64,
-    /// The members' volumes Σ_i (4/3) π r_i³ over V [–] (the coupling's Froude-Krylov and
-    /// buoyancy count each member whole, `coupling::Coupling::fluid_forces`).
+    /// The volume the coupling gives the Froude-Krylov force, Σ_i V_i over V [–]: the whole
+    /// sphere, the cube's members their shares m_i / ρ_s of the union
+    /// (`coupling::Coupling::fluid_forces`); 1 to round-off.
     pub member_volume: f64,
     /// (t [T], F_x [½ ρ A U_m²], U [U_m]) each step.
     pub history: Vec<(f64, f64, f64)>,
@@ -126,9 +129,23 @@ pub fn run_morison(case: &MorisonCase) -> MorisonResult {
     p.time_step.max = period / 100.0;
     let members = case.shape.members(0.5 * lengths);
     let seen = seen_volume(&grid, &members);
-    let member_volume: f64 = members.iter().map(|m| 4.0 / 3.0 * PI * m.1.powi(3)).sum();
     let mut fluid = Fluid::new(grid, Boundaries::periodic(), p).expect("valid set-up");
-    let (mut spheres, d_max) = fixed_spheres(&members, 1.0);
+    let (mut spheres, d_max) = fixed_spheres(&members, rho);
+    let materials = [unit_material(rho)];
+    if let Some((fractions, union)) = case.shape.block() {
+        // The cube is one block: its members carry the fitted masses m_i = f_i ρ_s V.
+        for (i, f) in fractions.iter().enumerate() {
+            spheres.body[i] = 0;
+            spheres.mass[i] = f * rho * union * d * d * d;
+            spheres.inertia[i] = 0.4 * spheres.mass[i] * spheres.radius[i].powi(2);
+        }
+    }
+    let member_volume: f64 = (0..spheres.len())
+        .map(|i| match case.shape.block() {
+            Some(_) => spheres.mass[i] / rho,
+            None => 4.0 / 3.0 * PI * spheres.radius[i].powi(3),
+        })
+        .sum();
     let mut coupling = Coupling::new(resolved(), &fluid, d_max);
     coupling.initialise(&mut fluid, &mut spheres);
     fluid.project();
@@ -142,20 +159,11 @@ pub fn run_morison(case: &MorisonCase) -> MorisonResult {
     let mut record: Vec<(f64, f64, f64)> = Vec::new();
     while fluid.time() < t_end - 1e-9 {
         let dt = fluid.step_adaptive(t_end);
-        coupling.fluid_forces(&fluid, &mut spheres, dt);
+        coupling.fluid_forces(&fluid, &mut spheres, &materials, dt);
         coupling.correct(&mut fluid, &mut spheres, dt, dt);
         let u = mean_x_velocity(&fluid) / water;
-        // The drive at the step's midpoint, as the coupling's Froude-Krylov force takes it.
-        let t_mid = fluid.time() - 0.5 * fluid.state().previous_dt;
-        let drive = fluid
-            .parameters()
-            .driving_pressure_gradient
-            .force_density(t_mid, rho)
-            .x;
-        // [59] summed over the members, the Froude-Krylov force on the seen volume V_s in
-        // place of the members' whole volumes (equal for the sphere).
-        let members_force: f64 = spheres.fluid.iter().map(|l| l.force.x).sum();
-        let f = members_force + (seen - member_volume) * drive;
+        // [59] and the drive's Froude-Krylov force on V_i, summed over the members.
+        let f: f64 = spheres.fluid.iter().map(|l| l.force.x).sum();
         record.push((fluid.time(), f, u));
     }
     let fit = fit_morison(&record, case.start_up as f64 * period, rho, area, volume);
@@ -183,6 +191,19 @@ fn resolved() -> CouplingParameters {
     CouplingParameters {
         mode: CouplingMode::Resolved,
         ..CouplingParameters::default()
+    }
+}
+
+/// The unit's material, of density `density` [kg m⁻³] (its elastic constants unused: the
+/// unit is fixed and alone).
+fn unit_material(density: f64) -> Material {
+    Material {
+        name: "unit".to_string(),
+        density,
+        young_modulus: 1.0e9,
+        poisson_ratio: 0.25,
+        friction_coefficient: 0.5,
+        restitution_coefficient: 0.5,
     }
 }
 

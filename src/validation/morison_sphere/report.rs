@@ -26,8 +26,8 @@ pub fn section(out: &Path, quick: bool, shape: Shape, md: &mut String) -> anyhow
              from potential flow (1.5) to the unsteady Stokes value",
         ),
         Shape::Cube => (
-            "The library's cube (27 fixed resolved spheres, D = D_n, a face to the flow; \
-             A = D_n², V = D_n³; the Froude-Krylov force on the volume V_s the grid sees)",
+            "The library's cube (a block of 27 fixed resolved spheres, D = D_n, a face to the \
+             flow; A = D_n², V = D_n³; the Froude-Krylov force on the members' shares of V)",
             "C_D from the quasi-steady drag of a cube (Haider & Levenspiel 1989, ψ = 0.806, on \
              the face area) to it plus the history drag scaled from the sphere's by S/V; C_M \
              from 1 + C_a, C_a = 0.64-0.70 (potential flow) to it plus the Stokes layer's part \

@@ -6,7 +6,9 @@
 //! spheres, METHOD.md §3), with nominal diameter D_n = V^(1/3) = D, V the volume of the union
 //! of its spheres. Each member is a fixed resolved sphere of the grid: [62] holds the water in it at rest, [59] gives its
 //! force, each face counted with the member's share of the solid on it, so that the sum over
-//! the members is the force on their union.
+//! the members is the force on their union. The members are a block's ([`Shape::block`]):
+//! each carries its fitted mass m_i = f_i ρ_s V, so that the coupling gives it the
+//! Froude-Krylov force of its share V_i = m_i / ρ_s of the union (Σ V_i = V).
 
 use std::f64::consts::PI;
 
@@ -67,6 +69,20 @@ impl Shape {
                     .zip(&t.members)
                     .map(|(x, m)| (x, m.radius))
                     .collect()
+            }
+        }
+    }
+
+    /// For a unit that is a block (the cube): its members' mass fractions f_i (Σ f_i = 1,
+    /// in the order of [`Shape::members`]) and the volume V of their union [D³]. None for the
+    /// lone sphere, a free sphere.
+    pub fn block(self) -> Option<(Vec<f64>, f64)> {
+        match self {
+            Shape::Sphere => None,
+            Shape::Cube => {
+                let t = library::cube(CUBE_PER_EDGE);
+                let fractions = t.members.iter().map(|m| m.mass_fraction).collect();
+                Some((fractions, t.volume))
             }
         }
     }

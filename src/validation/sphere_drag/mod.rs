@@ -118,7 +118,7 @@ pub fn run_sphere_drag(case: &SphereDragCase) -> SphereDragResult {
     let (mut history, mut sum, mut time) = (Vec::new(), 0.0, 0.0);
     while fluid.time() < t_end - 1e-9 {
         let dt = fluid.step_adaptive(t_end);
-        coupling.fluid_forces(&fluid, &mut spheres, dt);
+        coupling.fluid_forces(&fluid, &mut spheres, &[], dt);
         coupling.correct(&mut fluid, &mut spheres, dt, dt);
         let cd = spheres.fluid[0].force.x / q;
         history.push((fluid.time(), cd));
