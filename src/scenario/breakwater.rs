@@ -49,9 +49,9 @@ mod placement;
 mod profile;
 
 use super::armour::ArmourSection;
+use super::armour::UnitName;
 use super::blocks::template;
 use super::checks::{finite, non_negative, positive};
-use super::armour::UnitName;
 use super::schema::{BlockEntry, BlockSet, ListBlocks, PlaneWall, ShapeName, WallSection};
 use super::{ScenarioError, Source};
 use crate::armour::slope::Slope;

@@ -103,7 +103,7 @@ pub fn incident_sea(
 /// FFT bins. None when not one period fits.
 pub fn whole_periods(start: f64, end: f64, period: f64) -> Option<(f64, f64)> {
     let n = ((end - start) / period * (1.0 + 1e-12)).floor();
-    (n >= 1.0).then(|| (end - n * period, end))
+    (n >= 1.0).then_some((end - n * period, end))
 }
 
 #[cfg(test)]

@@ -341,7 +341,7 @@ impl ArmourOutput {
                 unit: MapUnit {
                     start: (q0.x, q0.y),
                     end: (q0.x + d.x, q0.y + d.y),
-                    moved: !(u.distance_dn <= 0.1),
+                    moved: u.distance_dn > 0.1,
                     displaced: u.displaced,
                     rocking: rocks >= 1,
                 },
