@@ -81,7 +81,8 @@ pub struct UnitMovement {
     pub distance_dn: f64,
     /// Δs = d·t, the along-slope part, > 0 up the slope [m]
     pub along_slope: f64,
-    /// the unit left the armour layer (or was removed from the simulation)
+    /// the unit left the armour layer it was in at the reference (or was removed from the
+    /// simulation)
     pub out_of_layer: bool,
     /// |d| > k D_n or out of the layer
     pub displaced: bool,
@@ -93,7 +94,10 @@ pub struct UnitMovement {
 /// stands for a unit removed from the simulation (it left the domain): displaced, out of the
 /// layer, direction unknown.
 ///
-/// d = p − p⁰ (Δy to the nearest periodic image), displaced ⇔ |d| > k D_n ∨ p ∉ layer.
+/// d = p − p⁰ (Δy to the nearest periodic image), displaced ⇔ |d| > k D_n ∨ (p⁰ ∈ layer ∧
+/// p ∉ layer): a unit that was not in the layer at the reference (a toe berm's, one past the
+/// crest) leaves it only by moving k D_n, so that it is not counted displaced for where it
+/// already was.
 pub fn unit_movement(slope: &Slope, layer: &ArmourLayer, p0: Vec3, p: Vec3) -> UnitMovement {
     if !crate::math::is_finite(p) {
         return UnitMovement {
@@ -109,7 +113,7 @@ pub fn unit_movement(slope: &Slope, layer: &ArmourLayer, p0: Vec3, p: Vec3) -> U
     d.y = slope.nearest_image_dy(d.y);
     let distance_dn = d.length() / layer.nominal_diameter;
     let along_slope = d.dot(slope.tangent());
-    let out_of_layer = !layer.contains(slope, p);
+    let out_of_layer = layer.contains(slope, p0) && !layer.contains(slope, p);
     let displaced = out_of_layer || distance_dn > layer.displaced_threshold_dn;
     let direction = displaced.then_some(if along_slope > 0.0 {
         SlopeDirection::Up
@@ -278,6 +282,21 @@ mod tests {
         p[201] -= 0.3 * dn() * t;
         let c = count_damage(&sl, &layer, &p0, &p);
         assert_eq!((c.displaced, c.displaced_up, c.displaced_down), (3, 1, 2));
+    }
+
+    /// Regression: a unit already past the crest (or in front of the toe) at the reference was
+    /// counted displaced and out of the layer at every row, though it never moved (the top
+    /// row of a two-layer pattern settled 5 mm past the crest before the waves came). It
+    /// leaves the layer only if it was in it; it is displaced only by moving k D_n.
+    #[test]
+    fn a_unit_out_of_the_layer_at_the_reference_counted_displaced_forever() {
+        let sl = slope();
+        let (layer, _) = layer_of_spheres(&sl);
+        let top = sl.to_flume_point(Vec3::new(20.5 * D, 0.0, 0.5 * D));
+        let still = unit_movement(&sl, &layer, top, top + Vec3::new(1e-9, 0.0, 0.0));
+        assert!(!still.displaced && !still.out_of_layer, "{still:?}");
+        let moved = unit_movement(&sl, &layer, top, top + 1.5 * dn() * sl.tangent());
+        assert!(moved.displaced && !moved.out_of_layer);
     }
 
     /// The same section with its units in another order gives the same counts, bit for bit.

@@ -326,7 +326,13 @@ pub fn pattern(
     let phi1 = phi / layers as f64;
     let across = ((w * phi1.sqrt() / d_n).round() as usize).max(1);
     let rows = ((phi1 * l * w / (d_n * d_n * across as f64)).round() as usize).max(1);
-    let (dy, ds) = (w / across as f64, l / rows as f64);
+    // Layer k is staggered k/2 rows up the slope: the rows are spaced so that the top layer's
+    // last row too lies half a spacing inside the crest (at s = l it hung half over it, and
+    // settled past the crest, out of the layer before the waves came).
+    let (dy, ds) = (
+        w / across as f64,
+        l / (rows as f64 + 0.5 * (layers - 1) as f64),
+    );
     let q = on_slope(&layer.slope);
     let m = turned(&layer.slope, unit, q);
     let ext = |k: usize| {
@@ -355,9 +361,9 @@ pub fn pattern(
             let shift = 0.5 * (row % 2) as f64 + 0.25 * k as f64;
             for j in 0..across {
                 let y = layer.slope.y_min + (j as f64 + shift) * dy;
-                let eta = drop_height(layer, &placed, &m, s.min(l), y)
+                let eta = drop_height(layer, &placed, &m, s, y)
                     .ok_or_else(|| format!("row {row} of layer {} leaves the domain", k + 1))?;
-                out.push(settle(layer, &mut placed, &m, (s.min(l), y, eta), q));
+                out.push(settle(layer, &mut placed, &m, (s, y, eta), q));
             }
         }
     }
@@ -463,5 +469,26 @@ mod tests {
         assert_eq!(units.len() % (2 * across), 0);
         assert!(min_clearance(&l, &u, &units) >= l.gap - 1e-12);
         assert!(pattern(&l, &u, 1, 3.0).is_err());
+    }
+
+    /// The second layer's last row was centred on the crest line (s = l), half over it: its
+    /// units settled past the crest, out of the layer from the start. Every layer's centres
+    /// now lie at least half a row spacing inside the slope.
+    #[test]
+    fn pattern_top_row_hung_over_the_crest() {
+        let (l, u) = (layer(), flat_stone());
+        for layers in [1, 2] {
+            let (units, across) = pattern(&l, &u, layers, 0.4 * layers as f64).unwrap();
+            let rows = units.len() / (across * layers as usize);
+            let ds = l.length / (rows as f64 + 0.5 * (layers - 1) as f64);
+            for p in &units {
+                let (s, _) = l.slope.to_slope(p.centre.x, p.centre.z);
+                assert!(
+                    s > 0.0 && s <= l.length - 0.5 * ds + 1e-9,
+                    "s = {s}, l = {}",
+                    l.length
+                );
+            }
+        }
     }
 }
