@@ -14,8 +14,9 @@ use super::validity::{
     VAN_DER_MEER_TETRAPOD_RANGES,
 };
 
-/// The kind of armour unit, which picks the formulas.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// The kind of armour unit, which picks the formulas (`[armour] unit`, by [`ArmourUnit::name`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum ArmourUnit {
     /// Quarry stone: Van der Meer's rock formula (damage S) and Hudson's rough angular stone.
     Rock,

@@ -71,7 +71,7 @@ pub struct ArmourSection {
     /// The unit, which picks the report's design formulas: "rock" (default), "cube",
     /// "tetrapod".
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub unit: Option<UnitName>,
+    pub unit: Option<ArmourUnit>,
     /// Van der Meer's notional permeability P of the structure [-] (default 0.4: a two-layer
     /// armour on a filter over a permeable core, Van der Meer 1988; 0.1 impermeable core,
     /// 0.5 no filter, 0.6 homogeneous).
@@ -82,27 +82,11 @@ pub struct ArmourSection {
     pub analysis_start: Option<f64>,
 }
 
-/// `[armour] unit`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum UnitName {
-    /// Quarry stone.
-    Rock,
-    /// Concrete cubes.
-    Cube,
-    /// Tetrapods.
-    Tetrapod,
-}
-
-impl UnitName {
-    /// The unit of `crate::armour::design`.
-    pub fn unit(self) -> ArmourUnit {
-        match self {
-            UnitName::Rock => ArmourUnit::Rock,
-            UnitName::Cube => ArmourUnit::Cube,
-            UnitName::Tetrapod => ArmourUnit::Tetrapod,
-        }
-    }
+/// ρ_s [kg m⁻³] of the armour units: the first block template's material.
+pub fn unit_density(src: &Source) -> Option<f64> {
+    let sc = &src.scenario;
+    let name = &sc.block_templates.first()?.material;
+    Some(sc.materials.iter().find(|m| &m.name == name)?.density)
 }
 
 /// The default notional permeability P [-] (a two-layer armour, filter, permeable core).
@@ -237,7 +221,7 @@ pub fn armour_settings(src: &Source) -> Result<Option<ArmourSettings>, ScenarioE
         wave_period,
         wave_height: waves.and_then(|w| w.height.or(w.significant_height)),
         interval,
-        unit: a.unit.map_or(ArmourUnit::Rock, UnitName::unit),
+        unit: a.unit.unwrap_or(ArmourUnit::Rock),
         permeability,
         analysis_start,
     }))

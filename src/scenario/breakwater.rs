@@ -49,11 +49,11 @@ mod placement;
 mod profile;
 
 use super::armour::ArmourSection;
-use super::armour::UnitName;
 use super::blocks::template;
 use super::checks::{finite, non_negative, positive};
 use super::schema::{BlockEntry, BlockSet, ListBlocks, PlaneWall, ShapeName, WallSection};
 use super::{ScenarioError, Source};
+use crate::armour::design::ArmourUnit;
 use crate::armour::slope::Slope;
 use crate::rigid::templates::BlockTemplate;
 
@@ -414,9 +414,9 @@ fn expansion(src: &Source, b: &BreakwaterSection) -> Result<Expansion, ScenarioE
         interval: None,
         // The report's formulas follow the units' shape (a user's own shape: rock's).
         unit: Some(match shape {
-            ShapeName::Cube => UnitName::Cube,
-            ShapeName::Tetrapod => UnitName::Tetrapod,
-            _ => UnitName::Rock,
+            ShapeName::Cube => ArmourUnit::Cube,
+            ShapeName::Tetrapod => ArmourUnit::Tetrapod,
+            _ => ArmourUnit::Rock,
         }),
         notional_permeability: None,
         analysis_start: None,

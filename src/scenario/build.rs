@@ -3,7 +3,7 @@
 //! one every time, and the memory is refused before anything in proportion to it is
 //! allocated), and the derived quantities of `riprap check` are computed.
 
-use super::armour::{armour_settings, report_line as armour_line};
+use super::armour::{armour_settings, report_line as armour_line, unit_density};
 use super::blocks::{build_blocks, template};
 use super::checks::{material_of, non_negative, positive};
 use super::contact::{contact_laws, materials, Materials};
@@ -397,10 +397,7 @@ fn derived(src: &Source, dem: &Dem, blocks: usize, r: Report) -> Derived {
 /// (ρ_s, ρ_w) [kg m⁻³] of the first block template's material and the water, for the armour's
 /// stability number; None without a flow.
 fn densities(src: &Source, fluid: Option<&FluidDerived>) -> Option<(f64, f64)> {
-    let sc = &src.scenario;
-    let name = &sc.block_templates.first()?.material;
-    let rho_s = sc.materials.iter().find(|m| &m.name == name)?.density;
-    Some((rho_s, fluid?.parameters.density))
+    Some((unit_density(src)?, fluid?.parameters.density))
 }
 
 #[cfg(test)]

@@ -237,9 +237,7 @@ impl ArmourOutput {
         }
         let a = &self.settings;
         let face_area = a.slope.width * (a.layer.crest_z - a.slope.toe_z) / a.slope.cos_sin().1;
-        let in_layer = (self.p0.iter())
-            .filter(|p| a.layer.contains(&a.slope, **p))
-            .count();
+        let in_layer = map.iter().filter(|u| u.in_layer).count();
         let largest = map.iter().map(|u| u.distance_dn).fold(0.0, f64::max);
         let section = Section {
             units: map.len(),
@@ -350,6 +348,7 @@ impl ArmourOutput {
                 } else {
                     0.0
                 },
+                in_layer: layer.contains(slope, p0),
             });
         }
         Ok(map)
@@ -497,10 +496,12 @@ impl ArmourOutput {
     }
 }
 
-/// One unit on the map, with its movement [D_n] (0 for a removed unit).
+/// One unit on the map, with its movement [D_n] (0 for a removed unit) and whether it was in
+/// the layer at t_ref.
 struct UnitOnMap {
     unit: MapUnit,
     distance_dn: f64,
+    in_layer: bool,
 }
 
 /// The rows of armour.csv (the whole run, restarts included).

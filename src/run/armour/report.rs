@@ -27,7 +27,7 @@ use crate::armour::design::{design_check, ArmourUnit, DesignCheck, Structure};
 use crate::armour::formulas::{BreakerType, RockSlope, SeaState};
 use crate::fluid::sea_state::{incident_sea, whole_periods, Band, IncidentSea};
 use crate::fluid::waves::wavenumber;
-use crate::scenario::armour::ArmourSettings;
+use crate::scenario::armour::{unit_density, ArmourSettings};
 use crate::scenario::fluid::Theory;
 use crate::scenario::Source;
 use crate::simulation::Simulation;
@@ -41,7 +41,7 @@ pub struct ReportContext {
     pub densities: Option<(f64, f64)>,
     /// |g| [m s⁻²].
     pub gravity: f64,
-    /// The gauges (x, y) [m] in the order of gauges.csv, and their interval [s].
+    /// The gauges (x, y) [m] in the order of gauges.csv.
     pub gauges: Vec<[f64; 2]>,
     /// The gauges' interval [s].
     pub gauge_interval: f64,
@@ -72,9 +72,7 @@ impl ReportContext {
     /// Gathers the context of a run of `src`.
     pub fn gather(src: &Source, sim: &Simulation, settings: &ArmourSettings) -> ReportContext {
         let sc = &src.scenario;
-        let rho_s = (sc.block_templates.first())
-            .and_then(|t| sc.materials.iter().find(|m| m.name == t.material))
-            .map(|m| m.density);
+        let rho_s = unit_density(src);
         let fluid = sim.fluid.as_ref();
         let rho_w = fluid.map(|f| f.parameters().density);
         let section = sc.fluid.as_ref();
@@ -120,7 +118,7 @@ pub struct Incident {
     pub sea: Option<IncidentSea>,
     /// The gauges used, by index in gauges.csv.
     pub used: Vec<usize>,
-    /// H_s [m] and T_m [s] for the formulas, and where they come from.
+    /// H_s [m] for the formulas.
     pub height: f64,
     /// T_m [s].
     pub period: f64,
