@@ -56,7 +56,7 @@
 //!
 //! **Under air** (a free surface, `fluid::phases`): the mixture of [53] has three parts,
 //! ρ̄ = ρ(α) (1 − φ) + Σ_i φ_ic ρ_i, and the flow gets φ and Σ_i φ_ic ρ_i (`fluid::solids`:
-//! the mixture's inertia, the fluid phases' weight, α inside solids extended from the fluid
+//! the inertia of a face's fluid and solid parts, the fluid phases' weight, α inside solids extended from the fluid
 //! around them). p̄ then holds the air's hydrostatic pressure, which [59]'s sum by shares over
 //! every face a sphere touches would apply to a body thicker than the sphere: [59] takes the
 //! pressure less its hydrostatic part ([`resolved::FlowView::force_density`]), and the

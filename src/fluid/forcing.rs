@@ -66,8 +66,8 @@ pub fn body_acceleration(drive_a: f64, rho_f: f64, rho_w: f64, g_a: f64, force_a
     (drive_a + (rho_f - rho_w) * g_a + force_a) / rho_f
 }
 
-/// B_a of [51] on a face of a mixture of solids, water and air [m s⁻²]: the mixture's
-/// inertia ρ̄_f [kg m⁻³], the fluid phases' weight density `weight` = ρ_f(α) − ρ_w [kg m⁻³]
+/// B_a of [51] on a face of a mixture of solids, water and air [m s⁻²]: the face's
+/// inertia ρ̃_f [kg m⁻³], the fluid phases' weight density `weight` = ρ_f(α) − ρ_w [kg m⁻³]
 /// (`super::solids`), gravity `g_a`, the drive and F as in [`body_acceleration`].
 #[inline]
 pub fn solid_body_acceleration(

@@ -85,7 +85,7 @@ impl Fluid {
 
         // With air, ρ_f on the faces from α, and the stress divergence carries μ(α) + μ_SGS
         // (`phases`). With solids of the coupling, α inside them is first the fluid's around
-        // them, and ρ_f becomes the mixture's ρ̄_f (`solids`).
+        // them, and ρ_f becomes the face's inertia ρ̃_f of fluid and solid (`solids`).
         if let Some(air) = &par.air {
             if let Some(solids) = &mut self.solids {
                 let alpha = &mut state.water_fraction;
@@ -189,7 +189,7 @@ impl Fluid {
                         }
                         None => (at(rho, 0), at(rho, -sa)),
                     };
-                    // With solids in air: the mixture's inertia, the fluid's weight (`solids`).
+                    // With solids in air: the face's inertia ρ̃_f, the fluid's weight (`solids`).
                     let w = weight.map(|w| at(&w[a], 0));
                     for (i, u) in u_row.iter_mut().enumerate() {
                         let rho_f = 0.5 * (rho_c[i] + rho_m[i]);

@@ -25,11 +25,11 @@ pub enum Inertia<'a> {
     Cells(&'a [f64]),
     /// ρ_f on the a-faces themselves [kg m⁻³] (water and air: `phases::face_density`).
     Faces(&'a [f64]),
-    /// With solids in water under air: the mixture's ρ̄_f on the a-faces for the inertia, and
+    /// With solids in water under air: the face's ρ̃_f (`solids`) on the a-faces for the inertia, and
     /// the fluid's own ρ_f(α) for the weights of the transported velocity [kg m⁻³]
     /// (`super::solids`: the solids' mass is not carried by the flow).
     Mixture {
-        /// ρ̄_f [kg m⁻³].
+        /// ρ̃_f [kg m⁻³].
         inertia: &'a [f64],
         /// ρ_f(α) [kg m⁻³].
         fluid: &'a [f64],
