@@ -31,7 +31,8 @@ use anyhow::{bail, Context};
 
 use crate::dem::{self, spheres::NO_BODY};
 use crate::io::blocks::{
-    block_rows, write_block_points, write_breakages, DisplacementReference, BLOCK_COLUMNS,
+    block_rows, write_block_points, write_breakages, write_wires, DisplacementReference,
+    BLOCK_COLUMNS,
 };
 use crate::io::checkpoint::Checkpoint;
 use crate::io::csv::{read_csv, CsvSeries};
@@ -640,6 +641,9 @@ impl BlockOutput {
         write_block_points(&sim.rigid, &out.join(&name), *format)?;
         pvd.add(sim.time, &name, 0)?;
         block_rows(&sim.rigid, sim.time, csv)?;
+        if !sim.rigid.wires.is_empty() {
+            write_wires(&sim.rigid, sim.time, &out.join("wires.csv"))?;
+        }
         write_breakages(&sim.rigid, &out.join("breakages.csv"))
     }
 }

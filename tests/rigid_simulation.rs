@@ -258,22 +258,21 @@ fn a_wire_pulled_past_its_breaking_force_breaks_and_is_logged() {
     );
     let weight = rigid.blocks.mass[0] * G;
     let top = Vec3::new(0.0, 0.0, 0.025);
-    rigid.wires.push(WireLink {
-        wire: Wire {
+    rigid.wires.push(WireLink::new(
+        Wire {
             slack_length: 0.201,
             stiffness: 1.0e4,
             damping: 0.0,
             breaking_force: 1.5 * weight,
         },
-        ends: [
+        [
             LinkEnd::Fixed(Vec3::new(0.0, 0.0, 0.225)),
             LinkEnd::Block {
                 block: id,
                 point: top,
             },
         ],
-        broken: false,
-    });
+    ));
     let mut sim = Simulation::with_bodies(dem, vec![], rigid, 1e-3);
     let mut highest_after = f64::MIN;
     while sim.time < 0.2 {
@@ -293,6 +292,57 @@ fn a_wire_pulled_past_its_breaking_force_breaks_and_is_logged() {
     assert!((b.position.x).abs() < 1e-9 && b.position.z > 0.0);
     // After breaking: free fall (velocity decreasing at g).
     assert!(sim.rigid.blocks.velocity[0].z < highest_after);
+}
+
+/// A cube hung on a critically damped wire comes to rest at the static stretch: the wire
+/// records the tension it carries (the block's weight, to 1e-6 after 0.5 s: the damping
+/// leaves e^(−ω t) ≈ 1e-16 of the snatch) and its peak, which comes once the 1 mm of slack
+/// is taken up (√(2h/g) = 14.3 ms of fall; critically damped, the damper's jolt c √(2 g h)
+/// then) and is below the undamped snatch m g (1 + √(1 + 2 k h/(m g))) plus that jolt.
+#[test]
+fn a_wire_records_the_tension_it_carries_and_its_peak() {
+    let t = library::cube(2).with_nominal_diameter(0.05);
+    let (mut dem, mut rigid) = setup(0.5, 0.3, 0.0, 1e-5, vec![t]);
+    dem.walls.clear();
+    let id = add(
+        &mut dem,
+        &mut rigid,
+        0,
+        RigidState::at_rest(Vec3::ZERO, Quat::IDENTITY),
+    );
+    let m = rigid.blocks.mass[0];
+    let (k, h) = (1.0e4, 0.001);
+    let c = 2.0 * (k * m).sqrt();
+    rigid.wires.push(WireLink::new(
+        Wire {
+            slack_length: 0.2 + h,
+            stiffness: k,
+            damping: c,
+            breaking_force: f64::INFINITY,
+        },
+        [
+            LinkEnd::Fixed(Vec3::new(0.0, 0.0, 0.225)),
+            LinkEnd::Block {
+                block: id,
+                point: Vec3::new(0.0, 0.0, 0.025),
+            },
+        ],
+    ));
+    let mut sim = Simulation::with_bodies(dem, vec![], rigid, 1e-3);
+    while sim.time < 0.5 {
+        sim.step().expect("stable");
+    }
+    let w = &sim.rigid.wires[0];
+    let weight = m * G;
+    let snatch = weight * (1.0 + (1.0 + 2.0 * k * h / weight).sqrt()) + c * (2.0 * G * h).sqrt();
+    eprintln!(
+        "tension {:.6} N (weight {weight:.6} N), peak {:.4} N at {:.4} s (bound {snatch:.4} N)",
+        w.tension, w.peak.0, w.peak.1
+    );
+    assert!((w.tension / weight - 1.0).abs() < 1e-6);
+    assert!(w.peak.0 > weight && w.peak.0 < snatch);
+    let fall = (2.0 * h / G).sqrt(); // 14.3 ms to take up the slack
+    assert!(w.peak.1 > fall - 1e-4 && w.peak.1 < fall + 0.05);
 }
 
 /// A heap of 20 rock blocks dropped together: the state is bitwise the same on 1 and 2 threads.

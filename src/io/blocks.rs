@@ -119,6 +119,28 @@ pub fn block_rows(r: &RigidBodies, time: f64, csv: &mut CsvSeries) -> std::io::R
     Ok(())
 }
 
+/// Rewrites `wires.csv`: each wire's law, its tension now and the largest it carried so far,
+/// with when (issue 29: the forces the wires between armour units carry).
+pub fn write_wires(r: &RigidBodies, time: f64, path: &Path) -> std::io::Result<()> {
+    let mut s = String::from(
+        "wire,slack_length,stiffness,breaking_force,time,tension,peak_tension,peak_time,broken\n",
+    );
+    for (i, w) in r.wires.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "{i},{:?},{:?},{:?},{time:?},{:?},{:?},{:?},{}",
+            w.wire.slack_length,
+            w.wire.stiffness,
+            w.wire.breaking_force,
+            w.tension,
+            w.peak.0,
+            w.peak.1,
+            u8::from(w.broken)
+        );
+    }
+    super::write_replacing(path, s.as_bytes())
+}
+
 /// Rewrites `breakages.csv` with every link broken so far.
 pub fn write_breakages(r: &RigidBodies, path: &Path) -> std::io::Result<()> {
     let mut s = String::from("time,kind,index,x,y,z\n");

@@ -22,8 +22,8 @@ const MAGIC: &[u8; 8] = b"RIPRAPCK";
 /// 2: blocks and links; 3: the fluid state; 4: the storage order, the neighbour-build
 /// positions, the contact history by pair, and the fluid's held load on each sphere
 /// (`Spheres::fluid`); 5: the scenario's fingerprint (`run::fingerprint`); 7: the armour's
-/// damage bookkeeping ([`ArmourState`]).
-const VERSION: u32 = 7;
+/// damage bookkeeping ([`ArmourState`]); 8: each wire's tension and its peak.
+const VERSION: u32 = 8;
 
 /// The saved state.
 #[derive(Clone, Debug, Serialize, Deserialize)]

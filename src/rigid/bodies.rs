@@ -50,6 +50,23 @@ pub struct WireLink {
     pub ends: [LinkEnd; 2],
     /// True once broken (for good).
     pub broken: bool,
+    /// The tension at the last evaluation [N] (zero slack, or broken).
+    pub tension: f64,
+    /// The largest tension so far [N] and when [s] (the armour report's "forces they carried").
+    pub peak: (f64, f64),
+}
+
+impl WireLink {
+    /// A new, slack wire.
+    pub fn new(wire: Wire, ends: [LinkEnd; 2]) -> WireLink {
+        WireLink {
+            wire,
+            ends,
+            broken: false,
+            tension: 0.0,
+            peak: (0.0, 0.0),
+        }
+    }
 }
 
 /// A bond between two spheres (free spheres or members of different blocks), with its history.
@@ -247,6 +264,10 @@ impl RigidBodies {
                 + domain.minimum_image(anchors[1].position - anchors[0].position);
             let link = &mut self.wires[w];
             let f = wire_force(&link.wire, &anchors[0], &anchors[1], &mut link.broken);
+            link.tension = f.length();
+            if link.tension > link.peak.0 {
+                link.peak = (link.tension, time);
+            }
             if link.broken {
                 self.breakages.push(Breakage {
                     time,

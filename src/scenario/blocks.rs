@@ -455,11 +455,7 @@ fn build_wires(
                 None => f64::INFINITY,
             },
         };
-        rigid.wires.push(WireLink {
-            wire,
-            ends,
-            broken: false,
-        });
+        rigid.wires.push(WireLink::new(wire, ends));
     }
     Ok(())
 }

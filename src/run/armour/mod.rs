@@ -257,6 +257,7 @@ impl ArmourOutput {
                 design: design.as_ref(),
                 figures: plots,
                 cost: self.cost(sim.time),
+                wires: &sim.rigid.wires,
             },
         )
         .context("cannot write armour_report.md")?;

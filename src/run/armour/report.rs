@@ -27,6 +27,7 @@ use crate::armour::design::{design_check, ArmourUnit, DesignCheck, Structure};
 use crate::armour::formulas::{BreakerType, RockSlope, SeaState};
 use crate::fluid::sea_state::{incident_sea, whole_periods, Band, IncidentSea};
 use crate::fluid::waves::wavenumber;
+use crate::rigid::bodies::WireLink;
 use crate::scenario::armour::{unit_density, ArmourSettings};
 use crate::scenario::fluid::Theory;
 use crate::scenario::Source;
@@ -277,6 +278,8 @@ pub struct Report<'a> {
     pub figures: bool,
     /// Wall time per wave period [s] and the worker threads, in this process.
     pub cost: Option<(f64, usize)>,
+    /// The wires between units, with the tensions they carried.
+    pub wires: &'a [WireLink],
 }
 
 /// Writes `armour_report.md` in `out`.
@@ -304,6 +307,7 @@ pub fn markdown(r: &Report) -> String {
         design_section(&mut m, d, waves_at_toe(inc, s.times.1));
     }
     damage_section(&mut m, r);
+    wires_section(&mut m, r);
     if r.figures {
         let _ = writeln!(
             m,
@@ -363,6 +367,13 @@ fn structure_section(m: &mut String, r: &Report) {
         "| units at t_ref | {} ({} in the layer) |\n| packing density at t_ref | φ = N D_n²/A \
          = {phi:.3} (A = {:.4} m², the face from toe to crest across {} m) |",
         s.units, s.in_layer, s.face_area, a.slope.width
+    );
+    // A unit's volume is D_n³ by the definition of D_n, so N D_n³ / (A t_a) is the layer's
+    // solid share (the Rock Manual's φ = n k_t (1 − n_v) read the other way).
+    let _ = writeln!(
+        m,
+        "| layer porosity at t_ref | n_v = 1 − N D_n³/(A t_a) = {:.3} |",
+        1.0 - phi * dn / a.layer.thickness
     );
     let _ = writeln!(
         m,
@@ -482,6 +493,50 @@ fn design_section(m: &mut String, d: &DesignCheck, n: f64) {
         }
         let _ = writeln!(m);
     }
+}
+
+/// The largest tension each wire carried, against its breaking force and a unit's submerged
+/// weight (ρ_s − ρ_w) g D_n³.
+fn wires_section(m: &mut String, r: &Report) {
+    if r.wires.is_empty() {
+        return;
+    }
+    let dn = r.settings.layer.nominal_diameter;
+    let weight = r
+        .ctx
+        .densities
+        .map(|(rs, rw)| (rs - rw) * r.ctx.gravity * dn.powi(3));
+    let _ = writeln!(
+        m,
+        "## Wires
+
+The largest tension each wire carried (`wires.csv` every output); the same \
+         section without its `[[wires]]` shows what they hold.{}\n\n| wire | peak tension [N] \
+         | at t [s] | of breaking force | of a unit's submerged weight | broken |\n|---:|---:|\
+         ---:|---:|---:|---|",
+        weight.map_or(String::new(), |w| format!(
+            " A unit's submerged weight is {w:.3} N."
+        ))
+    );
+    for (i, w) in r.wires.iter().enumerate() {
+        let share = |x: f64| {
+            if x.is_finite() && x > 0.0 {
+                format!("{:.2}", w.peak.0 / x)
+            } else {
+                "–".into()
+            }
+        };
+        let _ = writeln!(
+            m,
+            "| {i} | {:.4} | {:.3} | {} | {} | {} |",
+            w.peak.0,
+            w.peak.1,
+            share(w.wire.breaking_force),
+            share(weight.unwrap_or(0.0)),
+            if w.broken { "yes" } else { "no" }
+        );
+    }
+    let _ = writeln!(m);
 }
 
 fn damage_section(m: &mut String, r: &Report) {
@@ -683,6 +738,16 @@ mod tests {
             times: (1.0, 8.0),
             moved: (3, 0.6),
         };
+        let mut wire = WireLink::new(
+            crate::rigid::links::Wire {
+                slack_length: 0.05,
+                stiffness: 1e3,
+                damping: 0.0,
+                breaking_force: 10.0,
+            },
+            [crate::rigid::bodies::LinkEnd::Fixed(crate::math::Vec3::ZERO); 2],
+        );
+        wire.peak = (2.0, 3.5);
         let md = markdown(&Report {
             ctx: &ctx,
             settings: &a,
@@ -692,10 +757,12 @@ mod tests {
             design: Some(&design),
             figures: true,
             cost: Some((96.0, 1)),
+            wires: &[wire],
         });
         for s in [
             "## The structure",
             "packing density at t_ref | φ = N D_n²/A = 0.426",
+            "layer porosity at t_ref | n_v = 1 − N D_n³/(A t_a) = 0.574",
             "## Incident waves at the toe",
             "K_r = 0.200",
             "## The design formulas",
@@ -706,6 +773,9 @@ mod tests {
             "| 8.00 |",
             "armour_units.png",
             "100 waves take 2.7 h",
+            "## Wires",
+            "submerged weight is 1.036 N",
+            "| 0 | 2.0000 | 3.500 | 0.20 | 1.93 | no |",
         ] {
             assert!(md.contains(s), "missing {s:?} in\n{md}");
         }
