@@ -52,6 +52,8 @@ pub struct HarbourBench {
     pub debris: f64,
     /// Wall-clock seconds of the loop (flow + debris + the loop itself).
     pub wall: f64,
+    /// CPU seconds of the process over the loop, all threads (`None` off Linux).
+    pub cpu: Option<f64>,
 }
 
 impl HarbourBench {
@@ -84,6 +86,7 @@ pub fn run_harbour_bench(
     let pieces = debris.as_ref().map_or(0, |d| d.pieces().len());
     let (mut flow, mut debris_s) = (0.0, 0.0);
     let mut next_report = 0.1;
+    let cpu0 = super::flume::cpu_seconds();
     let started = Instant::now();
     while w.time() < end {
         let clock = Instant::now();
@@ -119,6 +122,7 @@ pub fn run_harbour_bench(
         flow,
         debris: debris_s,
         wall: started.elapsed().as_secs_f64(),
+        cpu: super::flume::cpu_seconds().zip(cpu0).map(|(b, a)| b - a),
     })
 }
 
@@ -156,6 +160,14 @@ pub fn run_cli(args: &HarbourBenchArgs) -> anyhow::Result<()> {
             f64::NAN
         }
     );
+    if let Some(cpu) = b.cpu {
+        let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+        println!(
+            "CPU {cpu:.2} s over the loop ({:.2} of {threads} cores busy; load average {})",
+            cpu / b.wall,
+            load.split_whitespace().take(3).collect::<Vec<_>>().join(" ")
+        );
+    }
     let hour = b.wall_per_simulated_second() * b.target;
     let label = if b.simulated >= b.target {
         "measured"
