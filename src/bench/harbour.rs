@@ -165,7 +165,10 @@ pub fn run_cli(args: &HarbourBenchArgs) -> anyhow::Result<()> {
         println!(
             "CPU {cpu:.2} s over the loop ({:.2} of {threads} cores busy; load average {})",
             cpu / b.wall,
-            load.split_whitespace().take(3).collect::<Vec<_>>().join(" ")
+            load.split_whitespace()
+                .take(3)
+                .collect::<Vec<_>>()
+                .join(" ")
         );
     }
     let hour = b.wall_per_simulated_second() * b.target;
