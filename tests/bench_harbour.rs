@@ -35,7 +35,10 @@ fn the_bench_steps_flow_and_debris_and_splits_the_time() {
     assert!(b.simulated == 0.2 && b.steps >= 3, "{b:?}");
     // The debris advanced in sub-steps of at most 1.804e-3 s over the 0.2 s.
     assert!(b.substeps >= 111, "{}", b.substeps);
-    assert!(b.flow > 0.0 && b.debris > 0.0 && b.flow + b.debris <= b.wall, "{b:?}");
+    assert!(
+        b.flow > 0.0 && b.debris > 0.0 && b.flow + b.debris <= b.wall,
+        "{b:?}"
+    );
     let alone = run_harbour_bench(&source(), Some(0.2), false).unwrap();
     assert_eq!((alone.pieces, alone.substeps, alone.debris), (0, 0, 0.0));
     assert_eq!(alone.steps, b.steps);
