@@ -285,6 +285,11 @@ fn a_surface_slope_pushes_a_floating_box_by_its_froude_krylov_and_added_mass_for
 
 /// Rows of boxes carried by a current into a wall, through their contacts.
 fn pile_up(steps: usize) -> (Debris, Uniform) {
+    pile_up_at(steps, Structure::Box([20.0, -30.0], [24.0, 30.0]))
+}
+
+/// [`pile_up`] against `wall`.
+fn pile_up_at(steps: usize, wall: Structure) -> (Debris, Uniform) {
     let flow = Uniform {
         depth: 3.0,
         velocity: [3.0, 0.4],
@@ -302,8 +307,7 @@ fn pile_up(steps: usize) -> (Debris, Uniform) {
             pieces.push(piece(&format!("c{i}{j}"), c, false, at, 0.05 * j as f64));
         }
     }
-    let wall = [Structure::Box([20.0, -30.0], [24.0, 30.0])];
-    let mut d = Debris::new(Parameters::default(), pieces, &wall, EXTENT, &flow).unwrap();
+    let mut d = Debris::new(Parameters::default(), pieces, &[wall], EXTENT, &flow).unwrap();
     for _ in 0..steps {
         d.advance(&flow, 0.1).unwrap();
     }
@@ -339,6 +343,22 @@ fn boxes_pile_up_against_a_structure_and_give_the_same_bits_on_1_and_2_threads()
     for i in 0..b.len() {
         assert!(b.centre[i].x < 20.0, "{}", b.centre[i].x);
     }
+}
+
+#[test]
+fn boxes_pile_up_against_a_polygon_wall_with_the_same_bits_on_1_and_2_threads() {
+    // A wedge whose face leans across the current: the boxes slide along it.
+    let wedge = || Structure::Polygon(vec![[20.0, -30.0], [32.0, -30.0], [26.0, 30.0]]);
+    let run = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| pile_up_at(200, wedge()).0)
+    };
+    let (one, two) = (run(1), run(2));
+    assert_eq!(bits(&one), bits(&two));
+    assert!(one.dem().stats.wall_contacts > 0);
 }
 
 #[test]
