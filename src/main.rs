@@ -118,6 +118,9 @@ enum BenchCase {
     /// --scale 1 for its 1.6 million cells): wall time per wave period, split into momentum,
     /// interface, pressure and relaxation zones.
     Flume(riprap::bench::flume::FlumeBenchArgs),
+    /// The tsunami harbour of issue 31 (bench/harbour/harbour.toml: a million cells, a
+    /// thousand containers, an hour): wall time split into flow and debris, cell updates/s.
+    Harbour(riprap::bench::harbour::HarbourBenchArgs),
 }
 
 /// `riprap bench fluid --dam-break N`: the validation case `dam_break` at a/`n`, run as it is
@@ -503,6 +506,9 @@ fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
         Command::Bench {
             case: BenchCase::Flume(args),
         } => riprap::bench::flume::run_cli(&args).map(|()| None),
+        Command::Bench {
+            case: BenchCase::Harbour(args),
+        } => riprap::bench::harbour::run_cli(&args).map(|()| None),
         Command::Validate {
             quick,
             output,

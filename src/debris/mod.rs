@@ -55,8 +55,9 @@
 //! [`load::Phase::Sunk`]), at the time [`load::sinking_time`] predicts.
 //!
 //! **Contacts** by the DEM: each block is a row of spheres of radius B/2 (see
-//! [`shape::BoxShape::members`]) in a horizontal plane, the DEM's spheres; structures given as
-//! rectangles are DEM boxes (solid cuboids). The Hooke law with history
+//! [`shape::BoxShape::members`]) in a horizontal plane, the DEM's spheres; structures
+//! ([`Structure`]) given as rectangles are DEM boxes (solid cuboids), polygons the vertical
+//! side faces of their prisms (a DEM triangle mesh, two triangles per edge). The Hooke law with history
 //! (`hooke_history`) acts between them, its normal stiffness `contact_stiffness` and its
 //! damping set for the restitution `contact_restitution` between two of the lightest blocks.
 //! The member spheres carry their block's mass (the law's dashpot m* γ_n is then that of two
@@ -90,7 +91,7 @@ pub mod shape;
 mod tests;
 
 pub use load::Phase;
-pub use pieces::{Debris, DebrisState, Piece, PieceState, Report};
+pub use pieces::{Debris, DebrisState, Piece, PieceState, Report, Structure};
 pub use shape::{BoxShape, Container};
 
 use serde::{Deserialize, Serialize};

@@ -15,10 +15,66 @@ use crate::dem::spheres::{NewSphere, Spheres};
 use crate::dem::wall_contacts::SavedWallContacts;
 use crate::dem::walls::{Motion, Shape, Wall};
 use crate::dem::Dem;
-use crate::geometry::Cuboid;
+use crate::geometry::{Cuboid, TriMesh};
 use crate::math::{Quat, Vec3};
 use crate::rigid::blocks::{Blocks, RigidState};
 use crate::rigid::newton_euler::drift;
+
+/// A structure the pieces collide with, standing through their contact plane: a rectangle
+/// (a DEM box) or a polygon (a DEM triangle mesh of its vertical side faces, a prism).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Structure {
+    /// A rectangle: (x, y) of its lower-left and upper-right corners [m].
+    Box([f64; 2], [f64; 2]),
+    /// A polygon: its vertices (x, y) [m] in either order, at least three, not crossing
+    /// itself (the caller checks).
+    Polygon(Vec<[f64; 2]>),
+}
+
+impl Structure {
+    /// The DEM wall of this structure, reaching `reach` [m] above and below the contact plane.
+    fn wall(&self, name: String, reach: f64) -> Result<Wall, String> {
+        let shape = match self {
+            Structure::Box(lo, hi) => Shape::Cuboid(Cuboid {
+                min: Vec3::new(lo[0], lo[1], -reach),
+                max: Vec3::new(hi[0], hi[1], reach),
+                inside: false,
+            }),
+            Structure::Polygon(v) => {
+                Shape::Mesh(prism(v, reach).map_err(|e| format!("{name}: {e}"))?)
+            }
+        };
+        Ok(Wall {
+            name,
+            shape,
+            material: 0,
+            motion: Motion::Fixed,
+        })
+    }
+}
+
+/// The side faces of the vertical prism over `polygon` from z = −`reach` to `reach` [m]: two
+/// triangles per edge. The DEM's meshes are two-sided, so the order of the vertices does not
+/// matter; the ends are left open (the pieces move in the plane z = 0 and meet only the
+/// sides).
+fn prism(polygon: &[[f64; 2]], reach: f64) -> Result<TriMesh, String> {
+    let n = polygon.len();
+    if n < 3 {
+        return Err(format!("a polygon needs 3 vertices, not {n}"));
+    }
+    let mut vertices = Vec::with_capacity(2 * n);
+    for v in polygon {
+        vertices.push(Vec3::new(v[0], v[1], -reach));
+        vertices.push(Vec3::new(v[0], v[1], reach));
+    }
+    let mut triangles = Vec::with_capacity(2 * n);
+    for k in 0..n {
+        let (a, b) = (2 * k as u32, 2 * ((k + 1) % n) as u32);
+        triangles.push([a, b, b + 1]);
+        triangles.push([a, b + 1, a + 1]);
+    }
+    TriMesh::new(vertices, triangles).map_err(|e| e.to_string())
+}
 
 /// Sub-steps per contact period π √(m*/k) [-].
 pub const STEPS_PER_CONTACT: f64 = 20.0;
@@ -162,12 +218,13 @@ fn invalid(p: &Piece) -> Option<String> {
 }
 
 impl Debris {
-    /// The pieces `pieces` in `flow`, with the rectangles `structures` ((x, y) min and max
-    /// [m]) as solid DEM boxes, in a DEM domain over `extent` (min and max corners [m]).
+    /// The pieces `pieces` in `flow`, with the `structures` as DEM walls (rectangles as
+    /// solid boxes, polygons as the side faces of prisms), in a DEM domain over `extent` (min
+    /// and max corners [m]).
     pub fn new(
         params: Parameters,
         pieces: Vec<Piece>,
-        structures: &[([f64; 2], [f64; 2])],
+        structures: &[Structure],
         extent: ([f64; 2], [f64; 2]),
         flow: &impl FlowField,
     ) -> Result<Debris, String> {
@@ -210,17 +267,9 @@ impl Debris {
         let mut dem = Dem::new(vec![material], model, domain, dt_max);
         dem.gravity = Vec3::ZERO;
         dem.neighbors.skin = DEFAULT_SKIN_FRACTION * widest;
-        for (i, (lo, hi)) in structures.iter().enumerate() {
-            dem.walls.push(Wall {
-                name: format!("structure {i}"),
-                shape: Shape::Cuboid(Cuboid {
-                    min: Vec3::new(lo[0], lo[1], -2.0 * widest),
-                    max: Vec3::new(hi[0], hi[1], 2.0 * widest),
-                    inside: false,
-                }),
-                material: 0,
-                motion: Motion::Fixed,
-            });
+        for (i, s) in structures.iter().enumerate() {
+            dem.walls
+                .push(s.wall(format!("structure {i}"), 2.0 * widest)?);
         }
         let mut blocks = Blocks::default();
         let mut state = Vec::with_capacity(pieces.len());

@@ -285,6 +285,11 @@ fn a_surface_slope_pushes_a_floating_box_by_its_froude_krylov_and_added_mass_for
 
 /// Rows of boxes carried by a current into a wall, through their contacts.
 fn pile_up(steps: usize) -> (Debris, Uniform) {
+    pile_up_at(steps, Structure::Box([20.0, -30.0], [24.0, 30.0]))
+}
+
+/// [`pile_up`] against `wall`.
+fn pile_up_at(steps: usize, wall: Structure) -> (Debris, Uniform) {
     let flow = Uniform {
         depth: 3.0,
         velocity: [3.0, 0.4],
@@ -302,8 +307,7 @@ fn pile_up(steps: usize) -> (Debris, Uniform) {
             pieces.push(piece(&format!("c{i}{j}"), c, false, at, 0.05 * j as f64));
         }
     }
-    let wall = [([20.0, -30.0], [24.0, 30.0])];
-    let mut d = Debris::new(Parameters::default(), pieces, &wall, EXTENT, &flow).unwrap();
+    let mut d = Debris::new(Parameters::default(), pieces, &[wall], EXTENT, &flow).unwrap();
     for _ in 0..steps {
         d.advance(&flow, 0.1).unwrap();
     }
@@ -342,6 +346,22 @@ fn boxes_pile_up_against_a_structure_and_give_the_same_bits_on_1_and_2_threads()
 }
 
 #[test]
+fn boxes_pile_up_against_a_polygon_wall_with_the_same_bits_on_1_and_2_threads() {
+    // A wedge whose face leans across the current: the boxes slide along it.
+    let wedge = || Structure::Polygon(vec![[20.0, -30.0], [32.0, -30.0], [26.0, 30.0]]);
+    let run = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| pile_up_at(200, wedge()).0)
+    };
+    let (one, two) = (run(1), run(2));
+    assert_eq!(bits(&one), bits(&two));
+    assert!(one.dem().stats.wall_contacts > 0);
+}
+
+#[test]
 fn a_restored_state_continues_bit_for_bit() {
     let (mut whole, flow) = pile_up(120);
     let (mut half, _) = pile_up(60);
@@ -357,4 +377,70 @@ fn a_restored_state_continues_bit_for_bit() {
     assert_eq!(bits(&fresh), bits(&half));
     assert_eq!(bits(&fresh), bits(&whole));
     whole.advance(&flow, 0.1).unwrap();
+}
+
+/// A 20 ft container carried end-on by a 2 m/s current into a structure whose face is the
+/// plane x = 20 m: as a box, or as a polygon (the same rectangle, or a wedge whose face is
+/// the same plane). Returns the container's centre x and velocity x after 30 s, the largest
+/// centre x reached, and the wall contacts at the end.
+fn driven_at(structure: Structure) -> (f64, f64, f64, usize) {
+    let flow = Uniform {
+        depth: 3.0,
+        velocity: [2.0, 0.0],
+        slope: [0.0, 0.0],
+    };
+    let pc = piece("c", Container::Twenty, false, [0.0, 0.0], 0.0);
+    let mut d = Debris::new(Parameters::default(), vec![pc], &[structure], EXTENT, &flow).unwrap();
+    let mut furthest = f64::NEG_INFINITY;
+    for _ in 0..300 {
+        d.advance(&flow, 0.1).unwrap();
+        furthest = furthest.max(d.blocks().centre[0].x);
+    }
+    let b = d.blocks();
+    (
+        b.centre[0].x,
+        b.velocity[0].x,
+        furthest,
+        d.dem().stats.wall_contacts,
+    )
+}
+
+#[test]
+fn a_container_driven_at_a_polygon_wall_stops_at_it_as_at_a_box() {
+    // The container's front end: centre + L/2 = centre + 3.029 m; its members are spheres of
+    // radius B/2 whose front reaches the end. It must come to rest touching the face at
+    // x = 20 m, overlapping it by the soft contact's static compression only: F/k with F
+    // the drag ½ ρ C_D B w U² at rest (w the free draft), far below a millimetre.
+    let half = 0.5 * Container::Twenty.shape().length;
+    let rect = driven_at(Structure::Polygon(vec![
+        [20.0, -10.0],
+        [24.0, -10.0],
+        [24.0, 10.0],
+        [20.0, 10.0],
+    ]));
+    let wedge = driven_at(Structure::Polygon(vec![
+        [20.0, 10.0],
+        [20.0, -10.0],
+        [35.0, 0.0],
+    ]));
+    let boxed = driven_at(Structure::Box([20.0, -10.0], [24.0, 10.0]));
+    for (name, (x, v, furthest, contacts)) in [("rect", rect), ("wedge", wedge), ("box", boxed)] {
+        assert!(contacts > 0, "{name}: no wall contact");
+        // At rest against the face, the overlap the static force gives (< 1 mm).
+        assert!(v.abs() < 1e-6, "{name}: still moving at {v} m/s");
+        assert!(
+            (x + half - 20.0).abs() < 1e-3 && x + half <= 20.0 + 1e-3,
+            "{name}: front at {} m",
+            x + half
+        );
+        // The impact's overshoot: the soft contact's compression at 2 m/s, v √(M_e/k) ≈ 3 cm.
+        assert!(
+            furthest + half < 20.05,
+            "{name}: front reached {} m",
+            furthest + half
+        );
+    }
+    // The polygon faces act as the box's face: the same rest position to 1e-9 m.
+    assert!((rect.0 - boxed.0).abs() < 1e-9, "{} {}", rect.0, boxed.0);
+    assert!((wedge.0 - boxed.0).abs() < 1e-9, "{} {}", wedge.0, boxed.0);
 }

@@ -239,6 +239,70 @@ pub fn inside_polygon(vertices: &[[f64; 2]], x: f64, y: f64) -> bool {
     inside
 }
 
+/// What makes `vertices` no simple polygon, if anything: two consecutive vertices at the same
+/// point, two edges that are not neighbours touching or crossing (checked pair by pair: O(n²),
+/// for the few vertices of a building), or no area (the shoelace formula). The edges' orientations
+/// are compared by the signs of cross products (exact for coincident and crossing edges in
+/// general position; collinear touching edges are found by their overlap).
+pub fn polygon_defect(vertices: &[[f64; 2]]) -> Option<String> {
+    let n = vertices.len();
+    if n < 3 {
+        return Some(format!("a polygon needs at least 3 vertices, not {n}"));
+    }
+    let edge = |k: usize| (vertices[k], vertices[(k + 1) % n]);
+    for k in 0..n {
+        let (a, b) = edge(k);
+        if a == b {
+            return Some(format!(
+                "vertices {k} and {} (from 0) are the same point {a:?}",
+                (k + 1) % n
+            ));
+        }
+    }
+    let cross = |o: [f64; 2], a: [f64; 2], b: [f64; 2]| {
+        (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    };
+    let on = |p: [f64; 2], a: [f64; 2], b: [f64; 2]| {
+        cross(a, b, p) == 0.0
+            && p[0] >= a[0].min(b[0])
+            && p[0] <= a[0].max(b[0])
+            && p[1] >= a[1].min(b[1])
+            && p[1] <= a[1].max(b[1])
+    };
+    for i in 0..n {
+        for j in i + 2..n {
+            if i == 0 && j == n - 1 {
+                continue; // neighbours through the closing edge
+            }
+            let ((a, b), (c, d)) = (edge(i), edge(j));
+            let (d1, d2) = (cross(c, d, a), cross(c, d, b));
+            let (d3, d4) = (cross(a, b, c), cross(a, b, d));
+            let proper = (d1 > 0.0) != (d2 > 0.0)
+                && (d3 > 0.0) != (d4 > 0.0)
+                && d1 != 0.0
+                && d2 != 0.0
+                && d3 != 0.0
+                && d4 != 0.0;
+            if proper || on(a, c, d) || on(b, c, d) || on(c, a, b) || on(d, a, b) {
+                return Some(format!(
+                    "edges {i} and {j} (from 0: vertex k to k + 1) cross or touch: the polygon \
+                     must not cross itself"
+                ));
+            }
+        }
+    }
+    let area: f64 = (0..n)
+        .map(|k| {
+            let (a, b) = edge(k);
+            a[0] * b[1] - b[0] * a[1]
+        })
+        .sum();
+    if area == 0.0 {
+        return Some("the polygon has no area (its vertices lie on a line)".into());
+    }
+    None
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -295,5 +359,27 @@ mod tests {
         assert!(inside_polygon(&l, 0.5, 1.5));
         assert!(!inside_polygon(&l, 1.5, 1.5));
         assert!(!inside_polygon(&l, -0.1, 0.5));
+        assert_eq!(polygon_defect(&l), None);
+    }
+
+    #[test]
+    fn polygons_that_cross_themselves_or_have_no_area_are_named() {
+        let bow_tie = [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]];
+        let e = polygon_defect(&bow_tie).unwrap();
+        assert!(e.contains("edges 0 and 2") && e.contains("cross"), "{e}");
+        let line = [[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]];
+        assert!(polygon_defect(&line).unwrap().contains("no area"));
+        let repeated = [[0.0, 0.0], [1.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+        assert!(polygon_defect(&repeated).unwrap().contains("same point"));
+        // A vertex touching a non-neighbouring edge.
+        let pinched = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [1.0, 0.0], [0.0, 2.0]];
+        assert!(polygon_defect(&pinched).unwrap().contains("cross or touch"));
+        assert!(polygon_defect(&[[0.0, 0.0], [1.0, 0.0]]).is_some());
+        // Either orientation of a square is fine.
+        let sq = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        assert_eq!(polygon_defect(&sq), None);
+        let mut rev = sq;
+        rev.reverse();
+        assert_eq!(polygon_defect(&rev), None);
     }
 }

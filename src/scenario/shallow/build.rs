@@ -8,7 +8,9 @@ use super::report::ShallowDerived;
 use super::{debris, BedKind, BoundaryKind, BoundarySection, ShallowSource};
 use crate::debris::Debris;
 use crate::scenario::ScenarioError;
-use crate::shallow::bathymetry::{inside_polygon, read_esri_ascii, read_xyz_csv, Raster};
+use crate::shallow::bathymetry::{
+    inside_polygon, polygon_defect, read_esri_ascii, read_xyz_csv, Raster,
+};
 use crate::shallow::boundary::SIDES;
 use crate::shallow::solitary::Solitary;
 use crate::shallow::{Boundaries, Boundary, Grid, Parameters, Series, ShallowWater};
@@ -70,7 +72,7 @@ pub fn build(src: &ShallowSource) -> Result<Built, ScenarioError> {
     let extent = (grid.origin, grid.max());
     let debris = debris::debris(src, &water, plan.params.gravity, extent)?;
     if let Some(d) = &debris {
-        derived.lines.extend(debris::report(src, d, &water));
+        derived.lines.extend(debris::report(d, &water));
     }
     Ok(Built {
         water,
@@ -355,6 +357,9 @@ fn region(
                     &format!("{key}.polygon"),
                     "a polygon needs at least three vertices of finite coordinates",
                 ));
+            }
+            if let Some(e) = polygon_defect(p) {
+                return Err(src.invalid(&format!("{key}.polygon"), e));
             }
             Ok(p.clone())
         }

@@ -27,13 +27,13 @@
 //! floodable_fraction = 0.98           # φ, the voids water can fill (default 0.98)
 //! ```
 //!
-//! The rectangular `[[shallow.structure]]` (`min`/`max`, solid) are the debris' walls;
-//! polygons are not (yet) walls for the debris: a warning of `riprap check` says so.
+//! The solid `[[shallow.structure]]` (no `top`) are the debris' walls: boxes as DEM boxes,
+//! polygons as the side faces of their prisms (`crate::debris::Structure`).
 
 use serde::{Deserialize, Serialize};
 
 use super::ShallowSource;
-use crate::debris::{BoxShape, Container, Debris, FlowField, Parameters, Piece};
+use crate::debris::{BoxShape, Container, Debris, FlowField, Parameters, Piece, Structure};
 use crate::scenario::ScenarioError;
 
 /// Default φ: the voids of an empty steel box are 99 % of its volume; 0.98 leaves a little
@@ -272,11 +272,16 @@ pub fn pieces(src: &ShallowSource) -> Result<Vec<Piece>, ScenarioError> {
     Ok(out)
 }
 
-/// The solid rectangles of `[[shallow.structure]]`, the debris' walls.
-pub fn walls(src: &ShallowSource) -> Vec<([f64; 2], [f64; 2])> {
+/// The solid `[[shallow.structure]]` (those without `top`), the debris' walls: boxes as
+/// boxes, polygons as polygons (checked by `build` before).
+pub fn walls(src: &ShallowSource) -> Vec<Structure> {
     (src.scenario.shallow.structures.iter())
-        .filter(|s| s.top.is_none() && s.polygon.is_none())
-        .filter_map(|s| Some((s.min?, s.max?)))
+        .filter(|s| s.top.is_none())
+        .filter_map(|s| match (&s.polygon, s.min, s.max) {
+            (Some(p), _, _) => Some(Structure::Polygon(p.clone())),
+            (None, Some(a), Some(b)) => Some(Structure::Box(a, b)),
+            _ => None,
+        })
         .collect()
 }
 
@@ -299,7 +304,7 @@ pub fn debris(
 }
 
 /// What `riprap check` prints of the debris: the settings, then a line per piece.
-pub fn report(src: &ShallowSource, d: &Debris, flow: &impl FlowField) -> Vec<String> {
+pub fn report(d: &Debris, flow: &impl FlowField) -> Vec<String> {
     let p = d.parameters();
     let mut lines = vec![format!(
         "debris: {} pieces, {} spheres in the contacts; ρ = {} kg/m³, C_D = {}, C_m = {}, \
@@ -315,15 +320,6 @@ pub fn report(src: &ShallowSource, d: &Debris, flow: &impl FlowField) -> Vec<Str
         p.contact_restitution,
         d.max_step()
     )];
-    let polygons = (src.scenario.shallow.structures.iter())
-        .filter(|s| s.top.is_none() && s.polygon.is_some())
-        .count();
-    if polygons > 0 {
-        lines.push(format!(
-            "warning: {polygons} polygon structure(s) stop the flow but are not walls for the \
-             debris (give them as min/max boxes)"
-        ));
-    }
     for r in d.report(flow) {
         let depth = r.depth.map_or("outside".into(), |h| format!("{h:.3} m"));
         let sinks = r.sinks_after.map_or("never sinks".into(), |t| {

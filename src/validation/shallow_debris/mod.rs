@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use crate::debris::load::{sinking_time, Phase};
-use crate::debris::{Container, Debris, FlowField, Parameters, Piece};
+use crate::debris::{Container, Debris, FlowField, Parameters, Piece, Structure};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
 use crate::shallow::{Boundaries, FlowSample, Grid, Parameters as FlowParameters, ShallowWater};
 
@@ -199,7 +199,7 @@ pub fn threads() -> (bool, usize) {
                     pieces.push(piece(c, false, at, 0.05 * j as f64));
                 }
             }
-            let wall = [([20.0, -30.0], [24.0, 30.0])];
+            let wall = [Structure::Box([20.0, -30.0], [24.0, 30.0])];
             let mut d =
                 Debris::new(Parameters::default(), pieces, &wall, EXTENT, &flow).expect("debris");
             for _ in 0..200 {
