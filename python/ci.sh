@@ -17,10 +17,10 @@ cargo clippy --release --manifest-path python/Cargo.toml --all-targets -- -D war
 
 echo "== python: virtual environment $venv, pip install ."
 python3 -m venv "$venv"
-"$venv/bin/pip" install --quiet --upgrade pip
 "$venv/bin/pip" install --quiet "maturin>=1.5,<2" numpy pandas pytest
 # Without build isolation: the maturin just installed builds the wheel.
-"$venv/bin/pip" install --quiet --no-build-isolation "$repo"
+export PATH="$venv/bin:$PATH"   # the build backend runs `maturin` by name
+pip install --quiet --no-build-isolation "$repo"
 
 echo "== python: pytest python/tests"
 RIPRAP_BIN="${RIPRAP_BIN:-$CARGO_TARGET_DIR/release/riprap}" RIPRAP_REQUIRE_CLI=1 \

@@ -1,14 +1,14 @@
 """A parameter sweep: the porosity of a bed of glass beads against their restitution.
 
-The same 300 beads (3 mm) are rained into a box periodic across, once per restitution
+The same 1000 beads (3 mm) are rained into a box periodic across, once per restitution
 coefficient e, and left to settle; the porosity n of the settled bed is measured in a slab
 two diameters away from the floor and from the surface (the floor orders the first layers).
 The scenario is a Python dict: each run changes one value. Run from the repository root:
 
     python python/examples/sweep_restitution_porosity.py [--quick]
 
-Prints one line per e (about 10 s each on one core; --quick settles for less time and only
-three values) and writes sweep_restitution_porosity.csv.
+Prints one line per e (a few seconds each; --quick settles for less time and takes only three
+values) and writes sweep_restitution_porosity.csv.
 """
 
 import copy
@@ -24,8 +24,8 @@ D = 0.003  # bead diameter [m]
 L = 0.024  # box width across (periodic) [m]
 
 BASE = {
-    "run": {"name": "bed", "end_time": 0.35},
-    "domain": {"min": [0.0, 0.0, 0.0], "max": [L, L, 0.12], "periodic": [True, True, False]},
+    "run": {"name": "bed", "end_time": 0.5},
+    "domain": {"min": [0.0, 0.0, 0.0], "max": [L, L, 0.26], "periodic": [True, True, False]},
     "contact": {"model": "hertz", "damping": "restitution"},
     "material": [{
         "name": "glass", "density": 2500.0, "young_modulus": 5.0e7, "poisson_ratio": 0.25,
@@ -34,7 +34,7 @@ BASE = {
     "wall": [{"name": "floor", "kind": "plane", "point": [0.0, 0.0, 0.0],
               "normal": [0.0, 0.0, 1.0], "material": "glass"}],
     "spheres": [{"kind": "random", "material": "glass", "min": [0.0, 0.0, 0.004],
-                 "max": [L, L, 0.11], "seed": 3, "sizes": [{"diameter": D, "count": 300}]}],
+                 "max": [L, L, 0.25], "seed": 3, "sizes": [{"diameter": D, "count": 1000}]}],
 }
 
 
@@ -63,7 +63,7 @@ def settled_bed(e, end_time):
 def main():
     quick = "--quick" in sys.argv
     values = [0.1, 0.5, 0.9] if quick else [0.1, 0.3, 0.5, 0.7, 0.9]
-    end_time = 0.2 if quick else BASE["run"]["end_time"]
+    end_time = 0.4 if quick else BASE["run"]["end_time"]
     rows = []
     print(f"{'e':>5} {'porosity':>9} {'bed top [mm]':>13} {'KE left [J]':>12} {'wall [s]':>9}")
     for e in values:
