@@ -134,7 +134,9 @@ fn instability(i: riprap::simulation::Instability) -> PyErr {
     err
 }
 
-/// A scenario as the loader reads it: a DEM/flow scenario or a shallow-water one.
+/// A scenario as the loader reads it: a DEM/flow scenario or a shallow-water one (made once
+/// per call, so their sizes do not matter).
+#[allow(clippy::large_enum_variant)]
 enum Loaded {
     Dem(Source),
     Shallow(ShallowSource),
