@@ -17,7 +17,8 @@ use pyo3::types::PyDict;
 use riprap::dem::spheres::{NewSphere, NO_BODY};
 use riprap::dem::walls::Motion;
 use riprap::io::checkpoint::Checkpoint;
-use riprap::math::Vec3;
+use riprap::math::{Quat, Vec3};
+use riprap::rigid::blocks::RigidState;
 use riprap::run::fingerprint::{self, Fingerprint};
 use riprap::run::{checkpoint_of, flow, restore, series_row};
 use riprap::scenario::{build, Source};
@@ -494,6 +495,97 @@ impl PySimulation {
             keep[i] = false;
         }
         let removed = keep.iter().filter(|k| !**k).count();
+        self.sim.dem.spheres.retain(&keep);
+        self.relist();
+        Ok(removed)
+    }
+
+    /// The block templates' names (`[[block_template]]` order).
+    #[getter]
+    fn block_templates(&self) -> Vec<String> {
+        (self.sim.rigid.templates.iter())
+            .map(|t| t.name.clone())
+            .collect()
+    }
+
+    /// Adds a block of the template named `template` between steps, as a `[[blocks]]` list
+    /// entry places one: centre `position` [m], `rotation` (axis × angle [rad]) from the
+    /// template's principal axes, `velocity`, `angular_velocity`. Returns its id.
+    #[pyo3(signature = (template, position, rotation = [0.0; 3], velocity = [0.0; 3], angular_velocity = [0.0; 3]))]
+    fn add_block(
+        &mut self,
+        template: &str,
+        position: [f64; 3],
+        rotation: [f64; 3],
+        velocity: [f64; 3],
+        angular_velocity: [f64; 3],
+    ) -> PyResult<u32> {
+        let rigid = &self.sim.rigid;
+        let Some(t) = rigid.templates.iter().position(|t| t.name == template) else {
+            return Err(PyValueError::new_err(format!(
+                "add_block: no block template named `{template}` (the scenario has {:?})",
+                self.block_templates()
+            )));
+        };
+        let section = (self.src.scenario.block_templates.iter())
+            .find(|s| s.name == template)
+            .expect("the templates are the scenario's");
+        let d = &self.sim.dem;
+        let m = d
+            .material_index(&section.material)
+            .expect("the scenario's checks found the material");
+        let tpl = &rigid.templates[t];
+        let state = RigidState {
+            centre: vec3(position, "add_block: position")?,
+            velocity: vec3(velocity, "add_block: velocity")?,
+            orientation: Quat::from_scaled_axis(vec3(rotation, "add_block: rotation")?)
+                * tpl.principal_axes,
+            angular_velocity: vec3(angular_velocity, "add_block: angular_velocity")?,
+        };
+        if let Some(x) = (tpl.member_positions(state.centre, state.orientation).iter())
+            .find(|x| !d.domain.contains(**x))
+        {
+            return Err(PyValueError::new_err(format!(
+                "add_block: a member sphere of the block lies outside the domain, at {:?}",
+                x.to_array()
+            )));
+        }
+        let (density, gravity) = (d.materials[m as usize].density, d.gravity);
+        let s = &mut self.sim.dem.spheres;
+        let first = s.len();
+        let id = self.sim.rigid.add_block(s, t, m, density, state);
+        // The members' weight, as fed spheres get, for the next step's opening half kick.
+        for i in first..s.len() {
+            s.force[i] = s.mass[i] * gravity;
+        }
+        self.relist();
+        Ok(id)
+    }
+
+    /// Removes the blocks with these ids, with their member spheres, between steps (not in
+    /// a scenario with wires or bonds, whose ends would be left dangling); returns how many.
+    fn remove_blocks(&mut self, ids: Vec<u32>) -> PyResult<usize> {
+        let rigid = &mut self.sim.rigid;
+        if !(rigid.wires.is_empty() && rigid.bonds.is_empty()) {
+            return Err(PyValueError::new_err(
+                "remove_blocks: not in a scenario with wires or bonds",
+            ));
+        }
+        let s = &self.sim.dem.spheres;
+        let mut keep = vec![true; s.len()];
+        for id in &ids {
+            let Some(b) = rigid.blocks.id.iter().position(|x| x == id) else {
+                return Err(PyValueError::new_err(format!(
+                    "remove_blocks: no block {id}"
+                )));
+            };
+            for m in rigid.blocks.member_ids(b) {
+                if let Some(k) = s.slot_of(*m) {
+                    keep[k] = false;
+                }
+            }
+        }
+        let removed = rigid.drop_partial_blocks(s, &mut keep);
         self.sim.dem.spheres.retain(&keep);
         self.relist();
         Ok(removed)

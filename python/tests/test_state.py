@@ -154,3 +154,26 @@ def test_blocks(repo):
     member = int(np.flatnonzero(sim.bodies >= 0)[0])
     with pytest.raises(ValueError, match="member of block"):
         sim.remove_spheres([int(sim.ids[member])])
+
+
+def test_add_and_remove_blocks(repo):
+    sim = riprap.Simulation(str(repo / "examples" / "tetrapods_on_rubble.toml"))
+    assert sim.block_templates == ["quarry_rock", "tetrapod"]
+    n, spheres = len(sim.block_ids), sim.n_spheres
+    top = int(np.argmax(sim.block_centres[:, 2]))  # a tetrapod, the highest: room above it
+    old, centre = int(sim.block_ids[top]), sim.block_centres[top].copy()
+    assert sim.remove_blocks([old]) == 1
+    assert len(sim.block_ids) == n - 1 and old not in sim.block_ids
+    members = spheres - sim.n_spheres
+    assert members == 9  # resolution 2: 9 spheres per tetrapod
+    new = sim.add_block("tetrapod", centre, rotation=[0.0, 0.0, 0.3], velocity=[0.0, 0.0, -0.1])
+    assert len(sim.block_ids) == n and sim.n_spheres == spheres and new != old
+    sim.advance(20)
+    z = sim.block_centres[list(sim.block_ids).index(new), 2]
+    assert z < centre[2]
+    with pytest.raises(ValueError, match="no block template named `cube9`"):
+        sim.add_block("cube9", [0.0, 0.0, 0.0])
+    with pytest.raises(ValueError, match="outside the domain"):
+        sim.add_block("tetrapod", [0.5, 0.4, 5.0])
+    with pytest.raises(ValueError, match="no block 12345"):
+        sim.remove_blocks([12345])
