@@ -6,9 +6,10 @@ def drive(sim, until=None, every=None, callback=None):
     ``callback(sim)`` at the start and every ``every`` seconds of simulated time (default:
     a fiftieth of the run) and at the end. The callback may read and change the state
     (``positions``, ``set_wall_motion``, ...); returning ``False`` stops the run there.
-    Stepping is ``sim.run_until`` to each output time, so without water and with a callback
-    that changes nothing the bits are those of one ``run_until(until)``: every output time is
-    rounded to a whole step, as ``riprap run`` rounds its intervals.
+    Stepping is ``sim.run_until(t, end=until)`` to each output time t: the steps of one
+    ``run_until(until)`` (of ``riprap run`` to that end), so a callback that changes nothing
+    changes no bit. Without water an output time is rounded to a whole step; with water the
+    callback comes at the first step boundary at or past it, as the CLI writes its outputs.
     Returns the number of callbacks made."""
     end = sim.end_time if until is None else float(until)
     span = end - sim.time
@@ -26,4 +27,4 @@ def drive(sim, until=None, every=None, callback=None):
         if end - sim.time < 0.5 * sim.dt:
             return calls
         t = min(t + every, end)
-        sim.run_until(t)
+        sim.run_until(t, end=end)

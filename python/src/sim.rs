@@ -104,14 +104,17 @@ impl PySimulation {
     }
 
     /// Steps with the GIL released on a worker of rayon's pool, in chunks that grow to about
-    /// `CHUNK` of wall time, looking at Ctrl-C between them: `steps` steps, or (`until`)
-    /// fluid steps until t reaches it. A KeyboardInterrupt leaves the state at the end of
-    /// the last whole step. Any split gives the same bits as one call (`Simulation::advance`).
-    fn drive(&mut self, py: Python<'_>, mut steps: u64, until: Option<f64>) -> PyResult<()> {
+    /// `CHUNK` of wall time, looking at Ctrl-C between them: `steps` steps, or (`until` =
+    /// (t, end)) fluid steps towards `end` until t is reached. A KeyboardInterrupt leaves the
+    /// state at the end of the last whole step. Any split of the steps gives the same bits
+    /// as one call (`Simulation::advance`).
+    fn drive(&mut self, py: Python<'_>, mut steps: u64, until: Option<(f64, f64)>) -> PyResult<()> {
+        // Within half a DEM step of t, or past it (a step towards a later end may overshoot).
+        let arrived = |sim: &Simulation, t: f64| sim.reached(t) || sim.time >= t;
         let mut chunk = 1u64;
         loop {
             let done = match until {
-                Some(t) => self.sim.reached(t),
+                Some((t, _)) => arrived(&self.sim, t),
                 None => steps == 0,
             };
             if done {
@@ -126,12 +129,12 @@ impl PySimulation {
             let clock = Instant::now();
             let r = py.detach(|| {
                 rayon::scope(|_| match until {
-                    Some(t) => {
+                    Some((t, end)) => {
                         for _ in 0..k {
-                            if sim.reached(t) {
+                            if arrived(sim, t) {
                                 break;
                             }
-                            sim.step_towards(t)?;
+                            sim.step_towards(end)?;
                         }
                         Ok(())
                     }
@@ -243,16 +246,20 @@ impl PySimulation {
     }
 
     /// Advances to time `t` [s]: the DEM steps that `riprap run` takes to an end time `t`
-    /// (round((t − time)/Δt)); with water, fluid steps shortened to land on `t`, as the
-    /// CLI's last steps are (so `run_until(end_time)` gives the CLI's bits).
-    fn run_until(&mut self, py: Python<'_>, t: f64) -> PyResult<()> {
-        if !t.is_finite() {
+    /// (round((t − time)/Δt)). With water the fluid steps vary: they are taken as a run to
+    /// `end` takes them (default `t`: the last ones shortened to land on `t`, as the CLI's
+    /// last steps are), up to the first step boundary at or past `t`. So `run_until(t,
+    /// end=sim.end_time)` in pieces gives the bits of the CLI's run, wherever it stops.
+    #[pyo3(signature = (t, end = None))]
+    fn run_until(&mut self, py: Python<'_>, t: f64, end: Option<f64>) -> PyResult<()> {
+        let end = end.unwrap_or(t);
+        if !(t.is_finite() && end.is_finite() && end >= t) {
             return Err(PyValueError::new_err(format!(
-                "run_until: t must be finite, got {t}"
+                "run_until: t and end must be finite with end >= t, got t = {t}, end = {end}"
             )));
         }
         if self.sim.fluid.is_some() {
-            return self.drive(py, 0, Some(t));
+            return self.drive(py, 0, Some((t, end)));
         }
         let n = ((t - self.sim.time) / self.sim.dem.dt).round().max(0.0) as u64;
         self.drive(py, n, None)
