@@ -1,6 +1,7 @@
-"""The cost of driving riprap from Python against the CLI (issue 32), medians of 3.
+"""The cost of driving riprap from Python against the CLI (issue 32).
 
     python python/bench/overhead.py PATH/TO/riprap [--steps N] [--threads T] [--scenario F]
+                                                   [--rounds R]
 
 On one scenario (default examples/gate_release.toml, 400 spheres, no water) and N steps:
 
@@ -11,7 +12,9 @@ On one scenario (default examples/gate_release.toml, 400 spheres, no water) and 
 * advance(1) loop: `for _ in range(N): sim.advance(1)`;
 * advance(1) + positions: the same, reading `sim.positions` after each step.
 
-Python's build of the simulation is timed apart and left out of its loop times.
+Python's build of the simulation is timed apart and left out of its loop times. The cases run
+in turn, R rounds (default 3), so that a change in the machine's load touches all of them; it
+prints the median and the least of each.
 """
 
 import argparse
@@ -26,16 +29,13 @@ import time
 import riprap
 
 
-def median_of(n, f):
-    return statistics.median(f() for _ in range(n))
-
-
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("cli")
     p.add_argument("--steps", type=int, default=10000)
     p.add_argument("--threads", type=int, default=1)
     p.add_argument("--scenario", default="examples/gate_release.toml")
+    p.add_argument("--rounds", type=int, default=3)
     a = p.parse_args()
     riprap.set_threads(a.threads)
     n = a.steps
@@ -46,8 +46,8 @@ def main():
         text = f.read()
     text = re.sub(r"^(vtk|series|checkpoint|flow)_interval\s*=.*$", r"\1_interval = 1.0e6",
                   text, flags=re.M)
-    text = text.replace("[output]", '[output]\nskip = ["spheres", "walls", "blocks", "flow", '
-                        '"plots"]', 1)
+    text = re.sub(r"^\[output\]", '[output]\nskip = ["spheres", "walls", "blocks", "flow", '
+                  '"plots"]', text, count=1, flags=re.M)
     with open(quiet, "w") as f:
         f.write(text)
 
@@ -56,7 +56,9 @@ def main():
             t = time.perf_counter()
             r = subprocess.run(
                 [a.cli, "--threads", str(a.threads), "run", scenario, "--steps", str(n),
-                 "--output", out], check=True, capture_output=True, text=True)
+                 "--output", out], capture_output=True, text=True)
+            if r.returncode != 0:
+                sys.exit(f"{scenario}: riprap run failed:\n{r.stderr}")
             wall = time.perf_counter() - t
         loops.setdefault(scenario, []).append(
             float(re.search(r"steps? in ([0-9.]+) s", r.stderr).group(1)))
@@ -88,19 +90,27 @@ def main():
             sim.positions
         return time.perf_counter() - t
 
-    rows = [("cli process (build, loop, outputs)", median_of(3, lambda: cli(a.scenario)))]
-    rows.append(("cli loop as it reports it (0.1 s resolution)",
-                 statistics.median(loops[a.scenario])))
-    rows.append(("cli process, no outputs", median_of(3, lambda: cli(quiet))))
-    rows.append(("cli loop, no outputs (0.1 s resolution)", statistics.median(loops[quiet])))
-    rows.append(("python: Simulation(F) build", median_of(3, build)))
-    rows.append(("python: advance(N)", median_of(3, advance_n)))
-    rows.append(("python: advance(1) loop", median_of(3, advance_1)))
-    rows.append(("python: advance(1) loop + positions", median_of(3, advance_1_read)))
+    cases = [
+        ("cli process (build, loop, outputs)", lambda: cli(a.scenario)),
+        ("cli process, no outputs", lambda: cli(quiet)),
+        ("python: Simulation(F) build", build),
+        ("python: advance(N)", advance_n),
+        ("python: advance(1) loop", advance_1),
+        ("python: advance(1) loop + positions", advance_1_read),
+    ]
+    times = {name: [] for name, _ in cases}
+    for _ in range(a.rounds):
+        for name, f in cases:
+            times[name].append(f())
+    rows = [(name, times[name]) for name, _ in cases]
+    rows.insert(1, ("cli loop as it reports it (0.1 s resolution)", loops[a.scenario]))
+    rows.insert(3, ("cli loop, no outputs (0.1 s resolution)", loops[quiet]))
     print(f"{a.scenario}, {n} steps, {a.threads} thread(s), python {sys.version.split()[0]}, "
           f"riprap {riprap.__version__}, {os.cpu_count()} cpus")
-    for name, t in rows:
-        print(f"  {name:46s} {t:8.3f} s  {1e6 * t / n:8.1f} us/step")
+    print(f"  {'':46s} {'median':>9s} {'least':>9s} {'median':>11s}")
+    for name, ts in rows:
+        t, least = statistics.median(ts), min(ts)
+        print(f"  {name:46s} {t:7.3f} s {least:7.3f} s {1e6 * t / n:7.1f} us/step")
 
 
 if __name__ == "__main__":

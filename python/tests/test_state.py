@@ -177,3 +177,48 @@ def test_add_and_remove_blocks(repo):
         sim.add_block("tetrapod", [0.5, 0.4, 5.0])
     with pytest.raises(ValueError, match="no block 12345"):
         sim.remove_blocks([12345])
+
+
+def test_steps_release_the_gil():
+    """A Python thread runs while the simulation steps."""
+    import threading
+
+    sc = tiny(end_time=100.0)
+    sim = riprap.Simulation(sc)
+    ticks = []
+    stop = threading.Event()
+
+    def count():
+        while not stop.is_set():
+            ticks.append(1)
+            stop.wait(0.001)
+
+    t = threading.Thread(target=count)
+    t.start()
+    try:
+        before = len(ticks)
+        sim.advance(200000)  # a few tenths of a second of stepping in one call
+        during = len(ticks) - before
+    finally:
+        stop.set()
+        t.join()
+    assert during > 10
+
+
+def test_block_records_from_a_run(repo, workdir):
+    s = riprap.run(str(repo / "examples" / "tetrapods_on_rubble.toml"),
+                   output=str(workdir / "blocks"), steps=10)
+    r = riprap.Results(s["output"])
+    blocks = r.blocks()
+    assert len(blocks["time"]) >= 650  # a row per block and frame: 400 stones, 250 tetrapods
+    frame = r.blocks(frame=True) if _has_pandas() else None
+    if frame is not None:
+        assert len(frame) == len(blocks["time"])
+
+
+def _has_pandas():
+    try:
+        import pandas  # noqa: F401
+    except ImportError:
+        return False
+    return True
