@@ -7,7 +7,7 @@
 //! and reads and sets its state between steps. Long calls release the GIL and run on a
 //! worker of rayon's pool, as the CLI does (`src/lib.rs`: a loop started from another thread
 //! pays a trip through the kernel per parallel loop); Ctrl-C is looked at between chunks of
-//! steps, at most about 50 ms apart, or after the step under way when one takes longer.
+//! steps, 50 to 100 ms apart, or after the step under way when one takes longer.
 
 mod dict;
 mod sim;
@@ -284,7 +284,10 @@ fn with_stop_flag<T: Send>(
 /// and returns its summary as a dict. Ctrl-C stops it after the step under way: the
 /// checkpoint is written and KeyboardInterrupt raised, naming it.
 #[pyfunction]
-#[pyo3(signature = (scenario, output = None, restart = None, steps = None, end_time = None, progress = false, base_dir = None))]
+#[pyo3(signature = (
+    scenario, output = None, restart = None, steps = None, end_time = None, progress = false,
+    base_dir = None
+))]
 #[allow(clippy::too_many_arguments)]
 fn run<'py>(
     py: Python<'py>,

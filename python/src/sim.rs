@@ -26,7 +26,7 @@ use riprap::simulation::Simulation;
 
 use crate::{instability, load, scenario_error, Loaded};
 
-/// A chunk of steps between two looks at Ctrl-C grows until it takes about this long.
+/// A chunk of steps between two looks at Ctrl-C doubles until it takes this long.
 const CHUNK: Duration = Duration::from_millis(50);
 
 /// A scenario built into a running simulation (see the module docs).
@@ -103,11 +103,11 @@ impl PySimulation {
         })
     }
 
-    /// Steps with the GIL released on a worker of rayon's pool, in chunks that grow to about
-    /// `CHUNK` of wall time, looking at Ctrl-C between them: `steps` steps, or (`until` =
-    /// (t, end)) fluid steps towards `end` until t is reached. A KeyboardInterrupt leaves the
-    /// state at the end of the last whole step. Any split of the steps gives the same bits
-    /// as one call (`Simulation::advance`).
+    /// Steps with the GIL released on a worker of rayon's pool, in chunks that double while
+    /// they take less than `CHUNK` of wall time, looking at Ctrl-C between them: `steps`
+    /// steps, or (`until` = (t, end)) fluid steps towards `end` until t is reached. A
+    /// KeyboardInterrupt leaves the state at the end of the last whole step. Any split of the
+    /// steps gives the same bits as one call (`Simulation::advance`).
     fn drive(&mut self, py: Python<'_>, mut steps: u64, until: Option<(f64, f64)>) -> PyResult<()> {
         // Within half a DEM step of t, or past it (a step towards a later end may overshoot).
         let arrived = |sim: &Simulation, t: f64| sim.reached(t) || sim.time >= t;
@@ -423,7 +423,10 @@ impl PySimulation {
 
     /// Adds a free sphere between steps and returns its id. `material` is a name or an
     /// index (default: the first material).
-    #[pyo3(signature = (position, diameter, material = None, velocity = [0.0; 3], angular_velocity = [0.0; 3], fixed = false))]
+    #[pyo3(signature = (
+        position, diameter, material = None, velocity = [0.0; 3], angular_velocity = [0.0; 3],
+        fixed = false
+    ))]
     fn add_sphere(
         &mut self,
         position: [f64; 3],
@@ -518,7 +521,9 @@ impl PySimulation {
     /// Adds a block of the template named `template` between steps, as a `[[blocks]]` list
     /// entry places one: centre `position` [m], `rotation` (axis × angle [rad]) from the
     /// template's principal axes, `velocity`, `angular_velocity`. Returns its id.
-    #[pyo3(signature = (template, position, rotation = [0.0; 3], velocity = [0.0; 3], angular_velocity = [0.0; 3]))]
+    #[pyo3(signature = (
+        template, position, rotation = [0.0; 3], velocity = [0.0; 3], angular_velocity = [0.0; 3]
+    ))]
     fn add_block(
         &mut self,
         template: &str,
