@@ -15,6 +15,24 @@ echo "== python: cargo fmt --check, clippy (python/Cargo.toml)"
 cargo fmt --manifest-path python/Cargo.toml -- --check
 cargo clippy --release --manifest-path python/Cargo.toml --all-targets -- -D warnings
 
+# The package must build riprap with the CLI's dependencies, or its bits could differ.
+echo "== python: python/Cargo.lock locks riprap's dependencies as Cargo.lock does"
+python3 - <<'PY'
+import re, sys
+def locked(path):
+    text = open(path).read()
+    pkgs = {}
+    for name, version in re.findall(r'\[\[package\]\]\nname = "([^"]+)"\nversion = "([^"]+)"', text):
+        pkgs.setdefault(name, set()).add(version)
+    return pkgs
+root, py = locked("Cargo.lock"), locked("python/Cargo.lock")
+differ = [f"{n}: {sorted(v)} against {sorted(py.get(n, []))}" for n, v in root.items()
+          if n != "riprap" and n in py and py[n] != v]
+if differ:
+    sys.exit("python/Cargo.lock differs from Cargo.lock (copy Cargo.lock over it, then "
+             "`cargo fetch --manifest-path python/Cargo.toml` adds PyO3):\n  " + "\n  ".join(differ))
+PY
+
 echo "== python: virtual environment $venv, pip install ."
 python3 -m venv "$venv"
 "$venv/bin/pip" install --quiet "maturin>=1.5,<2" numpy pandas pytest
