@@ -29,6 +29,12 @@ def test_advance_gives_the_clis_bits(repo, cli, workdir):
     assert np.array_equal(sim.ids, ref.ids)
     for what in ["positions", "velocities", "angular_velocities", "forces", "torques"]:
         assert np.array_equal(bits(getattr(sim, what)), bits(getattr(ref, what))), what
+    # A step loop: its steps run on this thread or on a worker, whichever is faster.
+    loop = riprap.Simulation(str(scenario))
+    for _ in range(STEPS):
+        loop.advance(1)
+    assert np.array_equal(bits(loop.positions), bits(ref.positions))
+    assert np.array_equal(bits(loop.velocities), bits(ref.velocities))
 
 
 def test_run_writes_the_clis_files(repo, cli, workdir):
