@@ -37,6 +37,8 @@ pub struct PySimulation {
     fingerprint: Fingerprint,
     report: String,
     one_step: OneStep,
+    /// The DEM steps of the next chunk (`drive`).
+    chunk: u64,
 }
 
 /// Where a chunk of one step runs: on a worker of the pool, which costs a round trip to wake
@@ -138,19 +140,22 @@ impl PySimulation {
             src,
             fingerprint,
             one_step: OneStep::default(),
+            chunk: 1,
         })
     }
 
     /// Steps with the GIL released on a worker of rayon's pool (a one-step chunk perhaps on
     /// this thread, [`OneStep`]), in chunks that double while they take less than `CHUNK` of
-    /// wall time, looking at Ctrl-C between them: `steps` steps, or (`until` = (t, end))
-    /// fluid steps towards `end` until t is reached. A KeyboardInterrupt leaves the state at
-    /// the end of the last whole step. Any split of the steps gives the same bits as one call
-    /// (`Simulation::advance`).
+    /// wall time (and halve above twice that), looking at Ctrl-C between them: `steps` steps,
+    /// or (`until` = (t, end)) fluid steps towards `end` until t is reached. A
+    /// KeyboardInterrupt leaves the state at the end of the last whole step. Any split of the
+    /// steps gives the same bits as one call (`Simulation::advance`).
     fn drive(&mut self, py: Python<'_>, mut steps: u64, until: Option<(f64, f64)>) -> PyResult<()> {
         // Within half a DEM step of t, or past it (a step towards a later end may overshoot).
         let arrived = |sim: &Simulation, t: f64| sim.reached(t) || sim.time >= t;
-        let mut chunk = 1u64;
+        // DEM steps start from the chunk the last call ended with (a step loop of advance(k)
+        // then runs each call as one chunk); fluid steps, long and varying, from one.
+        let mut chunk = if until.is_some() { 1 } else { self.chunk };
         loop {
             let done = match until {
                 Some((t, _)) => arrived(&self.sim, t),
@@ -191,16 +196,20 @@ impl PySimulation {
                     .record(on_caller, clock.elapsed().as_secs_f64());
             }
             r.map_err(instability)?;
+            let took = clock.elapsed();
+            if took < CHUNK {
+                chunk = chunk.saturating_mul(2);
+            } else if took > 2 * CHUNK {
+                chunk = (chunk / 2).max(1);
+            }
             if until.is_none() {
+                self.chunk = chunk;
                 steps -= k;
                 if steps == 0 {
                     return Ok(());
                 }
             }
             py.check_signals()?;
-            if clock.elapsed() < CHUNK {
-                chunk = chunk.saturating_mul(2);
-            }
         }
     }
 
