@@ -306,7 +306,8 @@ mod tests {
     }
 
     /// Faces outside solids keep ρ_f to the bit; a face inside one has the solid's density and
-    /// the fluid's weight.
+    /// the fluid's weight; a face half covered takes 1/ρ̃ = ½/ρ_f + ½/ρ_s (module docs), so
+    /// that its air weighs about twice free air's, not a thousand times.
     #[test]
     fn blending_leaves_fluid_faces_alone_and_weighs_the_fluid_only() {
         let g = grid();
@@ -323,12 +324,18 @@ mod tests {
         let mut faces: [Vec<f64>; 3] = std::array::from_fn(|_| vec![rho_f; g.len()]);
         s.blend(&g, 1000.0, &mut faces);
         let inside = g.cell(i + 1, j, k);
-        assert_eq!(faces[0][inside], 2650.0);
+        assert!((faces[0][inside] / 2650.0 - 1.0).abs() < 1e-15);
         assert_eq!(s.weight[0][inside], rho_f - 1000.0);
         let half = g.cell(i, j, k);
-        assert!((faces[0][half] - (0.5 * rho_f + 1325.0)).abs() < 1e-12);
+        let expected = 1.0 / (0.5 / rho_f + 0.5 / 2650.0);
+        assert!((faces[0][half] / expected - 1.0).abs() < 1e-14);
         let away = g.cell(6, 4, 2);
         assert_eq!(faces[0][away].to_bits(), rho_f.to_bits());
+        // Air alone in the half-covered face: 2.4 kg/m³, where the mixture's ρ̄ was 1326.
+        let mut air: [Vec<f64>; 3] = std::array::from_fn(|_| vec![1.204; g.len()]);
+        s.blend(&g, 1000.0, &mut air);
+        assert!((air[0][half] - 1.0 / (0.5 / 1.204 + 0.5 / 2650.0)).abs() < 1e-12);
+        assert!(air[0][half] < 2.5);
     }
 
     /// The extension reads only the last sweep: 1 and 2 threads give the same bits.
