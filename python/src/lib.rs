@@ -10,6 +10,7 @@
 //! steps, 50 to 100 ms apart, or after the step under way when one takes longer.
 
 mod dict;
+mod flow;
 mod sim;
 
 use std::path::PathBuf;

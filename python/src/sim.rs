@@ -10,7 +10,9 @@
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
-use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods};
+use numpy::{
+    PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods,
+};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -128,6 +130,11 @@ fn grid_field<'py>(
         }
     }
     PyArray1::from_vec(py, out).reshape([n[2] * n[1], n[0]])
+}
+
+/// The error of a flow setter on a scenario without water.
+fn no_water() -> PyErr {
+    PyValueError::new_err("this scenario has no water ([fluid])")
 }
 
 impl PySimulation {
@@ -763,6 +770,13 @@ impl PySimulation {
         Ok(Some(out))
     }
 
+    /// Sets the face velocities from (u, v, w) in `flow_velocity`'s shapes (`flow.rs`).
+    #[setter]
+    fn set_flow_velocity(&mut self, uvw: Vec<PyReadonlyArray3<'_, f64>>) -> PyResult<()> {
+        let f = self.sim.fluid.as_mut().ok_or_else(no_water)?;
+        crate::flow::set_velocity(f, &uvw)
+    }
+
     /// Pressure less hydrostatic at the cell centres, (nz, ny, nx) [Pa]; None without water.
     #[getter]
     fn pressure<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
@@ -790,6 +804,14 @@ impl PySimulation {
         let [nx, ny, nz] = g.n;
         let a = grid_field(py, &g, f.water_fraction(), g.n)?.reshape([nz, ny, nx])?;
         Ok(Some(a.into_any()))
+    }
+
+    /// Sets α of every cell, (nz, ny, nx) within [0, 1]; ρ̄ and the hydrostatic pressure
+    /// follow (`flow.rs`).
+    #[setter]
+    fn set_water_fraction(&mut self, a: PyReadonlyArray3<'_, f64>) -> PyResult<()> {
+        let f = self.sim.fluid.as_mut().ok_or_else(no_water)?;
+        crate::flow::set_water_fraction(f, &a)
     }
 
     /// The row `series.csv` would get now, as a dict by column name.

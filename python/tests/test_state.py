@@ -222,3 +222,31 @@ def _has_pandas():
     except ImportError:
         return False
     return True
+
+
+def test_flow_fields_can_be_set():
+    sc = {
+        "run": {"name": "tank", "end_time": 0.05},
+        "domain": {"min": [0.0, 0.0, 0.0], "max": [0.04, 0.04, 0.04]},
+        "fluid": {"cells": [8, 8, 8], "air": {"water_level": 0.02}},
+    }
+    sim = riprap.Simulation(sc)
+    u, v, w = sim.flow_velocity
+    u2 = u.copy()
+    u2[:, :, 1:-1] = 0.1
+    sim.flow_velocity = [u2, v, w]
+    u3 = sim.flow_velocity[0]
+    assert np.array_equal(u3[:, :, 1:-1], u2[:, :, 1:-1])
+    assert not np.any(u3[:, :, 0]) and not np.any(u3[:, :, -1])  # the walls' faces
+    with pytest.raises(ValueError, match="expected"):
+        sim.flow_velocity = [u2[:, :, :-1], v, w]
+    a = sim.water_fraction
+    assert a.shape == (8, 8, 8) and a[:4].min() == 1.0 and a[4:].max() == 0.0
+    a2 = np.zeros_like(a)
+    a2[:2] = 1.0  # the water level at 0.01 m
+    sim.water_fraction = a2
+    assert np.array_equal(sim.water_fraction, a2)
+    sim.advance(2)  # the flow carries the new water: its volume is kept (closed box)
+    assert abs(sim.water_fraction.sum() - a2.sum()) < 1e-8 * a2.sum()
+    with pytest.raises(ValueError, match=r"outside \[0, 1\]"):
+        sim.water_fraction = a2 * 1.5
