@@ -694,6 +694,66 @@ impl PySimulation {
         Ok(())
     }
 
+    /// Moves block `id` between steps: its centre `position` [m], and optionally its
+    /// `orientation` (a quaternion (x, y, z, w), normalised here), `velocity` [m/s] and
+    /// `angular_velocity` [rad/s]; what is not given is kept. Its members are put in the rigid
+    /// shape at the new pose, with the block's velocity field.
+    #[pyo3(signature = (id, position, orientation = None, velocity = None, angular_velocity = None))]
+    fn set_block_pose(
+        &mut self,
+        id: u32,
+        position: [f64; 3],
+        orientation: Option<[f64; 4]>,
+        velocity: Option<[f64; 3]>,
+        angular_velocity: Option<[f64; 3]>,
+    ) -> PyResult<()> {
+        let blocks = &self.sim.rigid.blocks;
+        let Some(b) = blocks.slot_of(id) else {
+            return Err(PyValueError::new_err(format!(
+                "set_block_pose: no block {id}"
+            )));
+        };
+        let mut st = blocks.state(b);
+        st.centre = vec3(position, "set_block_pose: position")?;
+        if let Some(q) = orientation {
+            let q = Quat::from_array(q);
+            if !(q.is_finite() && q.length() > 0.0) {
+                return Err(PyValueError::new_err(format!(
+                    "set_block_pose: orientation {:?} is not a rotation",
+                    q.to_array()
+                )));
+            }
+            st.orientation = q.normalize();
+        }
+        if let Some(v) = velocity {
+            st.velocity = vec3(v, "set_block_pose: velocity")?;
+        }
+        if let Some(w) = angular_velocity {
+            st.angular_velocity = vec3(w, "set_block_pose: angular_velocity")?;
+        }
+        let domain = self.sim.dem.domain;
+        let arms: Vec<Vec3> = (blocks.member_offsets(b).iter())
+            .map(|&q| st.orientation * q)
+            .collect();
+        if let Some(r) = arms.iter().find(|&&r| !domain.contains(st.centre + r)) {
+            return Err(PyValueError::new_err(format!(
+                "set_block_pose: a member sphere would lie outside the domain, at {:?}",
+                (st.centre + *r).to_array()
+            )));
+        }
+        let ids = blocks.member_ids(b).to_vec();
+        let s = &mut self.sim.dem.spheres;
+        for (sid, r) in ids.into_iter().zip(arms) {
+            let i = s.slot_of(sid).expect("a block's members are present");
+            s.position[i] = domain.wrap(st.centre + r);
+            s.velocity[i] = st.velocity + st.angular_velocity.cross(r);
+            s.angular_velocity[i] = st.angular_velocity;
+        }
+        self.sim.rigid.blocks.set_state(b, st);
+        self.relist();
+        Ok(())
+    }
+
     /// Block ids (m,), in the order of every block array.
     #[getter]
     fn block_ids<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<u32>> {

@@ -250,3 +250,25 @@ def test_flow_fields_can_be_set():
     assert abs(sim.water_fraction.sum() - a2.sum()) < 1e-8 * a2.sum()
     with pytest.raises(ValueError, match=r"outside \[0, 1\]"):
         sim.water_fraction = a2 * 1.5
+
+
+def test_a_block_can_be_moved_in_place(repo):
+    sim = riprap.Simulation(str(repo / "examples" / "tetrapods_on_rubble.toml"))
+    top = int(np.argmax(sim.block_centres[:, 2]))  # the highest: room above it
+    bid, centre = int(sim.block_ids[top]), sim.block_centres[top].copy()
+    lifted = centre + [0.0, 0.0, 0.05]
+    turn = [0.0, 0.0, np.sin(0.15), np.cos(0.15)]  # 0.3 rad about z, (x, y, z, w)
+    sim.set_block_pose(bid, lifted, orientation=turn, velocity=[0.0, 0.0, 0.0])
+    assert np.allclose(sim.block_centres[top], lifted, atol=1e-12)
+    assert np.allclose(sim.block_orientations[top], turn, atol=1e-12)
+    members = sim.bodies == bid
+    m = sim.masses[members]
+    com = (sim.positions[members] * m[:, None]).sum(axis=0) / m.sum()
+    assert np.allclose(com, lifted, atol=1e-9)  # the members in the rigid shape, there
+    sim.advance(20)
+    z = sim.block_centres[list(sim.block_ids).index(bid), 2]
+    assert lifted[2] - 0.01 < z < lifted[2]  # it falls from where it was put
+    with pytest.raises(ValueError, match="no block"):
+        sim.set_block_pose(10**9, lifted)
+    with pytest.raises(ValueError, match="outside the domain"):
+        sim.set_block_pose(bid, lifted + [0.0, 0.0, 100.0])
