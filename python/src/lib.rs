@@ -9,6 +9,7 @@
 //! pays a trip through the kernel per parallel loop); Ctrl-C is looked at between chunks of
 //! steps, 50 to 100 ms apart, or after the step under way when one takes longer.
 
+mod blocks;
 mod dict;
 mod flow;
 mod sim;

@@ -19,8 +19,7 @@ use pyo3::types::PyDict;
 use riprap::dem::spheres::{NewSphere, NO_BODY};
 use riprap::dem::walls::Motion;
 use riprap::io::checkpoint::Checkpoint;
-use riprap::math::{Quat, Vec3};
-use riprap::rigid::blocks::RigidState;
+use riprap::math::Vec3;
 use riprap::run::fingerprint::{self, Fingerprint};
 use riprap::run::{checkpoint_of, flow, restore, series_row};
 use riprap::scenario::{build, Source};
@@ -105,7 +104,7 @@ fn rows(a: &PyReadonlyArray2<'_, f64>, n: usize, what: &str) -> PyResult<Vec<Vec
     Ok(v)
 }
 
-fn vec3(v: [f64; 3], what: &str) -> PyResult<Vec3> {
+pub(crate) fn vec3(v: [f64; 3], what: &str) -> PyResult<Vec3> {
     let x = Vec3::from_array(v);
     if x.is_finite() {
         Ok(x)
@@ -597,44 +596,8 @@ impl PySimulation {
         velocity: [f64; 3],
         angular_velocity: [f64; 3],
     ) -> PyResult<u32> {
-        let rigid = &self.sim.rigid;
-        let Some(t) = rigid.templates.iter().position(|t| t.name == template) else {
-            return Err(PyValueError::new_err(format!(
-                "add_block: no block template named `{template}` (the scenario has {:?})",
-                self.block_templates()
-            )));
-        };
-        let section = (self.src.scenario.block_templates.iter())
-            .find(|s| s.name == template)
-            .expect("the templates are the scenario's");
-        let d = &self.sim.dem;
-        let m = d
-            .material_index(&section.material)
-            .expect("the scenario's checks found the material");
-        let tpl = &rigid.templates[t];
-        let state = RigidState {
-            centre: vec3(position, "add_block: position")?,
-            velocity: vec3(velocity, "add_block: velocity")?,
-            orientation: Quat::from_scaled_axis(vec3(rotation, "add_block: rotation")?)
-                * tpl.principal_axes,
-            angular_velocity: vec3(angular_velocity, "add_block: angular_velocity")?,
-        };
-        if let Some(x) = (tpl.member_positions(state.centre, state.orientation).iter())
-            .find(|x| !d.domain.contains(**x))
-        {
-            return Err(PyValueError::new_err(format!(
-                "add_block: a member sphere of the block lies outside the domain, at {:?}",
-                x.to_array()
-            )));
-        }
-        let (density, gravity) = (d.materials[m as usize].density, d.gravity);
-        let s = &mut self.sim.dem.spheres;
-        let first = s.len();
-        let id = self.sim.rigid.add_block(s, t, m, density, state);
-        // The members' weight, as fed spheres get, for the next step's opening half kick.
-        for i in first..s.len() {
-            s.force[i] = s.mass[i] * gravity;
-        }
+        let motion = [position, rotation, velocity, angular_velocity];
+        let id = crate::blocks::add(&mut self.sim, &self.src, template, motion)?;
         self.relist();
         Ok(id)
     }
@@ -642,28 +605,7 @@ impl PySimulation {
     /// Removes the blocks with these ids, with their member spheres, between steps (not in
     /// a scenario with wires or bonds, whose ends would be left dangling); returns how many.
     fn remove_blocks(&mut self, ids: Vec<u32>) -> PyResult<usize> {
-        let rigid = &mut self.sim.rigid;
-        if !(rigid.wires.is_empty() && rigid.bonds.is_empty()) {
-            return Err(PyValueError::new_err(
-                "remove_blocks: not in a scenario with wires or bonds",
-            ));
-        }
-        let s = &self.sim.dem.spheres;
-        let mut keep = vec![true; s.len()];
-        for id in &ids {
-            let Some(b) = rigid.blocks.id.iter().position(|x| x == id) else {
-                return Err(PyValueError::new_err(format!(
-                    "remove_blocks: no block {id}"
-                )));
-            };
-            for m in rigid.blocks.member_ids(b) {
-                if let Some(k) = s.slot_of(*m) {
-                    keep[k] = false;
-                }
-            }
-        }
-        let removed = rigid.drop_partial_blocks(s, &mut keep);
-        self.sim.dem.spheres.retain(&keep);
+        let removed = crate::blocks::remove(&mut self.sim, &ids)?;
         self.relist();
         Ok(removed)
     }
@@ -707,49 +649,8 @@ impl PySimulation {
         velocity: Option<[f64; 3]>,
         angular_velocity: Option<[f64; 3]>,
     ) -> PyResult<()> {
-        let blocks = &self.sim.rigid.blocks;
-        let Some(b) = blocks.slot_of(id) else {
-            return Err(PyValueError::new_err(format!(
-                "set_block_pose: no block {id}"
-            )));
-        };
-        let mut st = blocks.state(b);
-        st.centre = vec3(position, "set_block_pose: position")?;
-        if let Some(q) = orientation {
-            let q = Quat::from_array(q);
-            if !(q.is_finite() && q.length() > 0.0) {
-                return Err(PyValueError::new_err(format!(
-                    "set_block_pose: orientation {:?} is not a rotation",
-                    q.to_array()
-                )));
-            }
-            st.orientation = q.normalize();
-        }
-        if let Some(v) = velocity {
-            st.velocity = vec3(v, "set_block_pose: velocity")?;
-        }
-        if let Some(w) = angular_velocity {
-            st.angular_velocity = vec3(w, "set_block_pose: angular_velocity")?;
-        }
-        let domain = self.sim.dem.domain;
-        let arms: Vec<Vec3> = (blocks.member_offsets(b).iter())
-            .map(|&q| st.orientation * q)
-            .collect();
-        if let Some(r) = arms.iter().find(|&&r| !domain.contains(st.centre + r)) {
-            return Err(PyValueError::new_err(format!(
-                "set_block_pose: a member sphere would lie outside the domain, at {:?}",
-                (st.centre + *r).to_array()
-            )));
-        }
-        let ids = blocks.member_ids(b).to_vec();
-        let s = &mut self.sim.dem.spheres;
-        for (sid, r) in ids.into_iter().zip(arms) {
-            let i = s.slot_of(sid).expect("a block's members are present");
-            s.position[i] = domain.wrap(st.centre + r);
-            s.velocity[i] = st.velocity + st.angular_velocity.cross(r);
-            s.angular_velocity[i] = st.angular_velocity;
-        }
-        self.sim.rigid.blocks.set_state(b, st);
+        let motion = (velocity, angular_velocity);
+        crate::blocks::set_pose(&mut self.sim, id, position, orientation, motion)?;
         self.relist();
         Ok(())
     }

@@ -56,14 +56,14 @@
 //!
 //! **Under air** (a free surface, `fluid::phases`): the mixture of [53] has three parts,
 //! ρ̄ = ρ(α) (1 − φ) + Σ_i φ_ic ρ_i, and the flow gets φ and Σ_i φ_ic ρ_i (`fluid::solids`:
-//! the inertia of a face's fluid and solid parts, the fluid phases' weight, α inside solids extended from the fluid
-//! around them). p̄ then holds the air's hydrostatic pressure, which [59]'s sum by shares over
-//! every face a sphere touches would apply to a body thicker than the sphere: [59] takes the
-//! pressure less its hydrostatic part ([`resolved::FlowView::force_density`]), and the
-//! buoyancy is the weight of the water *and* air displaced, the sphere's
-//! own volume under the water line placed in each cell, shared where a block's members overlap
-//! ([`buoyancy`]): a block half out of the water is buoyed by its submerged half (validation
-//! case `floating_sphere`: Archimedes' draft). Unresolved
+//! the inertia of a face's fluid and solid parts, the fluid phases' weight, α inside solids
+//! extended from the fluid around them). p̄ then holds the air's hydrostatic pressure, which
+//! [59]'s sum by shares over every face a sphere touches would apply to a body thicker than
+//! the sphere: [59] takes the pressure less its hydrostatic part
+//! ([`resolved::FlowView::force_density`]), and the buoyancy is the weight of the water *and*
+//! air displaced, the sphere's own volume under the water line placed in each cell, shared
+//! where a block's members overlap ([`buoyancy`]): a block half out of the water is buoyed by
+//! its submerged half (validation case `floating_sphere`: Archimedes' draft). Unresolved
 //! spheres take ρ(α) and ν(α) at their centre for the drag [5] and the buoyancy.
 //!
 //! **Sub-cycling.** The fluid force is *held* over the k DEM sub-steps of a fluid step: the
