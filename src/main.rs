@@ -76,6 +76,10 @@ enum Command {
         /// (to grow an ensemble, or finish one cut short, with the same code).
         #[arg(long)]
         resume: bool,
+        /// The free-surface cases' momentum transport across the surface ([fluid.air]
+        /// momentum: weighted, weighted_exchange, exchange; default weighted).
+        #[arg(long, value_parser = ["weighted", "weighted_exchange", "exchange"])]
+        momentum: Option<String>,
     },
     /// Validate a scenario and print the derived quantities (contact time, time step, ...).
     Check {
@@ -473,6 +477,14 @@ fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
                     pc(s.wall_seconds - t.total()),
                 );
             }
+            if s.shortened_steps > 0 {
+                eprintln!(
+                    "note: {} the flow needed shorter than the DEM step (the DEM followed it, \
+                     down to a tenth of its step): air or water faster than the run's \
+                     reference velocity",
+                    riprap::scenario::text::count(s.shortened_steps as f64, "fluid step"),
+                );
+            }
             if s.spheres_lost > 0 {
                 eprintln!(
                     "note: {} sphere(s) left the domain and were removed (an outflow, or a \
@@ -516,7 +528,14 @@ fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
             members,
             variant,
             resume,
+            momentum,
         } => (|| {
+            if let Some(m) = momentum
+                .as_deref()
+                .and_then(riprap::fluid::exchange::Momentum::named)
+            {
+                riprap::validation::set_momentum(m);
+            }
             anyhow::ensure!(
                 members >= 2,
                 "--members {members}: an ensemble needs at least 2 beds"

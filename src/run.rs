@@ -90,6 +90,9 @@ pub struct RunSummary {
     pub spheres: usize,
     /// Spheres removed because they left the domain (during the whole run).
     pub spheres_lost: usize,
+    /// Fluid steps of this run (since its start or restart) that the DEM followed to a step
+    /// shorter than its own (`simulation::fluid_steps::SHORTEST_STEP`).
+    pub shortened_steps: u64,
     /// Cells of the fluid grid (0 without a fluid).
     pub fluid_cells: usize,
     /// Wall-clock time per phase of the fluid steps [s] (zero without a fluid).
@@ -440,6 +443,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         wall_seconds: started.elapsed().as_secs_f64(),
         spheres: sim.dem.spheres.len(),
         spheres_lost: sim.dem.stats.spheres_lost,
+        shortened_steps: sim.shortened_steps,
         fluid_cells: sim.fluid.as_ref().map_or(0, |f| f.grid().cell_count()),
         phase_times: sim.times,
         pressure_seconds: sim.fluid.as_ref().map_or(0.0, |f| f.pressure_seconds()),

@@ -88,6 +88,9 @@ pub struct Simulation {
     /// Largest |∇·u| of the projected flow of the last coupled fluid step, before the
     /// correction [62] blends in the spheres' velocities [s⁻¹] (not state: never saved).
     pub projected_divergence: f64,
+    /// Fluid steps since the start (or restart) for which the DEM followed the flow to a step
+    /// shorter than its own (`fluid_steps::SHORTEST_STEP`).
+    pub shortened_steps: u64,
 }
 
 impl Simulation {
@@ -133,6 +136,7 @@ impl Simulation {
             times: Default::default(),
             dem_times: Default::default(),
             projected_divergence: 0.0,
+            shortened_steps: 0,
         };
         sim.dem.rebuild_lists(sim.time);
         start_forces(&mut sim.dem.spheres, sim.dem.gravity);
@@ -171,6 +175,7 @@ impl Simulation {
             times: Default::default(),
             dem_times: Default::default(),
             projected_divergence: 0.0,
+            shortened_steps: 0,
         }
     }
 

@@ -90,17 +90,20 @@ fn a_fluid_step_holds_whole_dem_steps() {
     assert!(sim.reached(end));
 }
 
+/// The DEM follows the flow to steps down to a tenth of its own
+/// (`simulation::fluid_steps::SHORTEST_STEP`; `tests/coupling.rs` checks the following);
+/// below that the run stops with the diagnosis.
 #[test]
-fn a_fluid_step_shorter_than_the_dem_step_stops_the_run() {
-    // 500 m/s over 1.25 cm cells: a stable fluid step of ~7e-6 s, below the DEM step of
-    // ~4e-5 s.
+fn a_fluid_step_under_a_tenth_of_the_dem_step_stops_the_run() {
+    // 2000 m/s over 1.25 cm cells: a stable fluid step of ~2e-6 s, under a tenth of the DEM
+    // step of ~4e-5 s.
     let text = format!("{CHANNEL}{FALLING_ROCK}").replace(
         "initial_velocity = [0.5, 0.0, 0.0]",
-        "initial_velocity = [500.0, 0.0, 0.0]",
+        "initial_velocity = [2000.0, 0.0, 0.0]",
     );
     let mut sim = simulation(&text);
     let e = sim.step().unwrap_err().to_string();
-    assert!(e.contains("below the DEM step"), "{e}");
+    assert!(e.contains("fell below 0.1 of the DEM step"), "{e}");
     assert!(
         e.contains("likely cause") && e.contains("run.time_step"),
         "{e}"

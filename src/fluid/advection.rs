@@ -40,6 +40,11 @@
 //! air face beside one a stone barely touches took that face's velocity downwind, which blew up
 //! the air over a rubble mound's armour (`tests/coupling.rs`).
 //!
+//! `[fluid.air] momentum = "exchange"` keeps the plain mean with air too and carries the
+//! momentum with the mass where the surface crosses a face instead (`exchange`: the weighted
+//! mean is not centred where the densities differ, which let the spray of a wave's run-up
+//! on a rubble mound run away).
+//!
 //! Units: u [m s⁻¹], Δ [m], ρ [kg m⁻³], A_a [m s⁻²].
 
 use super::grid::Stencil;

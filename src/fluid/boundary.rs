@@ -258,6 +258,21 @@ pub fn fill_scalar_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, f: &mut [f64])
     }
 }
 
+/// Copies the opposite side into the ghost layers of `f` across the periodic axes only;
+/// elsewhere the ghosts are left as they are (a face field's boundary faces among them).
+pub fn wrap_periodic_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, f: &mut [f64]) {
+    for (a, &sa) in grid.strides().iter().enumerate() {
+        if !bcs.is_periodic(a) {
+            continue;
+        }
+        let na = grid.n[a];
+        for_each_in_plane(grid, a, |base| {
+            f[base] = f[base + na * sa];
+            f[base + (na + 1) * sa] = f[base + sa];
+        });
+    }
+}
+
 /// Fills the ghost values of the pressure: as [`fill_scalar_ghosts`], and at an open top the
 /// ghost is −p of the cell below, so that p = 0 on the face (linear interpolation).
 pub fn fill_pressure_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, p: &mut [f64]) {

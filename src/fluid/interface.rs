@@ -142,8 +142,9 @@ pub struct Interface {
     grid: StaggeredGrid,
     bcs: Boundaries,
     reconstruction: Reconstruction,
-    /// The face fluxes F of the sweep (at the low face of each cell).
-    flux: Vec<f64>,
+    /// The face fluxes F of each axis's sweep (at the low face of each cell), kept for the
+    /// momentum the water brings (`super::exchange`); periodic ghosts wrapped after the step.
+    flux: [Vec<f64>; 3],
     /// c_i of the step (1 where α > ½ at its start).
     wet: Vec<f64>,
     /// What each z-plane clipped.
@@ -162,7 +163,7 @@ impl Interface {
             grid,
             bcs,
             reconstruction,
-            flux: grid.field(),
+            flux: [grid.field(), grid.field(), grid.field()],
             wet: grid.field(),
             clipped: vec![Clipped::default(); grid.padded()[2]],
         }
@@ -181,8 +182,8 @@ impl Interface {
         let order = if step % 2 == 0 { [0, 1, 2] } else { [2, 1, 0] };
         for axis in order {
             super::boundary::fill_scalar_ghosts(&g, &self.bcs, alpha);
-            self.fluxes(alpha, &u[axis], axis, dt);
-            let (sa, flux, wet) = (g.strides()[axis], &self.flux, &self.wet);
+            self.sweep_fluxes(alpha, &u[axis], axis, dt);
+            let (sa, flux, wet) = (g.strides()[axis], &self.flux[axis], &self.wet);
             let courant = dt / g.spacing[axis];
             alpha
                 .par_chunks_mut(plane)
@@ -231,12 +232,22 @@ impl Interface {
                 below: t.below + c.below,
             });
         super::boundary::fill_scalar_ghosts(&g, &self.bcs, alpha);
+        for f in &mut self.flux {
+            super::boundary::wrap_periodic_ghosts(&g, &self.bcs, f);
+        }
         clipped
+    }
+
+    /// The water the last step moved through each face along its axis, F of the module docs
+    /// [cell volumes], at the low face of each cell; ghosts across periodic axes wrapped
+    /// (elsewhere zero).
+    pub fn fluxes(&self) -> [&[f64]; 3] {
+        [&self.flux[0], &self.flux[1], &self.flux[2]]
     }
 
     /// The fluxes through the faces normal to `axis` (face f of a line, 0 ..= n, at the low
     /// face of cell f), from α with its ghosts filled.
-    fn fluxes(&mut self, alpha: &[f64], u: &[f64], axis: usize, dt: f64) {
+    fn sweep_fluxes(&mut self, alpha: &[f64], u: &[f64], axis: usize, dt: f64) {
         let g = self.grid;
         let (s, n) = (g.strides(), g.n[axis]);
         let periodic = self.bcs.is_periodic(axis);
@@ -264,7 +275,7 @@ impl Interface {
                 1..g.n[b] + 1
             }
         };
-        self.flux
+        self.flux[axis]
             .par_chunks_mut(plane)
             .enumerate()
             .for_each(|(kk, out)| {

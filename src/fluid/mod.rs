@@ -48,6 +48,7 @@ pub mod advection;
 pub mod boundary;
 pub mod diagnostics;
 pub mod diffusion;
+pub mod exchange;
 pub mod flume;
 pub mod forcing;
 pub mod grid;

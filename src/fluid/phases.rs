@@ -34,6 +34,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::boundary::fill_scalar_ghosts;
+use super::exchange::Momentum;
 use super::interface::Reconstruction;
 use super::pressure::Preconditioner;
 use super::{Boundaries, StaggeredGrid};
@@ -52,6 +53,10 @@ pub struct Air {
     /// the serialised form when it is the default (multigrid).
     #[serde(default, skip_serializing_if = "Preconditioner::is_default")]
     pub pressure_preconditioner: Preconditioner,
+    /// How momentum is carried across the surface ([`super::exchange::Momentum`]); left out
+    /// of the serialised form when it is the default.
+    #[serde(default, skip_serializing_if = "Momentum::is_default")]
+    pub momentum: Momentum,
 }
 
 impl Default for Air {
@@ -62,6 +67,7 @@ impl Default for Air {
             dynamic_viscosity: 1.813e-5,
             reconstruction: Reconstruction::Thinc,
             pressure_preconditioner: Preconditioner::default(),
+            momentum: Momentum::default(),
         }
     }
 }

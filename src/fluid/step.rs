@@ -21,11 +21,19 @@
 //! gradient is a known function of time and is taken at the midpoint, which keeps the
 //! scheme second order for the oscillatory drive; ρ̄ and F are those set before the step.
 //!
+//! With air, α is then carried by uⁿ⁺¹ ([`super::interface`]); with `Air::momentum`
+//! exchanging, the faces the surface crossed then take the momentum the phase coming in
+//! brings ([`super::exchange`]; after the projection, like the coupling's correction [62], so
+//! uⁿ⁺¹ is divergence-free to the projection's tolerance only where the surface did not
+//! cross). The transported velocity is density-weighted except with `Momentum::Exchange`
+//! ([`super::advection`]).
+//!
 //! Boundary conditions: the normal velocity on boundary faces and all ghosts are set at
 //! tⁿ⁺¹ before the projection (outflow faces by the convective condition, corrected to
 //! conserve volume); the projection moves only interior faces (Neumann pressure).
 
 use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts};
+use super::exchange::{exchange, Carried, Phases};
 use super::forcing::{body_acceleration, solid_body_acceleration};
 use super::grid::{shifted, update_region, update_rows};
 use super::model::Fluid;
@@ -36,6 +44,11 @@ use super::sgs::eddy_viscosity;
 use super::tendency::{tendency_row, Inertia};
 use super::timing::lap;
 use crate::math::Vec3;
+
+/// The three components of a face field, borrowed.
+fn velocity(u: &[Vec<f64>; 3]) -> [&[f64]; 3] {
+    [&u[0], &u[1], &u[2]]
+}
 
 /// Most passes of the variable-density projection on the first step: the error shrinks by
 /// 1 − ρ₀/ρ̄_max per pass, 0.62 for quartz in water, so 100 passes reach 1e-13 below
@@ -120,6 +133,7 @@ impl Fluid {
                 Some(_) => (&self.stress_viscosity[..], true, 0.0),
                 None => (&state.eddy_viscosity[..], par.smagorinsky.is_some(), mu),
             };
+            let weighted = par.air.is_some_and(|a| a.momentum.weights());
             for (a, h) in self.tendency.iter_mut().enumerate() {
                 let inertia = match (par.air, &self.solids) {
                     (Some(_), Some(solids)) => Inertia::Mixture {
@@ -130,7 +144,7 @@ impl Fluid {
                     (None, _) => Inertia::Cells(rho),
                 };
                 update_rows(&grid, &self.regions[a], h, |start, row| {
-                    tendency_row(&st, a, sgs, u, mu_t, inertia, mu, start, row);
+                    tendency_row(&st, a, sgs, u, mu_t, inertia, weighted, mu, start, row);
                 });
             }
         }
@@ -308,10 +322,17 @@ impl Fluid {
         fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
         let mut clock = lap(clock, &mut times.other);
 
-        // With air: α carried by uⁿ⁺¹ (with solids, less their share: `solids`), then ρ̄ from
-        // it for the next step.
+        // With air: α carried by uⁿ⁺¹ (with solids, less their share: `solids`), optionally the
+        // momentum the phases bring into the faces the surface crossed (`exchange`; Hⁿ⁻¹ is
+        // spent, its storage takes the new velocities), then ρ̄ from α for the next step.
         if let (Some(air), Some(interface)) = (&par.air, &mut self.interface) {
             let alpha = &mut state.water_fraction;
+            let exchanges = air.momentum.exchanges();
+            if exchanges {
+                self.projected_divergence =
+                    super::model::max_divergence(&grid, &st, velocity(&state.velocity));
+                self.water_fraction_before.copy_from_slice(alpha);
+            }
             // With solids, the fluid's own flux carries α (`solids`).
             let u = match &mut self.solids {
                 Some(solids) => solids.fluid_velocity(&grid, &self.projected, &state.velocity),
@@ -320,6 +341,28 @@ impl Fluid {
             let c = interface.advect(alpha, u, dt, state.steps);
             self.clipped.above += c.above;
             self.clipped.below += c.below;
+            if exchanges {
+                let carried = Carried {
+                    before: &self.water_fraction_before,
+                    after: alpha,
+                    velocity: velocity(u),
+                    water: interface.fluxes(),
+                    dt,
+                };
+                let rho = Phases {
+                    water: rho_w,
+                    air: air.density,
+                };
+                let closed = |a: usize, c: usize| self.face_density[a][c] == f64::INFINITY;
+                let (v, out) = (velocity(&state.velocity), &mut state.previous_tendency);
+                exchange(&grid, &st, &self.regions, rho, v, carried, closed, out);
+                for (a, (u, new)) in state.velocity.iter_mut().zip(out.iter()).enumerate() {
+                    update_rows(&grid, &self.regions[a], u, |start, row| {
+                        row.copy_from_slice(shifted(new, start, 0, row.len()));
+                    });
+                }
+                fill_velocity_ghosts(&grid, &bcs, &mut state.velocity, t + dt);
+            }
             clock = lap(clock, &mut times.interface);
             if let Some(flume) = &self.flume {
                 let work = &mut self.flume_targets;

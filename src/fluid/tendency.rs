@@ -40,7 +40,9 @@ pub enum Inertia<'a> {
 ///
 /// `u` is the velocity with filled ghosts [m s⁻¹], `mu_t` μ_SGS at cell centres with filled
 /// ghosts [Pa s] (read only with `sgs`), `rho` the density on the faces [kg m⁻³], `mu` the dynamic
-/// viscosity [Pa s]. The faces and all their neighbours must lie inside the padded fields.
+/// viscosity [Pa s]. With `weighted` (and face densities) the transported velocity across
+/// the faces parallel to u_a is weighted by the densities ([`super::advection`]). The faces and
+/// all their neighbours must lie inside the padded fields.
 #[allow(clippy::too_many_arguments)]
 pub fn tendency_row(
     st: &Stencil,
@@ -49,11 +51,12 @@ pub fn tendency_row(
     u: Velocity,
     mu_t: &[f64],
     rho: Inertia,
+    weighted: bool,
     mu: f64,
     start: usize,
     out: &mut [f64],
 ) {
-    let weighted = !matches!(rho, Inertia::Cells(_));
+    let weighted = weighted && !matches!(rho, Inertia::Cells(_));
     match (a, sgs, weighted) {
         (0, false, false) => row::<0, false, false>(st, u, mu_t, rho, mu, start, out),
         (1, false, false) => row::<1, false, false>(st, u, mu_t, rho, mu, start, out),
@@ -218,6 +221,7 @@ mod tests {
                             u,
                             &mu_t,
                             Inertia::Cells(&rho),
+                            false,
                             mu,
                             start,
                             &mut out,
@@ -240,6 +244,7 @@ mod tests {
                             u,
                             &mu_t,
                             Inertia::Faces(&rho),
+                            true,
                             mu,
                             start,
                             &mut out,

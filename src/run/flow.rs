@@ -142,11 +142,12 @@ pub fn append_series(sim: &Simulation, row: &mut Vec<f64>) {
         row.extend([
             f.kinetic_energy(),
             f.max_cell_speed(),
-            // With spheres, the projected flow: the correction [62] is not divergence-free.
+            // With spheres, the projected flow: the correction [62] is not divergence-free,
+            // nor with air the momentum exchange (`fluid::exchange`).
             if sim.coupling.is_some() {
                 sim.projected_divergence
             } else {
-                f.max_divergence()
+                f.projected_divergence()
             },
             f.last_time_step(),
         ]);

@@ -2,7 +2,8 @@
 //!
 //! ```text
 //! Δt_adaptive = min( C_adv / Σ_a (max|u_a| / Δ_a) ,  C_visc / (ν_max Σ_a 1/Δ_a²) ,  Δt_max )
-//! with spheres:     k = ⌊Δt_adaptive / Δt⌋ ≥ 1 ,   Δt_f = k Δt
+//! with spheres:     k = ⌊Δt_adaptive / Δt⌋ ,   Δt_f = k Δt   (k ≥ 1)
+//!                   Δt_f = Δt_adaptive, one DEM step of that length   (Δt/10 ≤ Δt_adaptive < Δt)
 //! without spheres:  Δt_f = Δt_adaptive (the last two steps split evenly to land on the end)
 //! ```
 //!
@@ -30,6 +31,13 @@ use crate::fluid::Fluid;
 /// Relative tolerance on the end time of a run paced by the fluid alone: its last step lands
 /// on the end to within a few ulps (`Fluid::step_adaptive`).
 const END_TOLERANCE: f64 = 1e-12;
+
+/// The shortest share of the DEM step Δt that a fluid step may take [-]. When the flow's
+/// stable step falls below Δt (air escaping from a pocket a breaking wave closed, say, at
+/// ten times the water's speed) the step holds one DEM step of the flow's length: a shorter
+/// step only makes the contacts more accurate. Below a tenth of Δt the flow is taken to be
+/// running away and the run stops with a diagnosis.
+pub const SHORTEST_STEP: f64 = 0.1;
 
 impl Simulation {
     /// Adds the water. The fluid's clock must be the simulation's (a fresh fluid at t = 0, or
@@ -75,7 +83,8 @@ impl Simulation {
     /// never past `t_end` (with spheres: at most the whole DEM steps left to it).
     ///
     /// Fails with a diagnosis when the flow becomes non-finite, or when the fluid's stable step
-    /// falls below the DEM step (the fluid step cannot be shorter than one DEM step).
+    /// falls below a tenth of the DEM step ([`SHORTEST_STEP`]; above it, one DEM step of the
+    /// flow's length).
     pub fn step_towards(&mut self, t_end: f64) -> Result<(), Instability> {
         self.step += 1;
         if self.fluid.is_none() {
@@ -101,37 +110,53 @@ impl Simulation {
             lap(clock, &mut self.times.fluid);
             return self.check_fluid();
         }
-        if stable < dt {
+        if stable < SHORTEST_STEP * dt {
             let what = format!(
-                "the fluid's stable step {stable:.4e} s (CFL and viscous limits) fell below the \
-                 DEM step {dt:.4e} s, and a fluid step holds at least one DEM step"
+                "the fluid's stable step {stable:.4e} s (CFL and viscous limits) fell below \
+                 {SHORTEST_STEP} of the DEM step {dt:.4e} s, the shortest step the DEM follows \
+                 the flow to"
             );
             return Err(self.fluid_failure(what));
+        }
+        if stable < dt {
+            // The flow needs a shorter step than the DEM's: one DEM step of its length.
+            self.shortened_steps += 1;
+            self.dem.dt = stable;
+            let done = self.coupled_step(stable, 1);
+            self.dem.dt = dt;
+            return done;
         }
         let mut k = (stable / dt).floor();
         let left = ((t_end - self.time) / dt).round();
         if left.is_finite() {
             k = k.min(left.max(1.0));
         }
+        self.coupled_step(dt, k as u64)
+    }
+
+    /// One fluid step of `k` DEM steps of `dt` [s], coupled (module docs, 1 to 4).
+    fn coupled_step(&mut self, dt: f64, k: u64) -> Result<(), Instability> {
+        let fluid = self.fluid.as_mut().expect("a fluid");
+        let k_dt = k as f64 * dt;
         let clock = Instant::now();
-        fluid.step(k * dt);
+        fluid.step(k_dt);
         let t_fluid = fluid.time();
         let mut clock = lap(clock, &mut self.times.fluid);
         self.check_fluid()?;
         if let (Some(c), Some(f)) = (&mut self.coupling, &self.fluid) {
-            self.projected_divergence = f.max_divergence();
+            self.projected_divergence = f.projected_divergence();
             let (spheres, materials) = (&mut self.dem.spheres, &self.dem.materials);
             c.fluid_forces(f, spheres, materials, dt); // [59] [61], held
             let d = &self.dem;
-            c.find_lubricated(&d.spheres, &d.walls, &d.domain, self.time, k * dt);
+            c.find_lubricated(&d.spheres, &d.walls, &d.domain, self.time, k_dt);
             clock = lap(clock, &mut self.times.fluid_loads);
         }
-        for _ in 0..k as u64 {
+        for _ in 0..k {
             self.dem_step()?;
         }
         clock = lap(clock, &mut self.times.dem);
         if let (Some(c), Some(f)) = (&mut self.coupling, &mut self.fluid) {
-            c.correct(f, &mut self.dem.spheres, k * dt, dt); // [53] [62] [63]
+            c.correct(f, &mut self.dem.spheres, k_dt, dt); // [53] [62] [63]
             lap(clock, &mut self.times.correction);
         }
         self.time = t_fluid;

@@ -51,6 +51,7 @@ pub mod wet_rebound;
 
 pub use report::{run_validation, run_validation_cases, CASES};
 
+use crate::fluid::exchange::Momentum;
 use crate::fluid::interface::Reconstruction;
 use crate::fluid::phases::Air;
 use crate::fluid::{Boundaries, Boundary, Fluid, FluidParameters, StaggeredGrid};
@@ -93,11 +94,36 @@ pub fn up_crossings(record: &[(f64, f64)], after: f64) -> Vec<f64> {
         .collect()
 }
 
+/// The momentum transport across the surface the free-surface cases run with
+/// (`riprap validate --momentum`; the default unless set).
+static MOMENTUM: std::sync::Mutex<Momentum> = std::sync::Mutex::new(Momentum::Weighted);
+
+/// Sets the momentum transport of the free-surface cases ([`momentum`]).
+pub fn set_momentum(m: Momentum) {
+    *MOMENTUM.lock().expect("not poisoned") = m;
+}
+
+/// The momentum transport the free-surface cases run with ([`set_momentum`]).
+pub fn momentum() -> Momentum {
+    *MOMENTUM.lock().expect("not poisoned")
+}
+
+/// A case's scenario text with [`momentum`] under `[fluid.air]` when it is not the default.
+pub fn with_momentum(text: &str) -> String {
+    match momentum() {
+        Momentum::Weighted => text.to_string(),
+        m => {
+            let line = format!("[fluid.air]\nmomentum = \"{}\"", m.name());
+            text.replacen("[fluid.air]", &line, 1)
+        }
+    }
+}
+
 /// The free-surface cases' flow: `cells` over a box of `size` [m] from the origin, a 2D
 /// slice (periodic in y), `start` at x = 0 (free slip, or a wavemaker), free-slip walls at x
 /// = max and at the bottom, `top` above (a free-slip
 /// lid or open to the atmosphere), water without a subgrid model under air at 20 °C whose
-/// surface is carried with `reconstruction`, gravity `g` [m s⁻²] down z. The water is set by
+/// surface is carried with `reconstruction`, momentum as [`momentum`] says, gravity `g` [m s⁻²] down z. The water is set by
 /// the case.
 pub fn slice_under_air(
     cells: [usize; 3],
@@ -116,6 +142,7 @@ pub fn slice_under_air(
     p.gravity = Vec3::new(0.0, 0.0, -g);
     p.air = Some(Air {
         reconstruction,
+        momentum: momentum(),
         ..Air::default()
     });
     Fluid::new(grid, bcs, p).expect("the slice is a valid fluid")

@@ -127,6 +127,13 @@ pub fn run_validation_cases(
     let run = |name: &str| only.is_none_or(|o| o == name);
     std::fs::create_dir_all(out)?;
     let mut md = String::from("# riprap validation report\n\n");
+    if super::momentum() != crate::fluid::exchange::Momentum::default() {
+        md += &format!(
+            "The free-surface cases ran with `[fluid.air] momentum = \"{}\"`: {}.\n\n",
+            super::momentum().name(),
+            super::momentum().describe()
+        );
+    }
     let mut all = true;
     if run("cavity") {
         all &= cavity_section(out, quick, &mut md)?;

@@ -157,6 +157,7 @@ pub(super) fn phases(
                 Reconstruction::Thinc
             }),
             pressure_preconditioner: a.pressure_preconditioner.unwrap_or_default(),
+            momentum: a.momentum.unwrap_or_default(),
         },
         level: a.water_level,
         boxes,

@@ -182,6 +182,10 @@ pub struct AirSection {
     /// "spectral" (the constant-coefficient FFT/DCT solve).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pressure_preconditioner: Option<crate::fluid::pressure::Preconditioner>,
+    /// How momentum is carried across the surface: "weighted" (default), "weighted_exchange"
+    /// or "exchange" (`fluid::exchange::Momentum`, with what each was measured to do).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub momentum: Option<crate::fluid::exchange::Momentum>,
 }
 
 /// `[[fluid.water]]`: a box of water at the start (e.g. the column of a dam break).

@@ -280,14 +280,15 @@ impl FluidDerived {
                 "free surface: water under air (ρ_a = {} kg/m³, μ_a = {:.4e} Pa s, density ratio \
                  {:.0}), water {} at the start, {:.4e} m³; free-surface step limit at rest \
                  C √(Δ/g) = {step:.4e} s; projection by conjugate gradients preconditioned \
-                 by {}; surface carried with {} in each cell",
+                 by {}; surface carried with {} in each cell; {}",
                 sig4(a.density),
                 a.dynamic_viscosity,
                 p.density / a.density,
                 start.join(" and "),
                 self.water_volume,
                 preconditioner(a.pressure_preconditioner, g.n),
-                a.reconstruction.describe()
+                a.reconstruction.describe(),
+                a.momentum.describe()
             );
             // Surface tension is not modelled: it shapes features of a few capillary lengths
             // √(σ/(ρ g)) (2.7 mm for clean water), which the grid resolves when Δ is small.

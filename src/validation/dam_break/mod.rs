@@ -98,6 +98,7 @@ pub fn run_with(n: usize, preconditioner: Preconditioner) -> anyhow::Result<Run>
             "[fluid.air]\npressure_preconditioner = \"spectral\"",
         );
     }
+    let text = super::with_momentum(&text);
     let src = Source::from_str(&text, "dam_break/scenario.toml", PathBuf::from("."))?;
     let mut fluid = build(&src)?
         .simulation

@@ -160,7 +160,8 @@ pub fn run(rho_s: f64, quick: bool) -> anyhow::Result<Run> {
 /// Runs a variant of the case's scenario, `text` (from [`scenario`], edited), whose sphere has
 /// the density `rho_s` [kg m⁻³].
 pub fn run_scenario(text: &str, rho_s: f64) -> anyhow::Result<Run> {
-    let src = Source::from_str(text, "floating_sphere/scenario.toml", PathBuf::from("."))?;
+    let text = super::with_momentum(text);
+    let src = Source::from_str(&text, "floating_sphere/scenario.toml", PathBuf::from("."))?;
     let cell = src.scenario.fluid.as_ref().and_then(|f| f.cell_size);
     let mut sim = build(&src)?.simulation;
     let t_end = src.scenario.run.end_time;
