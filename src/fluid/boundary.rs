@@ -243,33 +243,32 @@ fn for_each_in_plane(grid: &StaggeredGrid, axis: usize, mut f: impl FnMut(usize)
 /// Fills the ghost values of a cell-centred scalar: periodic copy, or zero normal gradient.
 pub fn fill_scalar_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, f: &mut [f64]) {
     for (a, &sa) in grid.strides().iter().enumerate() {
+        if bcs.is_periodic(a) {
+            wrap_axis(grid, a, f);
+            continue;
+        }
         let na = grid.n[a];
-        let periodic = bcs.is_periodic(a);
         for_each_in_plane(grid, a, |base| {
-            let (lo, hi) = (base, base + (na + 1) * sa);
-            if periodic {
-                f[lo] = f[base + na * sa];
-                f[hi] = f[base + sa];
-            } else {
-                f[lo] = f[base + sa];
-                f[hi] = f[base + na * sa];
-            }
+            f[base] = f[base + sa];
+            f[base + (na + 1) * sa] = f[base + na * sa];
         });
     }
+}
+
+/// Copies the opposite side into both ghost layers of `f` along `axis` (a periodic axis).
+fn wrap_axis(grid: &StaggeredGrid, axis: usize, f: &mut [f64]) {
+    let (na, sa) = (grid.n[axis], grid.strides()[axis]);
+    for_each_in_plane(grid, axis, |base| {
+        f[base] = f[base + na * sa];
+        f[base + (na + 1) * sa] = f[base + sa];
+    });
 }
 
 /// Copies the opposite side into the ghost layers of `f` across the periodic axes only;
 /// elsewhere the ghosts are left as they are (a face field's boundary faces among them).
 pub fn wrap_periodic_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, f: &mut [f64]) {
-    for (a, &sa) in grid.strides().iter().enumerate() {
-        if !bcs.is_periodic(a) {
-            continue;
-        }
-        let na = grid.n[a];
-        for_each_in_plane(grid, a, |base| {
-            f[base] = f[base + na * sa];
-            f[base + (na + 1) * sa] = f[base + sa];
-        });
+    for a in (0..3).filter(|&a| bcs.is_periodic(a)) {
+        wrap_axis(grid, a, f);
     }
 }
 
@@ -292,10 +291,7 @@ pub fn fill_velocity_ghosts(grid: &StaggeredGrid, bcs: &Boundaries, u: &mut [Vec
         let na = grid.n[a];
         for (m, f) in u.iter_mut().enumerate() {
             if bcs.is_periodic(a) {
-                for_each_in_plane(grid, a, |base| {
-                    f[base] = f[base + na * sa];
-                    f[base + (na + 1) * sa] = f[base + sa];
-                });
+                wrap_axis(grid, a, f);
                 continue;
             }
             for side in [LOW, HIGH] {

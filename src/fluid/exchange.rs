@@ -156,9 +156,9 @@ pub struct Phases {
 /// What α was carried with over the step.
 #[derive(Clone, Copy)]
 pub struct Carried<'a> {
-    /// αⁿ and αⁿ⁺¹, cell fields with filled ghosts [-].
+    /// αⁿ, a cell field with filled ghosts [-].
     pub before: &'a [f64],
-    /// αⁿ⁺¹ [-].
+    /// αⁿ⁺¹, the same [-].
     pub after: &'a [f64],
     /// The velocity that carried α (the fluid's, with solids) [m s⁻¹].
     pub velocity: [&'a [f64]; 3],
