@@ -6,6 +6,7 @@ use std::sync::atomic::{AtomicBool, AtomicUsize};
 use std::sync::Arc;
 
 use clap::{Parser, Subcommand};
+use riprap::dem::isa::Isa;
 use riprap::run::{execute, RunOptions};
 use riprap::scenario::default::DEFAULT_SCENARIO;
 use riprap::scenario::{check, Source};
@@ -20,6 +21,10 @@ struct Cli {
     /// Worker threads (default: all cores). Results do not depend on it.
     #[arg(long, global = true)]
     threads: Option<usize>,
+    /// Vector instructions of the DEM's force kernels: generic, avx2 or avx512 (default: the
+    /// widest this processor has). Results do not depend on it.
+    #[arg(long, global = true, value_parser = ["generic", "avx2", "avx512"])]
+    isa: Option<String>,
     #[command(subcommand)]
     command: Command,
 }
@@ -185,7 +190,11 @@ fn bench_b1(n: usize, steps: u64) -> anyhow::Result<()> {
     let lattice = b1_lattice(n);
     let threads = rayon::current_num_threads();
     let [nx, ny, nz] = lattice;
-    println!("B1 box-settle: lattice {nx} × {ny} × {nz}, {steps} steps, {threads} thread(s)");
+    println!(
+        "B1 box-settle: lattice {nx} × {ny} × {nz}, {steps} steps, {threads} thread(s), {} \
+         kernels",
+        Isa::chosen().name()
+    );
     let r = run_b1(lattice, steps, 2000)?;
     println!(
         "{:>6} {:>12} {:>12} {:>10} {:>10} {:>10}",
@@ -248,9 +257,10 @@ fn bench_b2(data: &std::path::Path, steps: u64, every: u64) -> anyhow::Result<()
     let threads = rayon::current_num_threads();
     let mut sim = b2_simulation(&lammps);
     println!(
-        "B2 chute: {} atoms from {}, {steps} steps, {threads} thread(s)",
+        "B2 chute: {} atoms from {}, {steps} steps, {threads} thread(s), {} kernels",
         lammps.atoms.len(),
-        data.display()
+        data.display(),
+        sim.dem.isa.name()
     );
     let r = run_b2(&mut sim, steps, every)?;
     println!(
@@ -282,6 +292,12 @@ fn source(path: &Option<PathBuf>) -> Result<Source, riprap::scenario::ScenarioEr
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    if let Some(isa) = cli.isa.as_deref().and_then(Isa::named) {
+        if let Err(e) = isa.set_default() {
+            eprintln!("error: --isa {}: {e}", isa.name());
+            return ExitCode::FAILURE;
+        }
+    }
     if let Some(n) = cli.threads {
         if let Err(e) = rayon::ThreadPoolBuilder::new()
             .num_threads(n)

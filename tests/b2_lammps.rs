@@ -18,6 +18,7 @@
 //! also run bitwise identically on 1 and 2 threads.
 
 use riprap::bench::{b2_row, b2_simulation, read_lammps_data};
+use riprap::dem::isa::Isa;
 use riprap::simulation::Simulation;
 
 const DATA: &str = include_str!("data/chute_mini/data.chute_mini");
@@ -73,6 +74,50 @@ fn mini_chute_kinetic_energies_match_lammps() {
     assert!(worst < 1e-6, "largest relative difference {worst:.1e}");
 }
 
+/// B2's law (Hooke with history) on a periodic domain with fixed spheres gives the same bits
+/// with the kernels of every instruction set this processor runs (`dem::isa`).
+#[test]
+fn mini_chute_is_bitwise_identical_with_every_instruction_set() {
+    let on = |isa: Isa| {
+        let mut sim = simulation();
+        sim.dem.isa = isa;
+        for _ in 0..1000 {
+            sim.step().expect("stable");
+        }
+        sim
+    };
+    let generic = on(Isa::Generic);
+    assert!(
+        generic.dem.stats.pair_contacts > 400,
+        "{:?}",
+        generic.dem.stats
+    );
+    for isa in Isa::ALL.into_iter().skip(1).filter(|i| i.available()) {
+        assert!(
+            bits(&on(isa)) == bits(&generic),
+            "{} differs from generic",
+            isa.name()
+        );
+    }
+}
+
+/// Positions, velocities, spins and forces of every sphere, as bits.
+fn bits(s: &Simulation) -> Vec<u64> {
+    let sp = &s.dem.spheres;
+    (0..sp.len())
+        .flat_map(|i| {
+            [
+                sp.position[i],
+                sp.velocity[i],
+                sp.angular_velocity[i],
+                sp.force[i],
+            ]
+            .into_iter()
+            .flat_map(|v| v.to_array().map(f64::to_bits))
+        })
+        .collect()
+}
+
 #[test]
 fn mini_chute_is_bitwise_identical_on_1_and_2_threads() {
     let run = |threads: usize| {
@@ -99,21 +144,6 @@ fn mini_chute_is_bitwise_identical_on_1_and_2_threads() {
         "{} builds",
         a.dem.neighbors.builds
     );
-    let bits = |s: &Simulation| -> Vec<u64> {
-        let sp = &s.dem.spheres;
-        (0..sp.len())
-            .flat_map(|i| {
-                [
-                    sp.position[i],
-                    sp.velocity[i],
-                    sp.angular_velocity[i],
-                    sp.force[i],
-                ]
-                .into_iter()
-                .flat_map(|v| v.to_array().map(f64::to_bits))
-            })
-            .collect()
-    };
     assert_eq!(a.dem.spheres.id, b.dem.spheres.id);
     assert!(bits(&a) == bits(&b), "1 and 2 threads differ");
 }

@@ -11,6 +11,8 @@
 mod common;
 
 use common::*;
+use riprap::dem::contact::NoOptions;
+use riprap::dem::isa::Isa;
 use riprap::dem::material::ContactModel;
 use riprap::dem::walls::{Motion, Shape, Wall};
 use riprap::geometry::{Plane, TriMesh};
@@ -139,6 +141,40 @@ fn one_and_two_threads_agree_bitwise() {
         );
         assert_eq!(one.dem.spheres.len(), 320, "spheres lost");
         assert_bitwise(&one, &two, name);
+    }
+}
+
+/// The force kernels compiled for each instruction set the processor runs (`dem::isa`: the
+/// generic one, AVX2, AVX-512) give the same bits: the sphere-sphere and wall laws on two,
+/// four or eight contacts per instruction, and the closing kick one or four spheres at a time.
+#[test]
+fn every_instruction_set_gives_the_same_bits() {
+    let sets: Vec<Isa> = Isa::ALL.into_iter().filter(|i| i.available()).collect();
+    eprintln!("instruction sets here: {sets:?}");
+    let coulomb = (
+        "Hertz-Mindlin-Coulomb",
+        ContactModel::HertzMindlinCoulomb(NoOptions {}),
+    );
+    for (name, model) in models().into_iter().chain([coulomb]) {
+        let on = |isa: Isa| {
+            let mut s = build(model);
+            s.dem.isa = isa;
+            run(&mut s, STEPS);
+            s
+        };
+        let generic = on(Isa::Generic);
+        assert!(
+            generic.dem.stats.pair_contacts > 60,
+            "{:?}",
+            generic.dem.stats
+        );
+        for &isa in &sets[1..] {
+            assert_bitwise(
+                &generic,
+                &on(isa),
+                &format!("{name}, {} against generic", isa.name()),
+            );
+        }
     }
 }
 

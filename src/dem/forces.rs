@@ -229,6 +229,7 @@ fn pair_pass(dem: &mut Dem, dt: f64) -> Tally {
         n_mat: dem.materials.len(),
         domain: dem.domain,
         dt,
+        isa: dem.isa,
     };
     let (history, touch) = (&mut c.history[..], &mut c.touch[..]);
     let slot = |k: usize| slabs[k.min(n_slabs)] as usize;
@@ -346,7 +347,7 @@ type Entries<'a> = (
 
 /// Pass 2: walls, then the closing half kick and the checks, sphere by sphere.
 fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
-    let n = dem.spheres.len();
+    let (n, isa) = (dem.spheres.len(), dem.isa);
     let wc = &mut dem.wall_contacts;
     let chunk_entry = &wc.chunk_start;
     let entries = (&mut wc.entries[..], &mut wc.first[..], &mut wc.more[..]);
@@ -376,6 +377,7 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
         n_mat: dem.materials.len(),
         t,
         dt,
+        isa,
     };
     let bounds = |c: usize| ((c * CHUNK).min(n), chunk_entry[c] as usize);
     let leaf = |c: usize, ((f, tq), (v, w), x): (Pair2, Pair2, &mut [Vec3]), ents: Entries| {
@@ -413,7 +415,7 @@ fn sphere_pass(dem: &mut Dem, t: f64, dt: f64, kick: Option<Kick>) -> Tally {
             match &kick.open_next {
                 Some(op) => {
                     assert_eq!(0.5 * op.dt, kick.half_dt, "one Δt for both");
-                    let (bad, o) = integrate::close_and_open(op, max2, i0, motion, props);
+                    let (bad, o) = integrate::close_and_open(op, max2, i0, motion, props, isa);
                     (tally.bad, tally.opening) = (bad, o);
                 }
                 None => tally.bad = integrate::close(kick.half_dt, max2, i0, motion, props),

@@ -11,6 +11,7 @@
 use rayon::prelude::*;
 
 use super::domain::{Domain, Images};
+use super::isa::Isa;
 use super::par::{for_chunks, MIN_SPHERES_PER_TASK};
 use super::spheres::Spheres;
 use crate::math::{is_finite, Vec3};
@@ -184,18 +185,20 @@ pub struct Inertia<'a> {
 /// (`op` must kick). Returns the lowest slot found unstable after the kick (x or ω not finite,
 /// or |v|² above `max_speed2` [m² s⁻²]) and what the opening found (`max_drift` squared).
 ///
-/// Four spheres at a time where the processor has AVX2 (`avx2`), with the bits of one at a
-/// time (`close_and_open_one`): each number goes through the same operations in the same order.
+/// Four spheres at a time when `isa` has AVX2 (`avx2`; `dem::isa`) and the processor too,
+/// with the bits of one at a time (`close_and_open_one`): each number goes through the same
+/// operations in the same order.
 pub fn close_and_open(
     op: &Opener,
     max_speed2: f64,
     first: usize,
     motion: Motion,
     inertia: Inertia,
+    isa: Isa,
 ) -> (Option<usize>, Opening) {
     assert!(op.kick, "the opening after a closing kicks");
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
+    if isa >= Isa::Avx2 && Isa::Avx2.available() {
         // SAFETY: the processor has AVX2, checked just above.
         return unsafe { avx2::close_and_open(op, max_speed2, first, motion, inertia) };
     }
@@ -420,7 +423,7 @@ mod tests {
             let (bad, o) = if one {
                 close_and_open_one(&op, 1e4, 10, motion, props)
             } else {
-                close_and_open(&op, 1e4, 10, motion, props)
+                close_and_open(&op, 1e4, 10, motion, props, Isa::widest())
             };
             let bits = |c: &[Vec3]| -> Vec<[u64; 3]> {
                 c.iter().map(|a| a.to_array().map(f64::to_bits)).collect()

@@ -11,6 +11,7 @@ pub mod fluid_load;
 pub mod forces;
 pub mod insertion;
 pub mod integrate;
+pub mod isa;
 pub mod material;
 pub mod neighbor;
 pub mod par;
@@ -95,6 +96,8 @@ pub struct Dem {
     pub wall_contacts: WallContacts,
     /// Counters of the last force evaluation.
     pub stats: Stats,
+    /// The vector instructions the force kernels run with (`isa`; the same bits with any).
+    pub isa: isa::Isa,
 }
 
 impl Dem {
@@ -204,6 +207,7 @@ impl Dem {
             contacts: PairContacts::default(),
             wall_contacts: WallContacts::default(),
             stats: Stats::default(),
+            isa: isa::Isa::chosen(),
         }
     }
 

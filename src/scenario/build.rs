@@ -199,6 +199,7 @@ fn parts(src: &Source, run: bool) -> Result<Parts, ScenarioError> {
         contacts: PairContacts::default(),
         wall_contacts: WallContacts::default(),
         stats: Stats::default(),
+        isa: crate::dem::isa::Isa::chosen(),
     };
     Ok(Parts {
         dem,

@@ -1,15 +1,16 @@
 //! Every contact law on columns of contacts ("lanes"): each law's one formulation
-//! (`contact::Law::force`) run on eight contacts per vector instruction (`real::Real` for
-//! `f64x8`), with the bits it gives one contact at a time.
+//! (`contact::Law::force`, written in `real::Real`: no branch, only IEEE-exact operations) in
+//! a loop over the contacts that the compiler runs as vector instructions, as many contacts
+//! at once as the instructions it is compiled for hold (`dem::isa`), with the bits it gives
+//! one contact at a time.
 //!
 //! The force kernels (`dem::forces`) fill the inputs of up to `LANES` contacts, call [`run`],
 //! and scatter the outputs in pair order. Lanes past the batch's length hold stale values;
 //! the laws compute them anyway (it is cheaper than a remainder loop) and nobody reads them.
 
-use wide::f64x8;
-
 use super::real::V3;
 use super::{Contact, Law};
+use crate::dem::isa::{on_isa, Isa};
 use crate::math::Vec3;
 
 /// Contacts per batch: enough for the processor to overlap many contacts' square roots and
@@ -92,63 +93,69 @@ pub fn put(v: &mut VecColumn, k: usize, x: Vec3) {
     (v[0][k], v[1][k], v[2][k]) = (x.x, x.y, x.z);
 }
 
-/// Lanes per vector instruction.
-const W: usize = 8;
-const _: () = assert!(LANES % W == 0, "the laws run whole vectors of lanes");
-
-/// Eight lanes of one column (`wide` runs them as one AVX-512 instruction where the build
-/// has it, else as two AVX or four SSE2 ones).
-type F = f64x8;
-
-/// Lanes W c..W c + W of a column.
-#[inline(always)]
-fn load(x: &[f64; LANES], c: usize) -> F {
-    let mut a = [0.0; W];
-    a.copy_from_slice(&x[W * c..W * c + W]);
-    F::new(a)
+/// [`run`] compiled for `isa` (`dem::isa`): where a kernel is not compiled for it as a whole.
+pub fn run_on<L: Law>(l: &mut Lanes, dt: f64, isa: Isa) {
+    on_isa!(
+        isa,
+        run_generic::<L>(l, dt),
+        run_avx2::<L>(l, dt),
+        run_avx512::<L>(l, dt)
+    )
 }
 
-#[inline(always)]
-fn store(x: &mut [f64; LANES], c: usize, v: F) {
-    x[W * c..W * c + W].copy_from_slice(&v.to_array());
+/// [`run`] for the generic instructions.
+#[inline(never)]
+fn run_generic<L: Law>(l: &mut Lanes, dt: f64) {
+    run::<L>(l, dt);
 }
 
-#[inline(always)]
-fn load_v(v: &VecColumn, c: usize) -> V3<F> {
-    V3([0, 1, 2].map(|a| load(&v[a], c)))
+/// [`run`] for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline(never)]
+fn run_avx2<L: Law>(l: &mut Lanes, dt: f64) {
+    run::<L>(l, dt);
 }
 
-#[inline(always)]
-fn store_v(v: &mut VecColumn, c: usize, x: V3<F>) {
-    for (a, x) in x.0.into_iter().enumerate() {
-        store(&mut v[a], c, x);
-    }
+/// [`run`] for AVX-512.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f")]
+#[inline(never)]
+fn run_avx512<L: Law>(l: &mut Lanes, dt: f64) {
+    run::<L>(l, dt);
 }
 
 /// The law `L` on all lanes, given their `pre` (`Law::prepare`) and `params`. Lanes past
 /// the batch's length hold stale values; the law computes them anyway (cheaper than a
 /// remainder loop) and nobody reads them.
+///
+/// One contact per iteration, vectorised across the contacts by the compiler: the law has no
+/// branch (a `select` is a blend) and the columns are contiguous. A hand-written eight-lane
+/// type (`wide::f64x8`) gave the same speed with `target-cpu=native`, but only its compile
+/// time's width; arrays of eight as the lane type were spilled to the stack (B2 1.8× slower).
 #[inline(always)]
 pub fn run<L: Law>(l: &mut Lanes, dt: f64) {
-    let dt = F::splat(dt);
-    for c in 0..LANES / W {
+    let g = |v: &VecColumn, k: usize| V3([v[0][k], v[1][k], v[2][k]]);
+    for k in 0..LANES {
         let contact = Contact {
-            n: load_v(&l.n, c),
-            delta: load(&l.delta, c),
-            dv: load_v(&l.dv, c),
-            w_i: load_v(&l.w_i, c),
-            w_j: load_v(&l.w_j, c),
-            r_i: load(&l.r_i, c),
-            r_j: load(&l.r_j, c),
-            m_star: load(&l.m_star, c),
-            pre: l.pre.each_ref().map(|p| load(p, c)),
+            n: g(&l.n, k),
+            delta: l.delta[k],
+            dv: g(&l.dv, k),
+            w_i: g(&l.w_i, k),
+            w_j: g(&l.w_j, k),
+            r_i: l.r_i[k],
+            r_j: l.r_j[k],
+            m_star: l.m_star[k],
+            pre: [l.pre[0][k], l.pre[1][k]],
         };
-        let p = L::unpack(l.params.each_ref().map(|p| load(p, c)));
-        let r = L::force(&p, &contact, load_v(&l.hist, c), dt);
-        store_v(&mut l.hist, c, r.hist);
-        store_v(&mut l.force, c, r.force);
-        store_v(&mut l.torque_i, c, r.torque_i);
-        store_v(&mut l.torque_j, c, r.torque_j);
+        let p = L::unpack(l.params.each_ref().map(|p| p[k]));
+        let r = L::force(&p, &contact, g(&l.hist, k), dt);
+        for a in 0..3 {
+            l.hist[a][k] = r.hist.0[a];
+            l.force[a][k] = r.force.0[a];
+            l.torque_i[a][k] = r.torque_i.0[a];
+            l.torque_j[a][k] = r.torque_j.0[a];
+        }
     }
 }
 

@@ -1,14 +1,12 @@
-//! The numbers a contact law is written in: one formulation, run on one contact (`f64`) or on
-//! eight at once (`f64x8`, the lanes of `contact::lanes`).
+//! The numbers a contact law is written in.
 //!
 //! Every operation here is IEEE-exact (add, multiply, divide, square root, compare, select),
-//! so a law gives the same bits in either form. A branch of the scalar law becomes a `select`:
-//! both results are computed and the mask picks one per lane, so a contact that slides costs
-//! no misprediction and every lane takes the same path.
+//! so a law gives the same bits however many contacts a vector instruction holds
+//! (`contact::lanes`, `dem::isa`). A law has no branch: where it would branch it computes both
+//! results and a `select` picks one, which the compiler makes a blend across the lanes, so a
+//! contact that slides costs no misprediction and the loop over the contacts vectorises.
 
 use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Sub};
-
-use wide::f64x8;
 
 use crate::math::Vec3;
 
@@ -72,38 +70,6 @@ impl Real for f64 {
         } else {
             b
         }
-    }
-}
-
-impl Real for f64x8 {
-    type Mask = f64x8;
-    #[inline(always)]
-    fn splat(x: f64) -> f64x8 {
-        f64x8::splat(x)
-    }
-    #[inline(always)]
-    fn sqrt(self) -> f64x8 {
-        f64x8::sqrt(self)
-    }
-    #[inline(always)]
-    fn abs(self) -> f64x8 {
-        f64x8::abs(self)
-    }
-    #[inline(always)]
-    fn gt(self, o: f64x8) -> f64x8 {
-        self.simd_gt(o)
-    }
-    #[inline(always)]
-    fn le(self, o: f64x8) -> f64x8 {
-        self.simd_le(o)
-    }
-    #[inline(always)]
-    fn ne(self, o: f64x8) -> f64x8 {
-        self.simd_ne(o)
-    }
-    #[inline(always)]
-    fn select(mask: f64x8, a: f64x8, b: f64x8) -> f64x8 {
-        mask.select(a, b)
     }
 }
 
@@ -210,24 +176,5 @@ mod tests {
         assert_eq!(Vec3::from(va.cross(vb)), a.cross(b));
         assert_eq!(Vec3::from(va.scale(0.7)), 0.7 * a);
         assert_eq!(Vec3::from(va - vb.scale(va.dot(vb))), a - a.dot(b) * b);
-    }
-
-    /// The lanes agree with the scalar, lane by lane, including selects and a NaN that a
-    /// select discards.
-    #[test]
-    fn eight_lanes_give_the_bits_of_eight_scalars() {
-        let x = [0.5, -2.0, 3.0e-7, 0.0, -0.0, 1.0e300, 7.0, 2.0];
-        let y = [0.25, -1.0, 1.0, 0.0, 1.0, 3.0, -7.0, 2.0];
-        let lanes = |f: fn(f64x8, f64x8) -> f64x8| f(f64x8::new(x), f64x8::new(y)).to_array();
-        let scalar = |f: fn(f64, f64) -> f64| std::array::from_fn::<f64, 8, _>(|k| f(x[k], y[k]));
-        fn law<T: Real>(a: T, b: T) -> T {
-            let r = (a * b - a / b).abs().sqrt();
-            T::select(a.gt(b) | a.le(-b), r, (a - b).sqrt())
-        }
-        let (l, s) = (lanes(law::<f64x8>), scalar(law::<f64>));
-        for k in 0..8 {
-            let same = l[k].to_bits() == s[k].to_bits() || (l[k].is_nan() && s[k].is_nan());
-            assert!(same, "lane {k}: {} vs {}", l[k], s[k]);
-        }
     }
 }

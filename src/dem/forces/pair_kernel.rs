@@ -3,6 +3,7 @@
 
 use super::super::contact::lanes::{self, get, put, Lanes};
 use super::super::contact::{dispatch, Law, WithLaw};
+use super::super::isa::{on_isa, Isa};
 use super::super::material::PairLaw;
 use super::kernel::uniform_kind;
 use super::{larger, Out, Tally};
@@ -25,6 +26,8 @@ pub(super) struct PairContext<'a> {
     pub(super) n_mat: usize,
     pub(super) domain: super::super::domain::Domain,
     pub(super) dt: f64,
+    /// The instructions the kernel runs with (`dem::isa`).
+    pub(super) isa: Isa,
 }
 
 impl PairContext<'_> {
@@ -43,13 +46,38 @@ impl PairContext<'_> {
             fn run<L: Law>(self) -> Tally {
                 let Run(ctx, args) = self;
                 match ctx.domain.periodic.iter().any(|&p| p) {
-                    true => ctx.run_with::<true, L>(args),
-                    false => ctx.run_with::<false, L>(args),
+                    true => ctx.run_on::<true, L>(args),
+                    false => ctx.run_on::<false, L>(args),
                 }
             }
         }
         let args = (owners, out, hist, touch);
         dispatch(uniform_kind(self.laws), Run(self, args))
+    }
+
+    /// `run_with` compiled for the kernel's instruction set (`dem::isa`).
+    #[inline(always)]
+    fn run_on<const PERIODIC: bool, K: Law>(&self, args: Args) -> Tally {
+        on_isa!(
+            self.isa,
+            self.run_with::<PERIODIC, K>(args),
+            self.run_avx2::<PERIODIC, K>(args),
+            self.run_avx512::<PERIODIC, K>(args)
+        )
+    }
+
+    /// `run_with` compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn run_avx2<const PERIODIC: bool, K: Law>(&self, args: Args) -> Tally {
+        self.run_with::<PERIODIC, K>(args)
+    }
+
+    /// `run_with` compiled for AVX-512.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx512f")]
+    fn run_avx512<const PERIODIC: bool, K: Law>(&self, args: Args) -> Tally {
+        self.run_with::<PERIODIC, K>(args)
     }
 
     /// `run` for a domain with (`PERIODIC`) or without periodic axes and the contact law `K`.
@@ -71,6 +99,7 @@ impl PairContext<'_> {
     ///
     /// The order in which each sphere receives its terms is the pair order, as if each pair
     /// were done from start to end before the next.
+    #[inline(always)]
     fn run_with<const PERIODIC: bool, K: Law>(&self, (owners, out, hist, touch): Args) -> Tally {
         let Some(first) = owners.clone().next() else {
             return Tally::ZERO;
@@ -184,8 +213,61 @@ impl PairContext<'_> {
     /// Never inlined: called once per `BATCH` close pairs, it would otherwise crowd the filter
     /// loop's registers and make it reload its constants from the stack at every candidate
     /// (B2, 1 thread: forces 1.00 -> 0.89 s).
-    #[inline(never)]
+    #[inline(always)]
     fn batch<const PERIODIC: bool, K: Law>(
+        &self,
+        s: &mut Sweep,
+        hist: &mut [Vec3],
+        touch: &mut [u8],
+    ) {
+        on_isa!(
+            self.isa,
+            self.batch_generic::<PERIODIC, K>(s, hist, touch),
+            self.batch_avx2::<PERIODIC, K>(s, hist, touch),
+            self.batch_avx512::<PERIODIC, K>(s, hist, touch)
+        )
+    }
+
+    /// `batch_body`, compiled for the generic instructions.
+    #[inline(never)]
+    fn batch_generic<const PERIODIC: bool, K: Law>(
+        &self,
+        s: &mut Sweep,
+        hist: &mut [Vec3],
+        touch: &mut [u8],
+    ) {
+        self.batch_body::<PERIODIC, K>(s, hist, touch);
+    }
+
+    /// `batch_body`, compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline(never)]
+    fn batch_avx2<const PERIODIC: bool, K: Law>(
+        &self,
+        s: &mut Sweep,
+        hist: &mut [Vec3],
+        touch: &mut [u8],
+    ) {
+        self.batch_body::<PERIODIC, K>(s, hist, touch);
+    }
+
+    /// `batch_body`, compiled for AVX-512.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx512f")]
+    #[inline(never)]
+    fn batch_avx512<const PERIODIC: bool, K: Law>(
+        &self,
+        s: &mut Sweep,
+        hist: &mut [Vec3],
+        touch: &mut [u8],
+    ) {
+        self.batch_body::<PERIODIC, K>(s, hist, touch);
+    }
+
+    /// The work of `batch`.
+    #[inline(always)]
+    fn batch_body<const PERIODIC: bool, K: Law>(
         &self,
         s: &mut Sweep,
         hist: &mut [Vec3],
@@ -404,32 +486,13 @@ impl Batch {
 /// |d| = √(d²), n = d / |d|, δ = r_i + r_j - |d|, R* = r_i r_j / (r_i + r_j),
 /// m* = m_num / m_den, and the law's square roots (`Law::prepare`, from δ clamped at 0).
 ///
-/// The contacts are independent: the loop runs on whole vectors of them (two per SSE2
-/// instruction, four with AVX, chosen at run time; the results are the same to the bit, as
-/// every operation is IEEE-exact).
-#[inline(always)]
-fn geometry<K: Law>(b: &mut Batch, len: usize) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx") {
-        // SAFETY: the processor has AVX, checked just above.
-        unsafe { geometry_avx::<K>(b, len) };
-        return;
-    }
-    geometry_columns::<K>(b, len);
-}
-
-/// `geometry` compiled for AVX.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-fn geometry_avx<K: Law>(b: &mut Batch, len: usize) {
-    geometry_columns::<K>(b, len);
-}
-
-/// The loop of `geometry`.
+/// The contacts are independent: the loop runs on whole vectors of them, as wide as the
+/// instructions `batch` is compiled for (`dem::isa`; the same bits with any, as every
+/// operation is IEEE-exact).
 ///
 /// Implements [6].
 #[inline(always)]
-fn geometry_columns<K: Law>(b: &mut Batch, len: usize) {
+fn geometry<K: Law>(b: &mut Batch, len: usize) {
     let len = len.min(BATCH);
     let (d2, m_num, m_den) = (&b.d2[..len], &b.m_num[..len], &b.m_den[..len]);
     let l = &mut b.lanes;

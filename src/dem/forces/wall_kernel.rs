@@ -4,6 +4,7 @@
 
 use super::super::contact::lanes::{self, get, put, Lanes, LANES};
 use super::super::contact::{dispatch, Law, WithLaw};
+use super::super::isa::Isa;
 use super::super::material::PairLaw;
 use super::super::wall_contacts::{join, split, MoreSlots, NearWall, WallEntry};
 use super::super::walls::{match_history, match_one, Hits, Wall, WallContact, WALL_SLOTS};
@@ -28,6 +29,8 @@ pub(super) struct WallContext<'a> {
     pub(super) t: f64,
     /// Time step of the history [s] (zero for the evaluation that starts a run).
     pub(super) dt: f64,
+    /// The instructions the law runs with (`dem::isa`).
+    pub(super) isa: Isa,
 }
 
 /// A chunk's wall entries, their history slots (the first, and the others), and its spheres'
@@ -79,13 +82,13 @@ impl WallContext<'_> {
     /// Each sphere has its wall contacts in one entry, and receives their terms in the order
     /// of its hits, as if each contact were done from start to end before the next.
     fn run_with<K: Law>(&self, c: Chunk, tally: &mut Tally) {
-        self.run_using::<K>(c, tally, lanes::run::<K>);
+        self.run_using::<K>(c, tally, lanes::run_on::<K>);
     }
 
     /// `run_with`, with the law on the lanes run by `law` (the tests run it one contact at a
     /// time).
     #[inline(always)]
-    fn run_using<K: Law>(&self, mut c: Chunk, tally: &mut Tally, law: fn(&mut Lanes, f64)) {
+    fn run_using<K: Law>(&self, mut c: Chunk, tally: &mut Tally, law: fn(&mut Lanes, f64, Isa)) {
         // Most chunks have no sphere near a wall.
         if c.entries.is_empty() {
             return;
@@ -175,13 +178,13 @@ impl WallContext<'_> {
         b: &mut WallBatch,
         c: &mut Chunk,
         tally: &mut Tally,
-        law: fn(&mut Lanes, f64),
+        law: fn(&mut Lanes, f64, Isa),
     ) {
         let (i0, first, more, f, tq) = (c.i0, &mut *c.first, &mut *c.more, &mut *c.f, &mut *c.tq);
         let len = b.len.min(LANES);
         b.len = 0;
         prepare::<K>(&mut b.lanes, len);
-        law(&mut b.lanes, self.dt);
+        law(&mut b.lanes, self.dt, self.isa);
         let l = &b.lanes;
         for q in 0..len {
             let (e, s, k) = (
@@ -345,7 +348,7 @@ mod tests {
 
     /// The law `K` on every lane, one contact at a time, with the wall as `contact::Pair`
     /// has it (infinite radius and mass, no spin; `force_with`).
-    fn one_by_one<K: Law>(l: &mut Lanes, dt: f64) {
+    fn one_by_one<K: Law>(l: &mut Lanes, dt: f64, _: Isa) {
         for k in 0..LANES {
             let p = Pair {
                 n: get(&l.n, k),
@@ -383,6 +386,7 @@ mod tests {
             n_mat: dem.materials.len(),
             t: 0.0,
             dt: dem.dt,
+            isa: dem.isa,
         };
         // −0 + x = x for every x: the sums keep the sign of a zero term.
         let (mut f, mut tq) = (
