@@ -82,8 +82,8 @@ enum Command {
         #[arg(long)]
         resume: bool,
         /// The free-surface cases' momentum transport across the surface ([fluid.air]
-        /// momentum: weighted, weighted_exchange, exchange; default weighted).
-        #[arg(long, value_parser = ["weighted", "weighted_exchange", "exchange"])]
+        /// momentum: weighted or exchange; default weighted).
+        #[arg(long, value_parser = ["weighted", "exchange"])]
         momentum: Option<String>,
     },
     /// Validate a scenario and print the derived quantities (contact time, time step, ...).

@@ -25,13 +25,14 @@
 //! exchanging, the faces the surface crossed then take the momentum the phase coming in
 //! brings ([`super::exchange`]; after the projection, like the coupling's correction [62], so
 //! uⁿ⁺¹ is divergence-free to the projection's tolerance only where the surface did not
-//! cross). The transported velocity is density-weighted except with `Momentum::Exchange`
-//! ([`super::advection`]).
+//! cross). The transported velocity is density-weighted, and bounded with
+//! `Momentum::Exchange` ([`super::advection`]).
 //!
 //! Boundary conditions: the normal velocity on boundary faces and all ghosts are set at
 //! tⁿ⁺¹ before the projection (outflow faces by the convective condition, corrected to
 //! conserve volume); the projection moves only interior faces (Neumann pressure).
 
+use super::advection::Transport;
 use super::boundary::{advance_outflow, fill_scalar_ghosts, fill_velocity_ghosts};
 use super::exchange::{exchange, Carried, Phases};
 use super::forcing::{body_acceleration, solid_body_acceleration};
@@ -133,7 +134,7 @@ impl Fluid {
                 Some(_) => (&self.stress_viscosity[..], true, 0.0),
                 None => (&state.eddy_viscosity[..], par.smagorinsky.is_some(), mu),
             };
-            let weighted = par.air.is_some_and(|a| a.momentum.weights());
+            let transport = par.air.map_or(Transport::Plain, |a| a.momentum.transport());
             for (a, h) in self.tendency.iter_mut().enumerate() {
                 let inertia = match (par.air, &self.solids) {
                     (Some(_), Some(solids)) => Inertia::Mixture {
@@ -144,7 +145,7 @@ impl Fluid {
                     (None, _) => Inertia::Cells(rho),
                 };
                 update_rows(&grid, &self.regions[a], h, |start, row| {
-                    tendency_row(&st, a, sgs, u, mu_t, inertia, weighted, mu, start, row);
+                    tendency_row(&st, a, sgs, u, mu_t, inertia, transport, mu, start, row);
                 });
             }
         }

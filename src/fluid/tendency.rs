@@ -15,6 +15,7 @@
 //! bounds checks and the compiler vectorises it. The component a and the presence of the
 //! subgrid model are compile-time constants, which removes the branches from the loop.
 
+use super::advection::Transport;
 use super::grid::{shifted, Stencil};
 use super::operators::Velocity;
 
@@ -40,8 +41,9 @@ pub enum Inertia<'a> {
 ///
 /// `u` is the velocity with filled ghosts [m s⁻¹], `mu_t` μ_SGS at cell centres with filled
 /// ghosts [Pa s] (read only with `sgs`), `rho` the density on the faces [kg m⁻³], `mu` the dynamic
-/// viscosity [Pa s]. With `weighted` (and face densities) the transported velocity across
-/// the faces parallel to u_a is weighted by the densities ([`super::advection`]). The faces and
+/// viscosity [Pa s]. With face densities, `transport` says how the transported velocity across
+/// the faces parallel to u_a is formed ([`super::advection::Transport`]); with cell densities
+/// (one fluid) it is the plain mean. The faces and
 /// all their neighbours must lie inside the padded fields.
 #[allow(clippy::too_many_arguments)]
 pub fn tendency_row(
@@ -51,38 +53,50 @@ pub fn tendency_row(
     u: Velocity,
     mu_t: &[f64],
     rho: Inertia,
-    weighted: bool,
+    transport: Transport,
     mu: f64,
     start: usize,
     out: &mut [f64],
 ) {
-    let weighted = weighted && !matches!(rho, Inertia::Cells(_));
-    match (a, sgs, weighted) {
-        (0, false, false) => row::<0, false, false>(st, u, mu_t, rho, mu, start, out),
-        (1, false, false) => row::<1, false, false>(st, u, mu_t, rho, mu, start, out),
-        (2, false, false) => row::<2, false, false>(st, u, mu_t, rho, mu, start, out),
-        (0, true, false) => row::<0, true, false>(st, u, mu_t, rho, mu, start, out),
-        (1, true, false) => row::<1, true, false>(st, u, mu_t, rho, mu, start, out),
-        (2, true, false) => row::<2, true, false>(st, u, mu_t, rho, mu, start, out),
-        (0, false, true) => row::<0, false, true>(st, u, mu_t, rho, mu, start, out),
-        (1, false, true) => row::<1, false, true>(st, u, mu_t, rho, mu, start, out),
-        (2, false, true) => row::<2, false, true>(st, u, mu_t, rho, mu, start, out),
-        (0, true, true) => row::<0, true, true>(st, u, mu_t, rho, mu, start, out),
-        (1, true, true) => row::<1, true, true>(st, u, mu_t, rho, mu, start, out),
-        (2, true, true) => row::<2, true, true>(st, u, mu_t, rho, mu, start, out),
+    // The transported velocity: 0 plain, 1 weighted, 2 bounded (only with face densities).
+    let t = match (transport, rho) {
+        (_, Inertia::Cells(_)) | (Transport::Plain, _) => 0,
+        (Transport::Weighted, _) => 1,
+        (Transport::Bounded, _) => 2,
+    };
+    match (a, sgs, t) {
+        (0, false, 0) => row::<0, false, 0>(st, u, mu_t, rho, mu, start, out),
+        (1, false, 0) => row::<1, false, 0>(st, u, mu_t, rho, mu, start, out),
+        (2, false, 0) => row::<2, false, 0>(st, u, mu_t, rho, mu, start, out),
+        (0, true, 0) => row::<0, true, 0>(st, u, mu_t, rho, mu, start, out),
+        (1, true, 0) => row::<1, true, 0>(st, u, mu_t, rho, mu, start, out),
+        (2, true, 0) => row::<2, true, 0>(st, u, mu_t, rho, mu, start, out),
+        (0, false, 1) => row::<0, false, 1>(st, u, mu_t, rho, mu, start, out),
+        (1, false, 1) => row::<1, false, 1>(st, u, mu_t, rho, mu, start, out),
+        (2, false, 1) => row::<2, false, 1>(st, u, mu_t, rho, mu, start, out),
+        (0, true, 1) => row::<0, true, 1>(st, u, mu_t, rho, mu, start, out),
+        (1, true, 1) => row::<1, true, 1>(st, u, mu_t, rho, mu, start, out),
+        (2, true, 1) => row::<2, true, 1>(st, u, mu_t, rho, mu, start, out),
+        (0, false, 2) => row::<0, false, 2>(st, u, mu_t, rho, mu, start, out),
+        (1, false, 2) => row::<1, false, 2>(st, u, mu_t, rho, mu, start, out),
+        (2, false, 2) => row::<2, false, 2>(st, u, mu_t, rho, mu, start, out),
+        (0, true, 2) => row::<0, true, 2>(st, u, mu_t, rho, mu, start, out),
+        (1, true, 2) => row::<1, true, 2>(st, u, mu_t, rho, mu, start, out),
+        (2, true, 2) => row::<2, true, 2>(st, u, mu_t, rho, mu, start, out),
         _ => panic!("velocity component {a} does not exist"),
     }
 }
 
 /// [`tendency_row`] for component `A`, with the subgrid term when `SGS`, and the transported
-/// velocity weighted by the face densities when `W` (water and air).
+/// velocity across the faces parallel to u_a plain (`W` = 0), weighted by the face densities
+/// (1) or weighted and bounded (2) (water and air; [`super::advection`]).
 ///
 /// Names of the shifted rows: `u0` = u_a[c], `up[b]`/`um[b]` = u_a[c ± s_b]; for b ≠ a
 /// `vb0[b]` = u_b[c], `vbma[b]` = u_b[c − s_a], `vbp[b]` = u_b[c + s_b],
 /// `vbpma[b]` = u_b[c + s_b − s_a]; μ_SGS: `m0` at c, `mma` at c − s_a, `mmb[b]` at c − s_b,
 /// `mmamb[b]` at c − s_a − s_b, `mpb[b]` at c + s_b, `mpbma[b]` at c + s_b − s_a.
 #[inline(always)]
-fn row<const A: usize, const SGS: bool, const W: bool>(
+fn row<const A: usize, const SGS: bool, const W: u8>(
     st: &Stencil,
     u: Velocity,
     mu_t: &[f64],
@@ -113,7 +127,7 @@ fn row<const A: usize, const SGS: bool, const W: bool>(
         Inertia::Cells(r) => (at(r, 0), at(r, -sa)),
         Inertia::Faces(f) | Inertia::Mixture { inertia: f, .. } => (at(f, 0), at(f, 0)),
     };
-    // With `W`, the a-face densities either side along each b (for the transported velocity).
+    // With `W` > 0, the a-face densities either side along each b (for the transported velocity).
     let rf = match rho {
         Inertia::Cells(r) | Inertia::Faces(r) | Inertia::Mixture { fluid: r, .. } => r,
     };
@@ -158,12 +172,24 @@ fn row<const A: usize, const SGS: bool, const W: bool>(
         // edges of c + s_b and c (b ≠ a).
         let mut adv = 0.0;
         for b in 0..3 {
-            if W && b != A {
+            if W > 0 && b != A {
                 // Across the faces parallel to u_a the transported u_a is the density-weighted
-                // mean of the two faces (advection::advection_weighted).
+                // mean of the two faces (advection::advection_weighted), or with W = 2 each
+                // face's own weight is at least ½ (advection::advection_bounded).
                 let q = r_own[i];
-                let m_hi = (q * c + rp[b][i] * up[b][i]) / (q + rp[b][i]);
-                let m_lo = (rm[b][i] * um[b][i] + q * c) / (rm[b][i] + q);
+                let (m_hi, m_lo) = if W == 1 {
+                    (
+                        (q * c + rp[b][i] * up[b][i]) / (q + rp[b][i]),
+                        (rm[b][i] * um[b][i] + q * c) / (rm[b][i] + q),
+                    )
+                } else {
+                    let w_hi = (q / (q + rp[b][i])).max(0.5);
+                    let w_lo = (q / (q + rm[b][i])).max(0.5);
+                    (
+                        w_hi * c + (1.0 - w_hi) * up[b][i],
+                        w_lo * c + (1.0 - w_lo) * um[b][i],
+                    )
+                };
                 let t_hi = 0.5 * (vbp[b][i] + vbpma[b][i]);
                 let t_lo = 0.5 * (vb0[b][i] + vbma[b][i]);
                 adv += (t_hi * m_hi - t_lo * m_lo) * inv_d[b];
@@ -185,14 +211,18 @@ fn row<const A: usize, const SGS: bool, const W: bool>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::fluid::advection::{advection, advection_weighted};
+    use crate::fluid::advection::{advection, advection_bounded, advection_weighted};
     use crate::fluid::diffusion::{molecular, subgrid};
     use crate::fluid::grid::StaggeredGrid;
     use crate::fluid::operators::interp_to_face;
     use crate::math::Vec3;
 
+    /// A pointwise advection with face densities.
+    type Adv = fn(&Stencil, Velocity, &[f64], usize, usize) -> f64;
+
     /// The row kernel gives the same bits as the point-by-point formulas, on every face of
-    /// every component, with and without the subgrid term, on a non-cubic grid.
+    /// every component, with and without the subgrid term, with each transport, on a
+    /// non-cubic grid.
     #[test]
     fn rows_match_the_pointwise_formulas_bit_for_bit() {
         let grid = StaggeredGrid::new([7, 5, 6], Vec3::new(0.7, 0.4, 0.9), Vec3::ZERO);
@@ -221,7 +251,7 @@ mod tests {
                             u,
                             &mu_t,
                             Inertia::Cells(&rho),
-                            false,
+                            Transport::Plain,
                             mu,
                             start,
                             &mut out,
@@ -236,33 +266,30 @@ mod tests {
                             let expected = -advection(&st, u, a, c) + viscous / rho_f;
                             assert_eq!(h.to_bits(), expected.to_bits(), "a {a} sgs {sgs} c {c}");
                         }
-                        // With air: face densities, and the weighted advection.
-                        tendency_row(
-                            &st,
-                            a,
-                            sgs,
-                            u,
-                            &mu_t,
-                            Inertia::Faces(&rho),
-                            true,
-                            mu,
-                            start,
-                            &mut out,
-                        );
-                        for (i, h) in out.iter().enumerate() {
-                            let c = start + i;
-                            let mut viscous = molecular(&st, mu, u[a], c);
-                            if sgs {
-                                viscous += subgrid(&st, u, &mu_t, a, c);
-                            }
-                            let rho_f = 0.5 * (rho[c] + rho[c]);
-                            let expected =
-                                -advection_weighted(&st, u, &rho, a, c) + viscous / rho_f;
-                            assert_eq!(
-                                h.to_bits(),
-                                expected.to_bits(),
-                                "air: a {a} sgs {sgs} c {c}"
+                        // With air: face densities, and the weighted or bounded advection.
+                        let air: [(Transport, Adv); 2] = [
+                            (Transport::Weighted, advection_weighted),
+                            (Transport::Bounded, advection_bounded),
+                        ];
+                        for (transport, adv) in air {
+                            let inertia = Inertia::Faces(&rho);
+                            tendency_row(
+                                &st, a, sgs, u, &mu_t, inertia, transport, mu, start, &mut out,
                             );
+                            for (i, h) in out.iter().enumerate() {
+                                let c = start + i;
+                                let mut viscous = molecular(&st, mu, u[a], c);
+                                if sgs {
+                                    viscous += subgrid(&st, u, &mu_t, a, c);
+                                }
+                                let rho_f = 0.5 * (rho[c] + rho[c]);
+                                let expected = -adv(&st, u, &rho, a, c) + viscous / rho_f;
+                                assert_eq!(
+                                    h.to_bits(),
+                                    expected.to_bits(),
+                                    "{transport:?}: a {a} sgs {sgs} c {c}"
+                                );
+                            }
                         }
                     }
                 }
@@ -331,5 +358,53 @@ mod tests {
             (weighted / plain - ratio).abs() < 1e-12,
             "{weighted} against {plain}"
         );
+        // Bounded: the water face as weighted (to round-off: the weights are formed apart);
+        // the air face above it, whose weighted edge took in the water's velocity, sees the
+        // plain mean there, to the bit (w = ½).
+        let bounded = advection_bounded(&st, u, &rho_x, 0, c);
+        assert!(
+            (bounded / weighted - 1.0).abs() < 1e-12,
+            "{bounded} against {weighted}"
+        );
+        let air = c + sz;
+        let (p, w, b) = (
+            advection(&st, u, 0, air),
+            advection_weighted(&st, u, &rho_x, 0, air),
+            advection_bounded(&st, u, &rho_x, 0, air),
+        );
+        assert_eq!(b.to_bits(), p.to_bits(), "air face: bounded {b}, plain {p}");
+        // Weighted, the air face's lower edge carries nearly the water's 0.1 m/s in place of
+        // the mean, which adds w (u_air − u_w)/(2 Δz) (ρ_w − ρ_a)/(ρ_w + ρ_a) to its advection
+        // (here upwind; with the flow from the air into the water, downwind: anti-diffusive).
+        let more = 0.01 * (u_air - 0.1) / (2.0 * grid.spacing.z) * (998.0 - 1.2) / (998.0 + 1.2);
+        assert!(
+            (w - p - more).abs() < 1e-12,
+            "weighted {w}, plain {p}, more {more}"
+        );
+    }
+
+    /// At uniform density the bounded transport is the plain one, to the bit (w = ½ on every
+    /// edge, and halving is exact).
+    #[test]
+    fn bounded_advection_is_plain_at_uniform_density() {
+        let grid = StaggeredGrid::new([6, 5, 7], Vec3::new(0.6, 0.5, 0.7), Vec3::ZERO);
+        let st = Stencil::new(&grid);
+        let field = |seed: usize| -> Vec<f64> {
+            (0..grid.len())
+                .map(|m| (((m * 7919 + seed * 104729) % 1009) as f64 / 1009.0 - 0.5) * 0.3)
+                .collect()
+        };
+        let (u0, u1, u2) = (field(1), field(2), field(3));
+        let u = [&u0[..], &u1[..], &u2[..]];
+        let rho = vec![998.0; grid.len()];
+        for a in 0..3 {
+            for c in grid.index(2, 2, 2)..grid.index(grid.n[0] - 1, grid.n[1] - 1, grid.n[2] - 1) {
+                let (p, b) = (
+                    advection(&st, u, a, c),
+                    advection_bounded(&st, u, &rho, a, c),
+                );
+                assert_eq!(p.to_bits(), b.to_bits(), "a {a} c {c}: {p} {b}");
+            }
+        }
     }
 }

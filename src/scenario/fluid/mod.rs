@@ -182,8 +182,8 @@ pub struct AirSection {
     /// "spectral" (the constant-coefficient FFT/DCT solve).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pressure_preconditioner: Option<crate::fluid::pressure::Preconditioner>,
-    /// How momentum is carried across the surface: "weighted" (default), "weighted_exchange"
-    /// or "exchange" (`fluid::exchange::Momentum`, with what each was measured to do).
+    /// How momentum is carried across the surface: "weighted" (default) or "exchange"
+    /// (`fluid::exchange::Momentum`, with what each was measured to do).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub momentum: Option<crate::fluid::exchange::Momentum>,
 }
