@@ -97,35 +97,33 @@ pub fn advection(st: &Stencil, u: Velocity, a: usize, c: usize) -> f64 {
 #[inline]
 pub fn advection_weighted(st: &Stencil, u: Velocity, rho: &[f64], a: usize, c: usize) -> f64 {
     let ua = u[a];
-    let sa = st.s[a];
-    let mut sum = 0.0;
-    for (b, ub) in u.iter().enumerate() {
-        if b == a {
-            let hi = 0.5 * (ua[c] + ua[c + sa]);
-            let lo = 0.5 * (ua[c - sa] + ua[c]);
-            sum += (hi * hi - lo * lo) * st.inv_d[a];
-        } else {
-            let sb = st.s[b];
-            let mean = |p: usize, q: usize| (rho[p] * ua[p] + rho[q] * ua[q]) / (rho[p] + rho[q]);
-            let t_hi = 0.5 * (ub[c + sb] + ub[c + sb - sa]);
-            let t_lo = 0.5 * (ub[c] + ub[c - sa]);
-            sum += (t_hi * mean(c, c + sb) - t_lo * mean(c - sb, c)) * st.inv_d[b];
-        }
-    }
-    sum
-}
-
-/// The flux ⟨u_b⟩^a ⟨u_a⟩^b = (u_b[e] + u_b[e − s_a])/2 · (u_a[e] + u_a[e − s_b])/2 at the a-b
-/// edge of face `e` [m² s⁻²]. A function, not a closure, so that it is always inlined.
-#[inline(always)]
-fn edge_flux(ua: &[f64], ub: &[f64], sa: usize, sb: usize, e: usize) -> f64 {
-    0.25 * (ub[e] + ub[e - sa]) * (ua[e] + ua[e - sb])
+    advection_seen(st, u, a, c, |p, q| {
+        (rho[p] * ua[p] + rho[q] * ua[q]) / (rho[p] + rho[q])
+    })
 }
 
 /// [`advection`] with the transported velocity across the faces parallel to u_a weighted by
 /// `rho` and bounded (module docs, "Bounded") [m s⁻²].
 #[inline]
 pub fn advection_bounded(st: &Stencil, u: Velocity, rho: &[f64], a: usize, c: usize) -> f64 {
+    let ua = u[a];
+    advection_seen(st, u, a, c, |p, q| {
+        let n = if p == c { q } else { p };
+        let w = (rho[c] / (rho[c] + rho[n])).max(0.5);
+        w * ua[c] + (1.0 - w) * ua[n]
+    })
+}
+
+/// [`advection`] with the transported u_a across the a-b edges between the a-faces p and
+/// p + s_b (one of them `c`) given by `seen(p, p + s_b)` [m s⁻²].
+#[inline(always)]
+fn advection_seen(
+    st: &Stencil,
+    u: Velocity,
+    a: usize,
+    c: usize,
+    seen: impl Fn(usize, usize) -> f64,
+) -> f64 {
     let ua = u[a];
     let sa = st.s[a];
     let mut sum = 0.0;
@@ -136,14 +134,17 @@ pub fn advection_bounded(st: &Stencil, u: Velocity, rho: &[f64], a: usize, c: us
             sum += (hi * hi - lo * lo) * st.inv_d[a];
         } else {
             let sb = st.s[b];
-            let seen = |n: usize| {
-                let w = (rho[c] / (rho[c] + rho[n])).max(0.5);
-                w * ua[c] + (1.0 - w) * ua[n]
-            };
             let t_hi = 0.5 * (ub[c + sb] + ub[c + sb - sa]);
             let t_lo = 0.5 * (ub[c] + ub[c - sa]);
-            sum += (t_hi * seen(c + sb) - t_lo * seen(c - sb)) * st.inv_d[b];
+            sum += (t_hi * seen(c, c + sb) - t_lo * seen(c - sb, c)) * st.inv_d[b];
         }
     }
     sum
+}
+
+/// The flux ⟨u_b⟩^a ⟨u_a⟩^b = (u_b[e] + u_b[e − s_a])/2 · (u_a[e] + u_a[e − s_b])/2 at the a-b
+/// edge of face `e` [m² s⁻²]. A function, not a closure, so that it is always inlined.
+#[inline(always)]
+fn edge_flux(ua: &[f64], ub: &[f64], sa: usize, sb: usize, e: usize) -> f64 {
+    0.25 * (ub[e] + ub[e - sa]) * (ua[e] + ua[e - sb])
 }

@@ -217,6 +217,13 @@ mod tests {
     use crate::fluid::operators::interp_to_face;
     use crate::math::Vec3;
 
+    /// A field of `grid` with pseudo-random values in [−0.15, 0.15) [m s⁻¹].
+    fn field(grid: &StaggeredGrid, seed: usize) -> Vec<f64> {
+        (0..grid.len())
+            .map(|m| (((m * 7919 + seed * 104729) % 1009) as f64 / 1009.0 - 0.5) * 0.3)
+            .collect()
+    }
+
     /// A pointwise advection with face densities.
     type Adv = fn(&Stencil, Velocity, &[f64], usize, usize) -> f64;
 
@@ -227,11 +234,7 @@ mod tests {
     fn rows_match_the_pointwise_formulas_bit_for_bit() {
         let grid = StaggeredGrid::new([7, 5, 6], Vec3::new(0.7, 0.4, 0.9), Vec3::ZERO);
         let st = Stencil::new(&grid);
-        let field = |seed: usize| -> Vec<f64> {
-            (0..grid.len())
-                .map(|m| (((m * 7919 + seed * 104729) % 1009) as f64 / 1009.0 - 0.5) * 0.3)
-                .collect()
-        };
+        let field = |seed: usize| field(&grid, seed);
         let (u0, u1, u2) = (field(1), field(2), field(3));
         let mu_t: Vec<f64> = field(4).iter().map(|x| x.abs() * 1e-3).collect();
         let rho: Vec<f64> = field(5).iter().map(|x| 1000.0 + 500.0 * x).collect();
@@ -303,11 +306,7 @@ mod tests {
     fn weighted_advection_is_plain_at_uniform_density_and_keeps_the_air_out_of_the_water() {
         let grid = StaggeredGrid::new([6, 5, 7], Vec3::new(0.6, 0.5, 0.7), Vec3::ZERO);
         let st = Stencil::new(&grid);
-        let field = |seed: usize| -> Vec<f64> {
-            (0..grid.len())
-                .map(|m| (((m * 7919 + seed * 104729) % 1009) as f64 / 1009.0 - 0.5) * 0.3)
-                .collect()
-        };
+        let field = |seed: usize| field(&grid, seed);
         let (u0, u1, u2) = (field(1), field(2), field(3));
         let u = [&u0[..], &u1[..], &u2[..]];
         let rho = vec![998.0; grid.len()];
@@ -389,11 +388,7 @@ mod tests {
     fn bounded_advection_is_plain_at_uniform_density() {
         let grid = StaggeredGrid::new([6, 5, 7], Vec3::new(0.6, 0.5, 0.7), Vec3::ZERO);
         let st = Stencil::new(&grid);
-        let field = |seed: usize| -> Vec<f64> {
-            (0..grid.len())
-                .map(|m| (((m * 7919 + seed * 104729) % 1009) as f64 / 1009.0 - 0.5) * 0.3)
-                .collect()
-        };
+        let field = |seed: usize| field(&grid, seed);
         let (u0, u1, u2) = (field(1), field(2), field(3));
         let u = [&u0[..], &u1[..], &u2[..]];
         let rho = vec![998.0; grid.len()];
