@@ -32,6 +32,14 @@ pub enum Isa {
     Avx512,
 }
 
+/// The copies of a kernel as a const generic parameter (`Isa` is not one): a function compiled
+/// into the AVX2 copy passes `AVX2` down to what it calls.
+pub const GENERIC: u8 = 0;
+/// See [`GENERIC`].
+pub const AVX2: u8 = 1;
+/// See [`GENERIC`].
+pub const AVX512: u8 = 2;
+
 /// The default set by [`Isa::set_default`]: `u8::MAX` while none is set.
 static DEFAULT: AtomicU8 = AtomicU8::new(u8::MAX);
 
@@ -95,21 +103,6 @@ impl Isa {
     /// The set of command-line name `name`.
     pub fn named(name: &str) -> Option<Isa> {
         Isa::ALL.into_iter().find(|i| i.name() == name)
-    }
-
-    /// f64 lanes per instruction.
-    pub fn lanes(self) -> usize {
-        match self {
-            Isa::Generic => 2,
-            Isa::Avx2 => 4,
-            Isa::Avx512 => 8,
-        }
-    }
-}
-
-impl Default for Isa {
-    fn default() -> Isa {
-        Isa::chosen()
     }
 }
 
