@@ -82,7 +82,7 @@ enum Command {
         #[arg(long)]
         resume: bool,
         /// The free-surface cases' momentum transport across the surface ([fluid.air]
-        /// momentum: weighted or exchange; default weighted).
+        /// momentum: exchange or weighted; default exchange).
         #[arg(long, value_parser = ["weighted", "exchange"])]
         momentum: Option<String>,
     },

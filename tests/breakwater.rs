@@ -307,3 +307,27 @@ fn the_units_settle_under_gravity_without_blowing_up() {
     assert!(moved < 4.0 * 0.04, "a unit moved {moved:e} m");
     assert!(energy < 1e-2, "blocks' kinetic energy {energy:e} J");
 }
+
+/// `examples/armour_lab.toml`, the lab-scale stability test (issue 29): a double layer of
+/// D_n = 4 cm stones placed to φ = 1.26 on a 1:2 slope from the toe to a crest 0.5 m up, 158
+/// units (φ placed within half a unit of the target), under a JONSWAP sea of H_s = 0.1 m,
+/// T_p = 1.3 s in h = 0.35 m: `check` reports the stability number, the sea and the
+/// resolution that the example's header states.
+#[test]
+fn the_lab_example_places_its_double_layer_and_check_reports_its_sea() {
+    const LAB: &str = include_str!("../examples/armour_lab.toml");
+    let src = Source::from_str(LAB, "armour_lab.toml", dir()).unwrap_or_else(|e| panic!("{e}"));
+    let s = src.breakwater.as_ref().unwrap();
+    assert_eq!((s.target, s.placed), (158, 158));
+    let report = check(&src).unwrap_or_else(|e| panic!("{e}")).report();
+    for needle in [
+        "158 units placed (Random), target 158 (φ = 1.260",
+        "H/(Δ D_n) = 1.51",
+        "JONSWAP spectrum, γ = 3.3, seed 1",
+        "H_s = 0.1000 m, T_p = 1.3000 s in h = 0.35 m; at the peak L = 2.0736 m, kh = 1.061",
+        "10.0 cells per H, 207.4 per L",
+        "460 × 18 × 66 = 546480 cells",
+    ] {
+        assert!(report.contains(needle), "no `{needle}` in\n{report}");
+    }
+}

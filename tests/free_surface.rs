@@ -577,8 +577,27 @@ fn a_stream_function_flume_is_checked_by_key() {
 /// "multigrid"`) gives the spectral one's pressure to the solver's tolerance: a column of
 /// water collapsing under air (density ratio 830) with walls along x, periodic along y, a wall
 /// floor and an open top, and a block inside the water (faces closed, cells solid), 20 steps.
+///
+/// Both stop at ‖r‖ ≤ 1e-13 ‖b‖; the pressure error is that times the condition number of A
+/// (≈ 830 × (n_z/π)² ≈ 2e4 here) at most, 2e-9 relative; the 20 steps carry it along. That
+/// holds for the transport without exchange (`"weighted"`: 1e-8 asked). With the exchange
+/// (`"exchange"`, the default) a face exchanges or not as its cells' α fall either side of ½
+/// (`fluid::exchange`): a difference at round-off in α can switch a face, and the two runs
+/// part by 1.2e-5 of the pressure and 3.5e-3 of the speed after 20 steps (measured
+/// 2026-12-07); 1e-4 and 1e-2 asked, with the iterations as before.
 #[test]
 fn the_multigrid_preconditioner_gives_the_spectral_pressure() {
+    let (dp, du) = preconditioners_compared(Momentum::Weighted);
+    assert!(dp <= 1e-8, "pressure differs by {dp:e} of its scale");
+    assert!(du <= 1e-8, "velocity differs by {du:e} of its scale");
+    let (dp, du) = preconditioners_compared(Momentum::Exchange);
+    assert!(dp <= 1e-4, "pressure differs by {dp:e} of its scale");
+    assert!(du <= 1e-2, "velocity differs by {du:e} of its scale");
+}
+
+/// The column of the test above run with each preconditioner: the largest differences of the
+/// pressure and of the velocity, relative to their largest values.
+fn preconditioners_compared(momentum: Momentum) -> (f64, f64) {
     use riprap::fluid::obstacle::Obstacle;
     use riprap::fluid::pressure::Preconditioner;
     let a = 0.05715;
@@ -591,6 +610,7 @@ fn the_multigrid_preconditioner_gives_the_spectral_pressure() {
         let mut par = water_and_air();
         par.air = Some(Air {
             pressure_preconditioner: preconditioner,
+            momentum,
             ..Air::default()
         });
         let mut f = Fluid::new(grid, bcs, par).unwrap();
@@ -649,23 +669,15 @@ fn the_multigrid_preconditioner_gives_the_spectral_pressure() {
         .flat_map(|(a, b)| a.iter().zip(b.iter()))
         .fold(0.0f64, |x, (u, v)| x.max((u - v).abs()));
     println!(
-        "CG iterations in 20 steps: spectral {its_s}, multigrid {its_m}; max |Δp| {diff:.1e} of \
-         {scale:.1e} Pa, max |Δu| {dv:.1e} of {v_scale:.1e} m/s"
-    );
-    // Both stop at ‖r‖ ≤ 1e-13 ‖b‖; the pressure error is that times the condition number
-    // of A (≈ 830 × (n_z/π)² ≈ 2e4 here) at most, 2e-9 relative; the 20 steps carry it along.
-    assert!(
-        diff <= 1e-8 * scale,
-        "pressure differs by {diff:e} of {scale:e}"
-    );
-    assert!(
-        dv <= 1e-8 * v_scale,
-        "velocity differs by {dv:e} of {v_scale:e}"
+        "{}: CG iterations in 20 steps: spectral {its_s}, multigrid {its_m}; max |Δp| {diff:.1e} \
+         of {scale:.1e} Pa, max |Δu| {dv:.1e} of {v_scale:.1e} m/s",
+        momentum.name()
     );
     assert!(
         2 * its_m < its_s,
         "multigrid {its_m} against spectral {its_s} iterations"
     );
+    (diff / scale, dv / v_scale)
 }
 
 /// Regression: water moving into cells of fast air took the air's velocity as its own
@@ -677,9 +689,9 @@ fn the_multigrid_preconditioner_gives_the_spectral_pressure() {
 /// gravity, no viscosity) falls at 1 m/s into air that blows along x at 5 m/s under it. Every
 /// field is uniform in x and y and translates at w = −1 m/s: exactly, the water keeps u = 0
 /// and the air u = 5 m/s. Measured after 0.15 s (15 cells of travel), the largest u in the
-/// water: 2.27 m/s with the default transport (`momentum = "weighted"`: the water's faces take
-/// the air's velocity as the surface crosses them: 45 % of the jump), 0.742 m/s with
-/// `"exchange"`. Bound 1 m/s, a fifth of the jump:
+/// water: 2.27 m/s with `momentum = "weighted"` (the default until 2026-12-07: the water's
+/// faces take the air's velocity as the surface crosses them, 45 % of the jump), 0.742 m/s
+/// with `"exchange"`, the default now. Bound 1 m/s, a fifth of the jump:
 /// the central advection of the velocity's jump (no viscosity here) leaves wiggles on both
 /// sides of each surface, which the exchange does not remove and the density-weighted
 /// transport damps on the water's side (14 % of the jump with the plain transport).

@@ -500,3 +500,29 @@ fn an_irregular_sea_runs_with_its_significant_height() {
     assert!((hs_g / 0.03 - 1.0).abs() < 0.1, "{hs_g}");
     assert!(corr > 0.9, "{corr}");
 }
+
+/// Regression: the default momentum transport changed (`"weighted"` to `"exchange"`,
+/// 2026-12-07). A scenario without the key means the new one, so the fluid's fingerprint
+/// counts the transport a run gets, not the key: a checkpoint written under the former
+/// default without the key (hashed as "no key") is refused on restart, and a scenario that
+/// names `"exchange"` is the same run as one that leaves it out.
+#[test]
+fn a_checkpoint_of_the_former_default_transport_is_refused() {
+    let fluid_print = |text: &str| {
+        let src = Source::from_str(text, "case.toml", std::env::temp_dir()).unwrap();
+        let b = build(&src).unwrap();
+        let fp = riprap::run::fingerprint::fingerprint(&src, &b.simulation);
+        fp.into_iter().find(|p| p.0 == "fluid").unwrap().1
+    };
+    let with = |m: &str| {
+        EXAMPLE.replacen(
+            "[fluid.air]",
+            &format!("[fluid.air]\nmomentum = \"{m}\""),
+            1,
+        )
+    };
+    assert_ne!(with("exchange"), EXAMPLE);
+    let default = fluid_print(EXAMPLE);
+    assert_eq!(fluid_print(&with("exchange")), default);
+    assert_ne!(fluid_print(&with("weighted")), default);
+}

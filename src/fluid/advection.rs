@@ -40,7 +40,8 @@
 //! air face beside one a stone barely touches took that face's velocity downwind, which blew up
 //! the air over a rubble mound's armour (`tests/coupling.rs`).
 //!
-//! **Bounded** ([`advection_bounded`], `[fluid.air] momentum = "exchange"`). The weighted mean
+//! **Bounded** ([`advection_bounded`], `[fluid.air] momentum = "exchange"`, the default since
+//! 2026-12-07; the weighted mean above is `"weighted"`). The weighted mean
 //! is not centred where the densities differ: on an air face beside a water face the edge
 //! carries the water's velocity, so where the air face sends its flow into the water it is
 //! pushed away from the water's velocity at the rate |U|/Δ (anti-diffusion), and in the spray

@@ -96,7 +96,7 @@ pub fn up_crossings(record: &[(f64, f64)], after: f64) -> Vec<f64> {
 
 /// The momentum transport across the surface the free-surface cases run with
 /// (`riprap validate --momentum`; the default unless set).
-static MOMENTUM: std::sync::Mutex<Momentum> = std::sync::Mutex::new(Momentum::Weighted);
+static MOMENTUM: std::sync::Mutex<Momentum> = std::sync::Mutex::new(Momentum::Exchange);
 
 /// Sets the momentum transport of the free-surface cases ([`momentum`]).
 pub fn set_momentum(m: Momentum) {
@@ -111,7 +111,7 @@ pub fn momentum() -> Momentum {
 /// A case's scenario text with [`momentum`] under `[fluid.air]` when it is not the default.
 pub fn with_momentum(text: &str) -> String {
     match momentum() {
-        Momentum::Weighted => text.to_string(),
+        Momentum::Exchange => text.to_string(),
         m => {
             let line = format!("[fluid.air]\nmomentum = \"{}\"", m.name());
             text.replacen("[fluid.air]", &line, 1)
