@@ -87,7 +87,7 @@ use super::grid::{shifted, update_rows, IndexBox, StaggeredGrid, Stencil};
 pub enum Momentum {
     /// The transported velocity across the faces parallel to each component weighted by the
     /// faces' densities ([`super::advection`], "Water and air"); no exchange. The default
-    /// until 2026-12-07: its runs stop where a wave's run-down sprays (see the table above).
+    /// until 2026-12-07: its runs stop where a wave's run-down sprays (the module's table).
     Weighted,
     /// The default: the bounded weighted transport ([`super::advection`], "Bounded") and the
     /// exchange of this module.
