@@ -98,8 +98,9 @@ pub fn advection(st: &Stencil, u: Velocity, a: usize, c: usize) -> f64 {
 #[inline]
 pub fn advection_weighted(st: &Stencil, u: Velocity, rho: &[f64], a: usize, c: usize) -> f64 {
     let ua = u[a];
-    advection_seen(st, u, a, c, |p, q| {
-        (rho[p] * ua[p] + rho[q] * ua[q]) / (rho[p] + rho[q])
+    // IEEE addition commutes: the face's own term first gives the bits of either order.
+    advection_seen(st, u, a, c, |n| {
+        (rho[c] * ua[c] + rho[n] * ua[n]) / (rho[c] + rho[n])
     })
 }
 
@@ -108,22 +109,21 @@ pub fn advection_weighted(st: &Stencil, u: Velocity, rho: &[f64], a: usize, c: u
 #[inline]
 pub fn advection_bounded(st: &Stencil, u: Velocity, rho: &[f64], a: usize, c: usize) -> f64 {
     let ua = u[a];
-    advection_seen(st, u, a, c, |p, q| {
-        let n = if p == c { q } else { p };
+    advection_seen(st, u, a, c, |n| {
         let w = (rho[c] / (rho[c] + rho[n])).max(0.5);
         w * ua[c] + (1.0 - w) * ua[n]
     })
 }
 
-/// [`advection`] with the transported u_a across the a-b edges between the a-faces p and
-/// p + s_b (one of them `c`) given by `seen(p, p + s_b)` [m s⁻²].
+/// [`advection`] with the transported u_a across the a-b edge between face `c` and its
+/// neighbour n = c ± s_b given by `seen(n)` [m s⁻²].
 #[inline(always)]
 fn advection_seen(
     st: &Stencil,
     u: Velocity,
     a: usize,
     c: usize,
-    seen: impl Fn(usize, usize) -> f64,
+    seen: impl Fn(usize) -> f64,
 ) -> f64 {
     let ua = u[a];
     let sa = st.s[a];
@@ -137,7 +137,7 @@ fn advection_seen(
             let sb = st.s[b];
             let t_hi = 0.5 * (ub[c + sb] + ub[c + sb - sa]);
             let t_lo = 0.5 * (ub[c] + ub[c - sa]);
-            sum += (t_hi * seen(c, c + sb) - t_lo * seen(c - sb, c)) * st.inv_d[b];
+            sum += (t_hi * seen(c + sb) - t_lo * seen(c - sb)) * st.inv_d[b];
         }
     }
     sum
