@@ -482,8 +482,13 @@ fn dispatch(command: Command) -> anyhow::Result<Option<u8>> {
             if s.fluid_cells > 0 {
                 let t = s.phase_times;
                 let pc = |x: f64| 100.0 * x / s.wall_seconds.max(1e-9);
+                let cg = if s.iterations_per_projection > 0.0 {
+                    format!(", {:.1} CG iterations a step", s.iterations_per_projection)
+                } else {
+                    String::new()
+                };
                 eprintln!(
-                    "time: fluid {:.0} % (pressure {:.0} %), fluid loads {:.0} %, DEM {:.0} %, \
+                    "time: fluid {:.0} % (pressure {:.0} %{cg}), fluid loads {:.0} %, DEM {:.0} %, \
                      correction {:.0} %, output and rest {:.0} %",
                     pc(t.fluid),
                     pc(s.pressure_seconds),

@@ -99,6 +99,9 @@ pub struct RunSummary {
     pub phase_times: crate::simulation::timing::PhaseTimes,
     /// Of `phase_times.fluid`, the pressure projection [s].
     pub pressure_seconds: f64,
+    /// Conjugate-gradient iterations per exact projection (air over water, obstacles; 0 when
+    /// none was made).
+    pub iterations_per_projection: f64,
     /// The signal that stopped the run before its end ([`RunOptions::stop`]), if one did.
     pub interrupted_by: Option<usize>,
     /// The last checkpoint written.
@@ -447,6 +450,10 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         fluid_cells: sim.fluid.as_ref().map_or(0, |f| f.grid().cell_count()),
         phase_times: sim.times,
         pressure_seconds: sim.fluid.as_ref().map_or(0.0, |f| f.pressure_seconds()),
+        iterations_per_projection: sim.fluid.as_ref().map_or(0.0, |f| {
+            let t = f.step_times();
+            t.cg_iterations as f64 / t.solves.max(1) as f64
+        }),
         interrupted_by,
         checkpoint: ck_path,
     })

@@ -382,10 +382,10 @@ impl Fluid {
         if self.parameters.air.is_none() {
             return Err("a wave flume needs air (FluidParameters::air)".into());
         }
-        self.flume = Some(flume);
         let g = self.grid;
+        self.flume_targets = super::flume::ZoneTargets::new(&g, &flume);
+        self.flume = Some(flume);
         self.flume_velocity = [g.field(), g.field(), g.field()];
-        self.flume_targets = super::flume::ZoneTargets::new(&g);
         Ok(())
     }
 

@@ -367,3 +367,38 @@ fn a_cnoidal_wave_has_its_period_height_and_solitary_limit() {
     // Too short a period has no cnoidal solution.
     assert!(Cnoidal::new(big_h, 0.5, h, G).is_none());
 }
+
+#[test]
+fn an_irregular_sea_gives_the_same_bits_from_its_phases_and_depth_terms() {
+    // What a flume's zones compute once a column (phases) and once a run (depth terms) must
+    // give Wave::elevation and Wave::velocity to the bit.
+    let s = Spectrum {
+        significant_height: 0.1,
+        peak_period: 1.3,
+        peak_enhancement: 3.3,
+    };
+    let wave = Wave::Irregular(s.components(40, 7, 0.35, G));
+    let n = wave.phase_count();
+    assert_eq!(n, 40);
+    let (mut phases, mut terms) = (vec![(0.0, 0.0); n], vec![(0.0, 0.0); n]);
+    for (x, z, t) in [(0.3, -0.2, 1.7), (2.05, 0.04, 11.3), (0.0, -0.349, 0.0)] {
+        wave.phases(x, t, &mut phases);
+        wave.depth_terms(z, &mut terms);
+        assert_eq!(
+            wave.elevation_with(x, t, &phases).to_bits(),
+            wave.elevation(x, t).to_bits()
+        );
+        let (u, w) = wave.velocity(x, z, t);
+        for (p, q) in [
+            wave.velocity_with(x, z, t, &phases),
+            wave.velocity_with_terms(&phases, &terms),
+        ] {
+            assert_eq!(
+                (p.to_bits(), q.to_bits()),
+                (u.to_bits(), w.to_bits()),
+                "{x} {z} {t}"
+            );
+        }
+        assert!(u != 0.0 && w != 0.0);
+    }
+}

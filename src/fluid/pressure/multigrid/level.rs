@@ -40,6 +40,9 @@ pub(super) struct Level {
     pub x: Vec<f64>,
     /// The next iterate of a half-sweep.
     pub next: Vec<f64>,
+    /// Copies of the planes either side of each block of an in-place sweep
+    /// ([`super::sweep`]; empty where the level cannot sweep in place).
+    pub halo: Vec<f64>,
 }
 
 /// The start of a row (j, k) and of its y and z neighbours (low, high), across the box
@@ -52,17 +55,23 @@ struct Rows {
 }
 
 /// One row's slices of x and of the couplings, for a branch-free stencil.
-struct RowView<'a> {
-    x: &'a [f64],
-    w: [&'a [f64]; 5],
-    xn: [&'a [f64]; 4],
+pub(super) struct RowView<'a> {
+    /// x along the row.
+    pub x: &'a [f64],
+    /// The couplings: x low face, y low and high, z low and high.
+    pub w: [&'a [f64]; 5],
+    /// x on the rows y low, y high, z low, z high.
+    pub xn: [&'a [f64]; 4],
 }
+
+/// Cells computed together along a row (a stack buffer; a multiple of the vector width).
+pub(super) const RUN: usize = 32;
 
 impl RowView<'_> {
     /// Σ coupling × x over the neighbours of cell i, whose x neighbours are `lo` and `hi`
     /// (order: x low, x high, y low, y high, z low, z high).
     #[inline(always)]
-    fn sum(&self, i: usize, lo: usize, hi: usize) -> f64 {
+    pub(super) fn sum(&self, i: usize, lo: usize, hi: usize) -> f64 {
         let (w, x, xn) = (&self.w, self.x, &self.xn);
         w[0][i] * x[lo]
             + w[0][hi] * x[hi]
@@ -73,11 +82,38 @@ impl RowView<'_> {
     }
 }
 
+impl RowView<'_> {
+    /// Calls `f(t, i, s)` with s = Σ w x over the neighbours (as [`RowView::sum`], term for
+    /// term) for the inner cells i = i0 + t, t < m (1 ≤ i0, i0 + m < n_x): along shifted
+    /// slices, so that the loop vectorises.
+    #[inline(always)]
+    pub(super) fn run(&self, i0: usize, m: usize, mut f: impl FnMut(usize, usize, f64)) {
+        let r = i0..i0 + m;
+        let (x_lo, x_hi) = (&self.x[i0 - 1..i0 - 1 + m], &self.x[i0 + 1..i0 + 1 + m]);
+        let (w, xn) = (&self.w, &self.xn);
+        let (w0, w0_hi) = (&w[0][r.clone()], &w[0][i0 + 1..i0 + 1 + m]);
+        let [w1, w2, w3, w4] = [1, 2, 3, 4].map(|a| &w[a][r.clone()]);
+        let [n0, n1, n2, n3] = [0, 1, 2, 3].map(|a| &xn[a][r.clone()]);
+        for t in 0..m {
+            let s = w0[t] * x_lo[t]
+                + w0_hi[t] * x_hi[t]
+                + w1[t] * n0[t]
+                + w2[t] * n1[t]
+                + w3[t] * n2[t]
+                + w4[t] * n3[t];
+            f(t, i0 + t, s);
+        }
+    }
+}
+
 impl Level {
     /// A level of `n` cells, couplings zero.
     pub fn new(n: [usize; 3], periodic: [bool; 3]) -> Level {
         let len = n[0] * n[1] * n[2];
         let zero = || vec![0.0; len];
+        // One block of planes per thread for the in-place sweeps.
+        let blocks = rayon::current_num_threads().clamp(1, n[2]);
+        let in_place = super::sweep::sweeps_in_place(n);
         Level {
             n,
             periodic,
@@ -88,6 +124,14 @@ impl Level {
             b: zero(),
             x: zero(),
             next: zero(),
+            halo: vec![
+                0.0;
+                if in_place {
+                    2 * n[0] * n[1] * blocks
+                } else {
+                    0
+                }
+            ],
         }
     }
 
@@ -200,20 +244,25 @@ impl Level {
             );
             line.copy_from_slice(v.x);
             let first = (row % ny + row / ny + colour) % 2;
-            let mut i = first;
-            // The ends of the row (their x neighbours across it), and the rest branch-free.
-            if i == 0 {
+            // The ends of the row (their x neighbours across it), and the inner cells in
+            // vectorised runs, of which those of the colour are kept.
+            if first == 0 {
                 let (lo, hi) = Self::along(0, nx);
                 line[0] = (b[0] + v.sum(0, lo, hi)) * inv[0];
-                i = 2;
             }
-            while i + 1 < nx {
-                line[i] = (b[i] + v.sum(i, i - 1, i + 1)) * inv[i];
-                i += 2;
+            let mut i0 = 1;
+            while i0 + 1 < nx {
+                let m = (nx - 1 - i0).min(RUN);
+                let mut new = [0.0; RUN];
+                v.run(i0, m, |t, i, s| new[t] = (b[i] + s) * inv[i]);
+                for t in ((first + i0) % 2..m).step_by(2) {
+                    line[i0 + t] = new[t];
+                }
+                i0 += m;
             }
-            if i + 1 == nx {
-                let (lo, hi) = Self::along(i, nx);
-                line[i] = (b[i] + v.sum(i, lo, hi)) * inv[i];
+            if nx > 1 && (nx - 1 + first) % 2 == 0 {
+                let (lo, hi) = Self::along(nx - 1, nx);
+                line[nx - 1] = (b[nx - 1] + v.sum(nx - 1, lo, hi)) * inv[nx - 1];
             }
         });
         self.next = std::mem::replace(&mut self.x, next);
@@ -233,11 +282,25 @@ impl Level {
                     let r = self.rows(j + self.n[1] * k);
                     let v = self.view(&r, &self.x);
                     let nx = self.n[0];
-                    for i in 0..nx {
-                        let c = r.own + i;
+                    let (b, d) = (&self.b[r.own..r.own + nx], &self.diag[r.own..r.own + nx]);
+                    let end = |i: usize| {
                         let (lo, hi) = Self::along(i, nx);
-                        let res = self.b[c] - (self.diag[c] * self.x[c]) + v.sum(i, lo, hi);
-                        line[i / f[0]] += res;
+                        b[i] - (d[i] * v.x[i]) + v.sum(i, lo, hi)
+                    };
+                    line[0] += end(0);
+                    // The inner cells in vectorised runs, summed in order as the ends.
+                    let mut i0 = 1;
+                    while i0 + 1 < nx {
+                        let m = (nx - 1 - i0).min(RUN);
+                        let mut res = [0.0; RUN];
+                        v.run(i0, m, |t, i, s| res[t] = b[i] - (d[i] * v.x[i]) + s);
+                        for (t, res) in res[..m].iter().enumerate() {
+                            line[(i0 + t) / f[0]] += res;
+                        }
+                        i0 += m;
+                    }
+                    if nx > 1 {
+                        line[(nx - 1) / f[0]] += end(nx - 1);
                     }
                 }
             }
