@@ -12,7 +12,8 @@
 //! vary), see [`schedule`]. A flow-only scenario writes no sphere or wall files.
 //!
 //! With `[armour]`: `armour.csv` during the run, `armour_profile.csv` and `armour_damage.png`
-//! at its end ([`armour`]).
+//! at its end ([`armour`]), and when a signal stops it, as they stand (without a closing row of
+//! `armour.csv`, which the restart writes where an uninterrupted run would).
 
 pub mod armour;
 pub mod fingerprint;
@@ -431,8 +432,11 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             }
         }
         if let Some(a) = &mut armour {
-            a.finish(&sim, kinds.plots).context(ARMOUR)?;
+            a.finish(&sim, kinds.plots, false).context(ARMOUR)?;
         }
+    } else if let Some(a) = &mut armour {
+        // The damage so far: what an engineer stopping a long sea wants to look at.
+        a.finish(&sim, kinds.plots, true).context(ARMOUR)?;
     }
     if kinds.plots && particles {
         plot_energy(&out)

@@ -259,6 +259,45 @@ fn a_spinning_unit_rocks_and_a_restart_continues_armour_csv_bit_for_bit() {
     }
 }
 
+/// A run stopped by a signal (here set before its first step, so that the stop is exact)
+/// writes the damage report as it stands, marked interrupted, and no row; its restart ends with
+/// the uninterrupted run's armour.csv.
+#[test]
+fn a_signal_leaves_the_damage_so_far_and_the_restart_the_same_rows() {
+    let src = scenario(true, true, "displacement_reference_time = 0.02\n");
+    let whole = temp_dir("whole_signal");
+    let a = execute(&src, &opts(&whole, None, None)).unwrap_or_else(|e| panic!("{e}"));
+    let whole_text = std::fs::read_to_string(whole.join("armour.csv")).unwrap();
+    let dt = build(&src).unwrap().simulation.dem.dt;
+    let cut = 5 * (0.01 / dt).round() as u64;
+    assert!(cut < a.steps);
+    let dir = temp_dir("signal");
+    execute(&src, &opts(&dir, None, Some(cut))).unwrap_or_else(|e| panic!("{e}"));
+    let rows_at_cut = std::fs::read_to_string(dir.join("armour.csv")).unwrap();
+    std::fs::remove_file(dir.join("armour_report.md")).unwrap();
+    let stop = std::sync::Arc::new(std::sync::atomic::AtomicUsize::new(15));
+    let stopped = RunOptions {
+        stop: Some(stop),
+        ..opts(&dir, Some(dir.join("checkpoint.ck")), None)
+    };
+    let r = execute(&src, &stopped).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!((r.interrupted_by, r.steps), (Some(15), 0));
+    let md = std::fs::read_to_string(dir.join("armour_report.md")).unwrap();
+    assert!(md.contains("The run was interrupted at t ="), "{md}");
+    assert!(
+        md.contains("1 of 4 units") || md.contains("of 4 units"),
+        "{md}"
+    );
+    let rows = std::fs::read_to_string(dir.join("armour.csv")).unwrap();
+    assert_eq!(rows, rows_at_cut, "the interruption added a row");
+    execute(&src, &opts(&dir, Some(dir.join("checkpoint.ck")), None))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let text = std::fs::read_to_string(dir.join("armour.csv")).unwrap();
+    assert!(text == whole_text, "armour.csv differs after the restart");
+    let md = std::fs::read_to_string(dir.join("armour_report.md")).unwrap();
+    assert!(!md.contains("interrupted"), "{md}");
+}
+
 /// The error for `[armour]` edited by `edit` (or the scenario without blocks), checked to name
 /// the file, the line of `marker`, the key and the reason.
 #[track_caller]

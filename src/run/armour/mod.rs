@@ -203,14 +203,21 @@ impl ArmourOutput {
     }
 
     /// At the end of a run: the last row (unless written at this step), armour_profile.csv,
-    /// armour_units.csv, armour_report.md and, with `plots`, its figures.
-    pub fn finish(&mut self, sim: &Simulation, plots: bool) -> anyhow::Result<()> {
+    /// armour_units.csv, armour_report.md and, with `plots`, its figures. A run `interrupted`
+    /// by a signal writes them as they stand but adds no row: its restart writes the rows
+    /// where an uninterrupted run would.
+    pub fn finish(
+        &mut self,
+        sim: &Simulation,
+        plots: bool,
+        interrupted: bool,
+    ) -> anyhow::Result<()> {
         let Some(st) = &self.state else {
             return Ok(());
         };
         let before = st.before.clone();
         let t_ref = st.reference_time;
-        if self.last_row != Some(sim.step) {
+        if self.last_row != Some(sim.step) && !interrupted {
             self.row(sim)?;
         }
         let after = self.profile(sim);
@@ -258,6 +265,7 @@ impl ArmourOutput {
                 figures: plots,
                 cost: self.cost(sim.time),
                 wires: &sim.rigid.wires,
+                interrupted,
             },
         )
         .context("cannot write armour_report.md")?;

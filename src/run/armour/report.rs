@@ -280,6 +280,8 @@ pub struct Report<'a> {
     pub cost: Option<(f64, usize)>,
     /// The wires between units, with the tensions they carried.
     pub wires: &'a [WireLink],
+    /// Whether the run was interrupted (a signal) before its end: the report covers it so far.
+    pub interrupted: bool,
 }
 
 /// Writes `armour_report.md` in `out`.
@@ -299,6 +301,14 @@ pub fn markdown(r: &Report) -> String {
          t = {:.3} s.\n",
         s.times.0, s.times.1
     );
+    if r.interrupted {
+        let _ = writeln!(
+            m,
+            "**The run was interrupted at t = {:.3} s**: this report covers it so far. A \
+             restart from its checkpoint continues it and writes the report again at its end.\n",
+            s.times.1
+        );
+    }
     structure_section(&mut m, r);
     if let Some(inc) = r.incident {
         incident_section(&mut m, r, inc);
@@ -758,6 +768,7 @@ mod tests {
             figures: true,
             cost: Some((96.0, 1)),
             wires: &[wire],
+            interrupted: false,
         });
         for s in [
             "## The structure",
