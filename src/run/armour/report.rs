@@ -177,11 +177,23 @@ pub fn incident(
             fw.period,
             "regular waves: H = H_m0,I/√2, T_m = T".to_string(),
         ),
-        (None, _) => (
-            fw.height.unwrap_or(f64::NAN),
-            fw.period,
-            "no gauge record seaward of the toe: the waves asked for in [fluid.waves]".to_string(),
-        ),
+        (None, _) => {
+            let why = if used.is_empty() || ctx.gauge_interval <= 0.0 {
+                "no gauge record seaward of the toe".to_string()
+            } else if whole_periods(start, t_end, fw.period).is_none() {
+                format!(
+                    "no whole period of gauge record between the analysis start t = {start:.2} s \
+                     (the ramp, the travel to the farthest gauge and a period) and t = {t_end:.2} s"
+                )
+            } else {
+                "no incident sea separated from the gauges' record".to_string()
+            };
+            (
+                fw.height.unwrap_or(f64::NAN),
+                fw.period,
+                format!("{why}: the waves asked for in [fluid.waves]"),
+            )
+        }
     };
     Incident {
         sea,
@@ -710,6 +722,23 @@ mod tests {
         assert!((inc.toe_time - (0.8 + 0.7 / cg)).abs() < 1e-12);
         assert_eq!(waves_at_toe(&inc, inc.toe_time - 1.0), 0.0);
         assert!((waves_at_toe(&inc, inc.toe_time + 1.6) - 2.0).abs() < 1e-12);
+    }
+
+    /// A run that ends before a whole period of record past the analysis start (a long run
+    /// stopped early) falls back on the waves asked for, and says why.
+    #[test]
+    fn a_record_too_short_for_the_analysis_is_named_as_such() {
+        let (ctx, a) = (context(), settings());
+        let fw = ctx.flume.unwrap();
+        let inc = incident(&ctx, &a, &fw, &gauge_rows(0.04, 0.2), (1.0, 2.6));
+        assert!(inc.sea.is_none());
+        assert_eq!(inc.height, 0.04);
+        assert!(
+            inc.source
+                .starts_with("no whole period of gauge record between the analysis start"),
+            "{}",
+            inc.source
+        );
     }
 
     /// Without gauges the report falls back on the waves asked for, and says so.
