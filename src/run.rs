@@ -454,10 +454,8 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         fluid_cells: sim.fluid.as_ref().map_or(0, |f| f.grid().cell_count()),
         phase_times: sim.times,
         pressure_seconds: sim.fluid.as_ref().map_or(0.0, |f| f.pressure_seconds()),
-        iterations_per_projection: sim.fluid.as_ref().map_or(0.0, |f| {
-            let t = f.step_times();
-            t.cg_iterations as f64 / t.solves.max(1) as f64
-        }),
+        iterations_per_projection: (sim.fluid.as_ref())
+            .map_or(0.0, |f| f.step_times().iterations_per_solve()),
         interrupted_by,
         checkpoint: ck_path,
     })

@@ -358,7 +358,7 @@ pub fn describe(b: &FlumeBench) -> String {
             k.mean_dt(),
             k.dt_range.0,
             k.dt_range.1,
-            k.times.cg_iterations as f64 / k.times.solves.max(1) as f64,
+            k.times.iterations_per_solve(),
         ));
     }
     let timed: usize = b.blocks.iter().map(|k| k.steps).sum();
@@ -408,7 +408,7 @@ pub fn describe(b: &FlumeBench) -> String {
         pc(sum.interface),
         per(sum.pressure),
         pc(sum.pressure),
-        sum.cg_iterations as f64 / sum.solves.max(1) as f64,
+        sum.iterations_per_solve(),
         1e3 * sum.pressure / sum.cg_iterations.max(1) as f64,
         per(sum.relaxation),
         pc(sum.relaxation),

@@ -92,13 +92,14 @@ pub struct Flume {
 /// component (w, u_target) at padded (i, k), index k n_x' + i (n_x' the padded row); for the
 /// cells of each column i, w and η at the four points of [`Flume::relax_water_fraction`]'s
 /// mean. w = 0 outside the zones.
-/// Along each column of faces of each component, what the faces' targets share: the target
-/// surface η in the generating zone and an irregular sea's phases ([`Wave::phases`]).
 #[derive(Clone, Debug, Default)]
 pub struct ZoneTargets {
     faces: [Vec<(f64, f64)>; 3],
     columns: Vec<(f64, [f64; 4])>,
+    /// The target surface η [m] at each column of faces of each component in the generating
+    /// zone (the x faces and the z faces; the y faces need none).
     surface: [Vec<f64>; 3],
+    /// An irregular sea's phases at those columns ([`Wave::phases`], n per column).
     phases: [Vec<(f64, f64)>; 3],
     /// An irregular sea's [`Wave::depth_terms`] at the height of each layer of faces of each
     /// component (padded k), fixed for the run.
@@ -249,8 +250,9 @@ impl Flume {
             } = targets;
             // The wave along each column of faces: its phases and surface, once for all
             // heights (the same operations as face by face: the same bits).
+            // (The y faces' wave target is zero: they need neither.)
             let column = |i: usize, ph: &mut [(f64, f64)], eta: &mut f64| {
-                if !region[0].contains(&i) {
+                if a == 1 || !region[0].contains(&i) {
                     return;
                 }
                 let x = grid.position(grid.index(i, j0, k0), Some(a)).x;

@@ -32,6 +32,11 @@ pub struct StepTimes {
 }
 
 impl StepTimes {
+    /// CG iterations per exact projection (0 when none was made).
+    pub fn iterations_per_solve(&self) -> f64 {
+        self.cg_iterations as f64 / self.solves.max(1) as f64
+    }
+
     /// The timed parts summed [s].
     pub fn total(&self) -> f64 {
         self.momentum

@@ -111,7 +111,7 @@ pub fn momentum() -> Momentum {
 /// A case's scenario text with [`momentum`] under `[fluid.air]` when it is not the default.
 pub fn with_momentum(text: &str) -> String {
     match momentum() {
-        Momentum::Exchange => text.to_string(),
+        m if m.is_default() => text.to_string(),
         m => {
             let line = format!("[fluid.air]\nmomentum = \"{}\"", m.name());
             text.replacen("[fluid.air]", &line, 1)

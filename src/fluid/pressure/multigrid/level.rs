@@ -67,6 +67,44 @@ pub(super) struct RowView<'a> {
 /// Cells computed together along a row (a stack buffer; a multiple of the vector width).
 pub(super) const RUN: usize = 32;
 
+/// The cells of one colour along a row of `line.len()` cells, `first` the first of them (0
+/// or 1): line_i = (b_i + Σ w x_nb) / diag_i with the couplings `w` and the neighbouring rows
+/// `xn` of a [`RowView`], and x along the row `old` (a half-sweep) or `line` itself (a sweep in
+/// place, [`super::sweep`]). The ends take their x neighbours across the row; the inner cells
+/// are computed in vectorised runs, of which those of the colour are kept (the others' values
+/// are discarded, and the kept ones read only the other colour).
+pub(super) fn relax_row(
+    line: &mut [f64],
+    old: Option<&[f64]>,
+    (w, xn): ([&[f64]; 5], [&[f64]; 4]),
+    (b, inv): (&[f64], &[f64]),
+    first: usize,
+) {
+    fn view<'a>(x: &'a [f64], w: [&'a [f64]; 5], xn: [&'a [f64]; 4]) -> RowView<'a> {
+        RowView { x, w, xn }
+    }
+    let nx = line.len();
+    if first == 0 {
+        let (lo, hi) = Level::along(0, nx);
+        line[0] = (b[0] + view(old.unwrap_or(line), w, xn).sum(0, lo, hi)) * inv[0];
+    }
+    let mut i0 = 1;
+    while i0 + 1 < nx {
+        let m = (nx - 1 - i0).min(RUN);
+        let mut new = [0.0; RUN];
+        view(old.unwrap_or(line), w, xn).run(i0, m, |t, i, s| new[t] = (b[i] + s) * inv[i]);
+        for t in ((first + i0) % 2..m).step_by(2) {
+            line[i0 + t] = new[t];
+        }
+        i0 += m;
+    }
+    if nx > 1 && (nx - 1 + first) % 2 == 0 {
+        let (lo, hi) = Level::along(nx - 1, nx);
+        let sum = view(old.unwrap_or(line), w, xn).sum(nx - 1, lo, hi);
+        line[nx - 1] = (b[nx - 1] + sum) * inv[nx - 1];
+    }
+}
+
 impl RowView<'_> {
     /// Σ coupling × x over the neighbours of cell i, whose x neighbours are `lo` and `hi`
     /// (order: x low, x high, y low, y high, z low, z high).
@@ -80,9 +118,7 @@ impl RowView<'_> {
             + w[3][i] * xn[2][i]
             + w[4][i] * xn[3][i]
     }
-}
 
-impl RowView<'_> {
     /// Calls `f(t, i, s)` with s = Σ w x over the neighbours (as [`RowView::sum`], term for
     /// term) for the inner cells i = i0 + t, t < m (1 ≤ i0, i0 + m < n_x): along shifted
     /// slices, so that the loop vectorises.
@@ -113,7 +149,10 @@ impl Level {
         let zero = || vec![0.0; len];
         // One block of planes per thread for the in-place sweeps.
         let blocks = rayon::current_num_threads().clamp(1, n[2]);
-        let in_place = super::sweep::sweeps_in_place(n);
+        let halo = match super::sweep::sweeps_in_place(n) {
+            true => 2 * n[0] * n[1] * blocks,
+            false => 0,
+        };
         Level {
             n,
             periodic,
@@ -124,14 +163,7 @@ impl Level {
             b: zero(),
             x: zero(),
             next: zero(),
-            halo: vec![
-                0.0;
-                if in_place {
-                    2 * n[0] * n[1] * blocks
-                } else {
-                    0
-                }
-            ],
+            halo: vec![0.0; halo],
         }
     }
 
@@ -244,26 +276,7 @@ impl Level {
             );
             line.copy_from_slice(v.x);
             let first = (row % ny + row / ny + colour) % 2;
-            // The ends of the row (their x neighbours across it), and the inner cells in
-            // vectorised runs, of which those of the colour are kept.
-            if first == 0 {
-                let (lo, hi) = Self::along(0, nx);
-                line[0] = (b[0] + v.sum(0, lo, hi)) * inv[0];
-            }
-            let mut i0 = 1;
-            while i0 + 1 < nx {
-                let m = (nx - 1 - i0).min(RUN);
-                let mut new = [0.0; RUN];
-                v.run(i0, m, |t, i, s| new[t] = (b[i] + s) * inv[i]);
-                for t in ((first + i0) % 2..m).step_by(2) {
-                    line[i0 + t] = new[t];
-                }
-                i0 += m;
-            }
-            if nx > 1 && (nx - 1 + first) % 2 == 0 {
-                let (lo, hi) = Self::along(nx - 1, nx);
-                line[nx - 1] = (b[nx - 1] + v.sum(nx - 1, lo, hi)) * inv[nx - 1];
-            }
+            relax_row(line, Some(v.x), (v.w, v.xn), (b, inv), first);
         });
         self.next = std::mem::replace(&mut self.x, next);
     }

@@ -19,7 +19,7 @@
 
 use rayon::prelude::*;
 
-use super::level::{Level, RowView, RUN};
+use super::level::{relax_row, Level};
 
 /// Planes of x of one block and the copies of the planes beyond it.
 struct Block<'a> {
@@ -160,26 +160,7 @@ impl Level {
                 &self.inv_diag[start..start + nx],
             );
             let first = (j + k + colour) % 2;
-            if first == 0 {
-                line[0] = (rhs[0] + RowView { x: line, w, xn }.sum(0, nx - 1, 1)) * inv[0];
-            }
-            // The inner cells in runs: every cell of the run computed (vectorised), those of
-            // the colour kept. The others' values are discarded, and the kept ones read only
-            // the other colour, which this pass does not change.
-            let mut i0 = 1;
-            while i0 + 1 < nx {
-                let m = (nx - 1 - i0).min(RUN);
-                let mut new = [0.0; RUN];
-                RowView { x: line, w, xn }.run(i0, m, |t, i, s| new[t] = (rhs[i] + s) * inv[i]);
-                for t in ((first + i0) % 2..m).step_by(2) {
-                    line[i0 + t] = new[t];
-                }
-                i0 += m;
-            }
-            if (nx - 1 + first) % 2 == 0 {
-                line[nx - 1] =
-                    (rhs[nx - 1] + RowView { x: line, w, xn }.sum(nx - 1, nx - 2, 0)) * inv[nx - 1];
-            }
+            relax_row(line, None, (w, xn), (rhs, inv), first);
         }
     }
 }
