@@ -309,25 +309,98 @@ fn the_units_settle_under_gravity_without_blowing_up() {
 }
 
 /// `examples/armour_lab.toml`, the lab-scale stability test (issue 29): a double layer of
-/// D_n = 4 cm stones placed to φ = 1.26 on a 1:2 slope from the toe to a crest 0.5 m up, 158
+/// D_n = 4 cm stones placed to φ = 1.26 on a 1:2 slope from the toe to a crest 0.65 m up, 206
 /// units (φ placed within half a unit of the target), under a JONSWAP sea of H_s = 0.1 m,
-/// T_p = 1.3 s in h = 0.35 m: `check` reports the stability number, the sea and the
-/// resolution that the example's header states.
+/// T_p = 1.3 s in h = 0.5 m: `check` reports the stability number, the sea and the
+/// resolution that the example's header states, and the core's 65 steps as one medium.
 #[test]
 fn the_lab_example_places_its_double_layer_and_check_reports_its_sea() {
     const LAB: &str = include_str!("../examples/armour_lab.toml");
     let src = Source::from_str(LAB, "armour_lab.toml", dir()).unwrap_or_else(|e| panic!("{e}"));
     let s = src.breakwater.as_ref().unwrap();
-    assert_eq!((s.target, s.placed), (158, 158));
+    assert_eq!((s.target, s.placed), (206, 206));
     let report = check(&src).unwrap_or_else(|e| panic!("{e}")).report();
     for needle in [
-        "158 units placed (Random), target 158 (φ = 1.260",
+        "206 units placed (Random), target 206 (φ = 1.260",
         "H/(Δ D_n) = 1.51",
         "JONSWAP spectrum, γ = 3.3, seed 1",
-        "H_s = 0.1000 m, T_p = 1.3000 s in h = 0.35 m; at the peak L = 2.0736 m, kh = 1.061",
-        "10.0 cells per H, 207.4 per L",
-        "460 × 18 × 66 = 546480 cells",
+        "H_s = 0.1000 m, T_p = 1.3000 s in h = 0.5 m; at the peak L = 2.3118 m, kh = 1.359",
+        "10.0 cells per H, 231.2 per L",
+        "490 × 18 × 86 = 758520 cells",
+        "zones 0 to 64 (one medium): [3.21, 0, 0] to [4.9, 0.18, 0.01] m, …, [4.49, 0, 0.64] to",
+        "settled dry before the run (settle_time): 1 s, 6666 DEM steps",
     ] {
         assert!(report.contains(needle), "no `{needle}` in\n{report}");
     }
+}
+
+/// `settle_time`: the units settle dry, the DEM alone, before the run (as a laboratory builds
+/// its mound before it fills the flume). The run then starts from the heap at rest, its
+/// contacts pressed as they came to rest: stepped on, the heap stays where it is, and `check`
+/// says what the settling did. The contacts' tangential springs start unstretched (the
+/// history is not carried over), so each unit creeps until its springs hold it again: 1.2 mm
+/// at most in 0.2 s (measured), 0.03 D_n, against the 0.1 D_n that counts a unit as moved and
+/// the 8 cm the unsettled heap's units move in the same time. Bound: 0.05 D_n.
+#[test]
+fn a_layer_settled_dry_starts_at_rest_and_stays() {
+    const SETTLE: f64 = 1.0;
+    let with = |t: &str| {
+        dry(0.2).replace(
+            "gap = 0.001                    # m: above the plane, and between stones\n",
+            &format!("gap = 0.001\nsettle_time = {t}\n"),
+        )
+    };
+    let src = source(&with(&SETTLE.to_string())).unwrap_or_else(|e| panic!("{e}"));
+    let placed = units(&example());
+    let settled = units(&src);
+    assert_eq!(placed.len(), settled.len());
+    let s = src.breakwater.as_ref().unwrap().settled.unwrap();
+    assert!((s.time - SETTLE).abs() < 1e-3 && s.steps > 0, "{s:?}");
+    // The loose heap compacted: its top units came down about a D_n.
+    assert!(s.mean_move > 1e-3 && s.largest_move > 0.02, "{s:?}");
+    assert!(s.kinetic_energy < 1e-2, "{s:?}");
+    let report = check(&src).unwrap_or_else(|e| panic!("{e}")).report();
+    assert!(
+        report.contains("settled dry before the run (settle_time): 1 s"),
+        "{report}"
+    );
+    // Started from the settled heap: at rest, and it stays.
+    let mut sim = build(&src).unwrap_or_else(|e| panic!("{e}")).simulation;
+    let b = &sim.rigid.blocks;
+    assert!(b.velocity.iter().all(|v| *v == Vec3::ZERO));
+    let start = b.centre.clone();
+    while !sim.reached(0.2) {
+        sim.step_towards(0.2).unwrap_or_else(|e| panic!("{e}"));
+    }
+    let moved = |sim: &riprap::simulation::Simulation| {
+        let b = &sim.rigid.blocks;
+        start.iter().zip(&b.centre).fold(0.0f64, |m, (&c0, &c)| {
+            m.max(sim.dem.domain.minimum_image(c - c0).length())
+        })
+    };
+    let after = moved(&sim);
+    eprintln!("settled dry {SETTLE} s: {s:?}; then 0.2 s: largest move {after:.3e} m");
+    assert!(after < 0.05 * 0.04, "the settled heap moved {after:e} m");
+    // The same 0.2 s without the settling: the heap falls.
+    let src = source(&dry(0.2)).unwrap();
+    let mut sim = build(&src).unwrap().simulation;
+    let start = sim.rigid.blocks.centre.clone();
+    while !sim.reached(0.2) {
+        sim.step_towards(0.2).unwrap();
+    }
+    let b = &sim.rigid.blocks;
+    let fell = start.iter().zip(&b.centre).fold(0.0f64, |m, (&c0, &c)| {
+        m.max(sim.dem.domain.minimum_image(c - c0).length())
+    });
+    eprintln!("unsettled, 0.2 s: largest move {fell:.3e} m");
+    assert!(
+        fell > 0.5 * 0.04,
+        "the unsettled heap moved only {fell:e} m"
+    );
+    // A time that is not one is refused by its key.
+    let e = source(&with("-1.0")).err().unwrap().to_string();
+    assert!(
+        e.contains("breakwater.armour.settle_time") && e.contains("positive"),
+        "{e}"
+    );
 }

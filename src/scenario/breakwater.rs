@@ -35,6 +35,7 @@
 //! # release_thickness = 0.16 # random: units' tops within this height of the plane [m]
 //! #                          # (default 2 t_a; they settle from there)
 //! max_tilt = 20.0            # random: tilt from lying flat on the slope [deg] (default 180)
+//! settle_time = 1.0          # settled dry for 1 s before the run, the DEM alone [s] (`settle`)
 //! ```
 //!
 //! Packing density (Rock Manual, CIRIA/CUR/CETMEF 2007, §3.5.1; SPM 1984 §7-III Eqs. 7-120,
@@ -47,11 +48,13 @@
 
 mod placement;
 mod profile;
+mod settle;
 
 use super::armour::ArmourSection;
 use super::blocks::template;
 use super::checks::{finite, non_negative, positive};
 use super::schema::{BlockEntry, BlockSet, ListBlocks, PlaneWall, ShapeName, WallSection};
+use super::text::sig4;
 use super::{ScenarioError, Source};
 use crate::armour::design::ArmourUnit;
 use crate::armour::slope::Slope;
@@ -62,6 +65,7 @@ pub use super::mound::{
 };
 pub use placement::{Placed, Shortfall, Unit, UnitLayer, MAX_TRIES_PER_UNIT};
 pub use profile::{porous_steps, Profile};
+pub use settle::Settled;
 
 /// cot of the armour heap's seaward face at the toe (random placement): the face runs down
 /// from the top of the release zone over the toe to the bed, and units in front of the toe,
@@ -108,6 +112,10 @@ pub struct BreakwaterSummary {
     pub fall: f64,
     /// A crown wall was made.
     pub crown_wall: bool,
+    /// The index of the units' `[[blocks]]` set.
+    pub set: usize,
+    /// What the dry settling did (`settle_time`).
+    pub settled: Option<Settled>,
 }
 
 impl BreakwaterSummary {
@@ -151,8 +159,28 @@ impl BreakwaterSummary {
         }
         // Each unit rests `gap` clear of what is under it, but a random heap is loose and
         // compacts as it settles: dry, the example's comes nearly to rest in 0.6 s
-        // (tests/breakwater.rs); 1 s leaves room for the water's drag.
-        let suggest = (1.0f64).max(10.0 * (2.0 * self.fall / 9.81).sqrt());
+        // (tests/breakwater.rs); under water the lab example's double layer still slid
+        // between 1 and 1.5 s (S rose by 0.34 before any wave reached the toe), so 2 s.
+        let suggest = (2.0f64).max(10.0 * (2.0 * self.fall / 9.81).sqrt());
+        if let Some(d) = self.settled {
+            let reference = match reference {
+                Some(t) => format!("displacement_reference_time = {t} s"),
+                None => "displacement from the start".to_string(),
+            };
+            s.push_str(&format!(
+                "  settled dry before the run (settle_time): {} s, {} DEM steps; units moved \
+                 {:.4} m on average, {:.4} m ({:.2} D_n) at most; kinetic energy {:.3e} J left \
+                 (zeroed), deepest contact {:.2e} of the smaller radius; {reference}\n",
+                sig4(d.time),
+                d.steps,
+                d.mean_move,
+                d.largest_move,
+                d.largest_move / self.nominal_diameter,
+                d.kinetic_energy,
+                d.max_overlap_ratio,
+            ));
+            return s;
+        }
         let what = format!(
             "  settling: each unit starts {:.4} m clear of what is under it (at most {:.4} m to \
              fall), then the layer compacts under gravity;",
@@ -165,10 +193,24 @@ impl BreakwaterSummary {
             )),
             None => s.push_str(&format!(
                 "{what} set [output] displacement_reference_time = {suggest:.1} (s) or later, \
-                 before the waves arrive\n"
+                 before the waves arrive, or settle the units dry before the run (settle_time)\n"
             )),
         }
         s
+    }
+}
+
+/// The overlap over the smaller radius a sphere from `origin` (a key path) may start with
+/// when it is a member of the section's units settled dry ([`Settled::allowed_overlap`]); 0
+/// otherwise.
+pub(super) fn settled_overlap(src: &Source, origin: &str) -> f64 {
+    match &src.breakwater {
+        Some(BreakwaterSummary {
+            set,
+            settled: Some(s),
+            ..
+        }) if origin.starts_with(&format!("blocks[{set}]")) => s.allowed_overlap(),
+        _ => 0.0,
     }
 }
 
@@ -188,7 +230,17 @@ pub(super) fn expand(src: &mut Source) -> Result<Option<BreakwaterSummary>, Scen
     let Some(b) = src.scenario.breakwater.clone() else {
         return Ok(None);
     };
-    let e = expansion(src, &b)?;
+    let mut e = expansion(src, &b)?;
+    if let Some(t) = b.armour.settle_time {
+        let key = "breakwater.armour.settle_time";
+        let t = positive(src, key, t)?;
+        let BlockSet::List(units) = &e.blocks else {
+            unreachable!("the section places its units as a list")
+        };
+        let (units, settled) = settle::settle(src, units, &e.walls, t, key)?;
+        e.blocks = BlockSet::List(units);
+        e.summary.settled = Some(settled);
+    }
     let sc = &mut src.scenario;
     sc.walls.extend(e.walls);
     sc.blocks.push(e.blocks);
@@ -435,6 +487,8 @@ fn expansion(src: &Source, b: &BreakwaterSection) -> Result<Expansion, ScenarioE
         armour_defaulted: src.scenario.armour.is_none(),
         fall: n as f64 * gap,
         crown_wall: crown.is_some(),
+        set: src.scenario.blocks.len(),
+        settled: None,
     };
     Ok(Expansion {
         walls,

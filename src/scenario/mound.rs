@@ -118,4 +118,8 @@ pub struct ArmourUnits {
     /// Random placement: the largest tilt of a unit from lying flat on the slope (its
     /// definition frame's z along the slope's normal) [degrees] (default 180: any orientation).
     pub max_tilt: Option<f64>,
+    /// Settles the placed units dry under gravity for this long before the run starts, the
+    /// DEM alone, as a laboratory builds its mound before it fills the flume [s] (default: none,
+    /// the units settle in the run).
+    pub settle_time: Option<f64>,
 }

@@ -12,8 +12,13 @@ use crate::geometry::ContactBuf;
 /// The overlap a sphere from `origin` may start with against a wall, as a fraction of its
 /// diameter: a file set's `max_overlap_ratio` (the tolerance of its sphere pairs, where the
 /// smaller diameter is the sphere's own), none for the other sets and for blocks (as for their
-/// sphere pairs: touching is fine).
+/// sphere pairs: touching is fine), and for a breakwater's units settled dry what the settling
+/// left.
 fn allowed_ratio(src: &Source, origin: &str) -> f64 {
+    let settled = super::breakwater::settled_overlap(src, origin);
+    if settled > 0.0 {
+        return 0.5 * settled;
+    }
     let set = origin
         .strip_prefix("spheres[")
         .and_then(|s| s.split(']').next())

@@ -99,11 +99,13 @@ pub(super) fn zones(
     Ok(out)
 }
 
-/// `riprap check`'s lines on the zones: per zone a and b, where the Forchheimer term takes over
-/// (u = a/b and its grain Reynolds number), a Δt at the fluid step `dt` [s], and what is
-/// modelled. `nu` is the water's kinematic viscosity [m² s⁻¹], `speed` the velocity scale
-/// [m s⁻¹] (0 at rest).
+/// `riprap check`'s lines on the zones: per medium a and b, where the Forchheimer term takes
+/// over (u = a/b and its grain Reynolds number), a Δt at the fluid step `dt` [s], and what is
+/// modelled. Consecutive zones of one medium (a breakwater's core in steps under its slope)
+/// share one line. `nu` is the water's kinematic viscosity [m² s⁻¹], `speed` the velocity
+/// scale [m s⁻¹] (0 at rest).
 pub(super) fn describe(zones: &[PorousZone], nu: f64, dt: f64, speed: f64) -> String {
+    use crate::scenario::text::vec4;
     use std::fmt::Write as _;
     let mut s = String::new();
     if zones.is_empty() {
@@ -117,7 +119,21 @@ pub(super) fn describe(zones: &[PorousZone], nu: f64, dt: f64, speed: f64) -> St
          where they overlap",
         zones.len()
     );
-    for (i, z) in zones.iter().enumerate() {
+    let medium = |z: &PorousZone| (z.porosity, z.grain_diameter, z.alpha, z.beta);
+    let mut first = 0;
+    for run in zones.chunk_by(|p, q| medium(p) == medium(q)) {
+        let (z, last) = (&run[0], first + run.len() - 1);
+        let boxes = match run {
+            [.., end] if run.len() > 1 => format!(
+                "zones {first} to {last} (one medium): {} to {} m, …, {} to {} m",
+                vec4(z.min),
+                vec4(z.max),
+                vec4(end.min),
+                vec4(end.max)
+            ),
+            _ => format!("zone {first}: {} to {} m", vec4(z.min), vec4(z.max)),
+        };
+        first = last + 1;
         let (a, b) = (z.linear(nu), z.quadratic());
         let regime = if speed > 0.0 {
             let re = speed * z.grain_diameter / nu;
@@ -136,11 +152,9 @@ pub(super) fn describe(zones: &[PorousZone], nu: f64, dt: f64, speed: f64) -> St
         };
         let _ = writeln!(
             s,
-            "  zone {i}: {} to {} m, n = {}, D50 = {:.4e} m, α = {}, β = {}: a = α (1−n)²/n³ ν/D50² \
+            "  {boxes}, n = {}, D50 = {:.4e} m, α = {}, β = {}: a = α (1−n)²/n³ ν/D50² \
              = {a:.4e} 1/s, b = β (1−n)/n³ /D50 = {b:.4e} 1/m; b|u| passes a above u = a/b = \
              {:.4e} m/s (Re = u D50/ν = α (1−n)/β = {:.4e}); a Δt_f = {:.4e}{regime}",
-            z.min,
-            z.max,
             z.porosity,
             z.grain_diameter,
             z.alpha,

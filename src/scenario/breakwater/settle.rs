@@ -1,0 +1,107 @@
+//! `settle_time`: the armour layer settled dry before the run, as a laboratory builds its mound
+//! in the empty flume and then fills it.
+//!
+//! Units dropped `gap` clear of each other form a loose heap that compacts under gravity: its
+//! top units come down about a D_n (tests/breakwater.rs). Settled inside the flow, that costs
+//! the run its most expensive steps (stones falling through the air push it between them at
+//! several m/s, and the flow's step follows: 0.15 ms in the lab example's first 0.1 s) and puts
+//! the settling into the damage unless the reference time comes after it. Settled here, with
+//! the DEM alone (the scenario's walls, materials and time step, the armour units and nothing
+//! else), the run starts from the heap as it came to rest, its velocities zeroed.
+//!
+//! Buoyancy does not unsettle what settled dry: it scales the weight and every normal contact
+//! force alike, so a heap held by friction dry is held under water.
+
+use super::super::schema::{BlockEntry, BlockSet, ListBlocks, OutputSection, WallSection};
+use super::super::{build, ScenarioError, Source};
+
+/// What the dry settling did, for `riprap check`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settled {
+    /// Settling time [s] (the DEM steps to it within half a step).
+    pub time: f64,
+    /// DEM steps taken.
+    pub steps: u64,
+    /// The largest displacement of a unit's centre [m].
+    pub largest_move: f64,
+    /// The mean displacement of a unit's centre [m].
+    pub mean_move: f64,
+    /// The units' kinetic energy at the end, zeroed for the run [J].
+    pub kinetic_energy: f64,
+    /// The deepest contact left, overlap over the smaller radius [-]: the run starts with the
+    /// heap's contacts pressed as they came to rest, which the initial checks allow for these
+    /// units (`allowed_overlap`).
+    pub max_overlap_ratio: f64,
+}
+
+impl Settled {
+    /// The overlap over the smaller radius the initial checks allow the settled units [-]:
+    /// what the settling left, with 10 % for the last step's drift.
+    pub fn allowed_overlap(&self) -> f64 {
+        1.1 * self.max_overlap_ratio
+    }
+}
+
+/// Settles `units` (the armour list) dry for `time` [s] on the scenario's walls and `walls`
+/// (the section's planes); returns them moved and at rest. `key` names the setting in errors.
+pub(super) fn settle(
+    src: &Source,
+    units: &ListBlocks,
+    walls: &[WallSection],
+    time: f64,
+    key: &str,
+) -> Result<(ListBlocks, Settled), ScenarioError> {
+    let mut sc = src.scenario.clone();
+    sc.run.end_time = time;
+    sc.walls.extend(walls.iter().cloned());
+    sc.blocks = vec![BlockSet::List(units.clone())];
+    sc.spheres.clear();
+    sc.wires.clear();
+    sc.bonds.clear();
+    sc.fluid = None;
+    sc.coupling = None;
+    sc.armour = None;
+    sc.breakwater = None;
+    sc.output = OutputSection::default();
+    let dry = Source {
+        scenario: sc,
+        text: src.text.clone(),
+        file: src.file.clone(),
+        dir: src.dir.clone(),
+        breakwater: None,
+    };
+    let mut sim = build(&dry)?.simulation;
+    let start = sim.rigid.blocks.centre.clone();
+    while !sim.reached(time) {
+        sim.step_towards(time)
+            .map_err(|e| src.invalid(key, format!("the dry settling failed: {e}")))?;
+    }
+    let b = &sim.rigid.blocks;
+    let domain = sim.dem.domain;
+    let moves: Vec<f64> = start
+        .iter()
+        .zip(&b.centre)
+        .map(|(&c0, &c)| domain.minimum_image(c - c0).length())
+        .collect();
+    let settled = Settled {
+        time,
+        steps: sim.step,
+        largest_move: moves.iter().fold(0.0f64, |m, &d| m.max(d)),
+        mean_move: moves.iter().sum::<f64>() / moves.len().max(1) as f64,
+        kinetic_energy: b.kinetic_energy(),
+        max_overlap_ratio: sim.dem.stats.max_overlap_ratio,
+    };
+    let blocks = (0..b.centre.len())
+        .map(|k| BlockEntry {
+            position: b.centre[k].to_array(),
+            rotation: b.orientation[k].to_scaled_axis().to_array(),
+            velocity: [0.0; 3],
+            angular_velocity: [0.0; 3],
+        })
+        .collect();
+    let list = ListBlocks {
+        template: units.template.clone(),
+        blocks,
+    };
+    Ok((list, settled))
+}
