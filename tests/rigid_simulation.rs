@@ -6,6 +6,7 @@
 mod common;
 
 use common::*;
+use riprap::dem::domain::Domain;
 use riprap::dem::material::{ContactModel, Damping, NormalSpring};
 use riprap::dem::Dem;
 use riprap::math::{Quat, Vec3};
@@ -369,4 +370,66 @@ fn blocks_are_bitwise_identical_on_one_and_two_threads() {
     };
     assert!(a.dem.stats.pair_contacts > 0, "the blocks touch");
     assert_eq!(bits(&a), bits(&b));
+}
+
+/// Regression: a wire whose ends lie either side of a periodic face pulled the block at its
+/// second end with the lever arm from the block's centre to the end's image, a domain width
+/// long, so a wire tied centre to centre spun that block (and a wired armour layer on a
+/// periodic flume section blew up within 0.06 s). Two cubes floating free (no gravity, no
+/// walls) 5 cm apart across the periodic face y = ±0.1 m (3 cm apart in x, 4 cm in y), tied
+/// centre to centre by a wire stretched 1 mm: the wire pulls them together along itself, with
+/// no spin (ω stays 0 to round-off) and equal and opposite momenta.
+#[test]
+fn a_wire_across_a_periodic_face_pulls_without_spinning_its_blocks() {
+    let t = library::cube(2).with_nominal_diameter(0.02);
+    let (mut dem, mut rigid) = setup(0.5, 0.3, 0.0, 1e-5, vec![t]);
+    dem.walls.clear();
+    dem.gravity = Vec3::ZERO;
+    dem.domain = Domain {
+        min: Vec3::new(-1.0, -0.1, -1.0),
+        max: Vec3::new(1.0, 0.1, 1.0),
+        periodic: [false, true, false],
+    };
+    let a = add(
+        &mut dem,
+        &mut rigid,
+        0,
+        RigidState::at_rest(Vec3::new(0.0, 0.08, 0.0), Quat::IDENTITY),
+    );
+    let b = add(
+        &mut dem,
+        &mut rigid,
+        0,
+        RigidState::at_rest(Vec3::new(0.03, -0.08, 0.0), Quat::IDENTITY),
+    );
+    let wire = Wire {
+        slack_length: 0.049,
+        stiffness: 1.0e3,
+        damping: 0.0,
+        breaking_force: f64::INFINITY,
+    };
+    let centre = |block| LinkEnd::Block {
+        block,
+        point: Vec3::ZERO,
+    };
+    rigid
+        .wires
+        .push(WireLink::new(wire, [centre(a), centre(b)]));
+    let mut sim = Simulation::with_bodies(dem, vec![], rigid, 1e-3);
+    for _ in 0..200 {
+        sim.step().expect("stable");
+    }
+    let r = &sim.rigid.blocks;
+    let spin = r
+        .angular_velocity
+        .iter()
+        .fold(0.0f64, |m, w| m.max(w.length()));
+    let (va, vb) = (r.velocity[0], r.velocity[1]);
+    eprintln!("after 2 ms: v_a {va:?}, v_b {vb:?}, largest spin {spin:e} rad/s");
+    // Pulled across the face along the wire, (0.03, 0.04, 0) from a to b's image: a towards
+    // +x +y, b the other way.
+    assert!(va.x > 1e-3 && va.y > 1e-3 && vb.y < -1e-3, "{va:?} {vb:?}");
+    assert!((va.x / va.y - 0.75).abs() < 1e-9, "{va:?}");
+    assert!((va + vb).length() < 1e-12 * va.length());
+    assert!(spin < 1e-9 * va.length() / 0.02, "spin {spin:e} rad/s");
 }

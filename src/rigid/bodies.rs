@@ -259,6 +259,10 @@ impl RigidBodies {
             if !present {
                 continue; // a block of this wire has left the domain
             }
+            // Each end's lever arm about its own block's centre, taken before the shift below:
+            // an end moved to its periodic image is a domain width from its block's centre.
+            let arms =
+                [0, 1].map(|e| on[e].map_or(Vec3::ZERO, |(_, st)| anchors[e].position - st.centre));
             // Both ends as nearest images of each other across periodic faces.
             anchors[1].position = anchors[0].position
                 + domain.minimum_image(anchors[1].position - anchors[0].position);
@@ -278,8 +282,8 @@ impl RigidBodies {
                 continue;
             }
             for (e, sign) in [(0, 1.0), (1, -1.0)] {
-                if let Some((b, st)) = on[e] {
-                    self.push_on_block(b, s, sign * f, anchors[e].position - st.centre);
+                if let Some((b, _)) = on[e] {
+                    self.push_on_block(b, s, sign * f, arms[e]);
                 }
             }
         }

@@ -36,6 +36,8 @@
 //! #                          # (default 2 t_a; they settle from there)
 //! max_tilt = 20.0            # random: tilt from lying flat on the slope [deg] (default 180)
 //! settle_time = 1.0          # settled dry for 1 s before the run, the DEM alone [s] (`settle`)
+//! wires = { stiffness = 2.0e4, slack = 0.0 }   # optional: each unit tied to its three nearest
+//! # neighbours up the slope, the top ones to the crest (`wires`); damping, breaking_force
 //! ```
 //!
 //! Packing density (Rock Manual, CIRIA/CUR/CETMEF 2007, §3.5.1; SPM 1984 §7-III Eqs. 7-120,
@@ -49,6 +51,7 @@
 mod placement;
 mod profile;
 mod settle;
+mod wires;
 
 use super::armour::ArmourSection;
 use super::blocks::template;
@@ -58,14 +61,16 @@ use super::text::sig4;
 use super::{ScenarioError, Source};
 use crate::armour::design::ArmourUnit;
 use crate::armour::slope::Slope;
+use crate::math::Vec3;
 use crate::rigid::templates::BlockTemplate;
 
 pub use super::mound::{
-    ArmourUnits, BreakwaterSection, CrownWall, FilterLayer, Placement, PorousLayer,
+    ArmourUnits, ArmourWires, BreakwaterSection, CrownWall, FilterLayer, Placement, PorousLayer,
 };
 pub use placement::{Placed, Shortfall, Unit, UnitLayer, MAX_TRIES_PER_UNIT};
 pub use profile::{porous_steps, Profile};
 pub use settle::Settled;
+pub use wires::{Linked, PER_UNIT, REACH};
 
 /// cot of the armour heap's seaward face at the toe (random placement): the face runs down
 /// from the top of the release zone over the toe to the bed, and units in front of the toe,
@@ -116,6 +121,8 @@ pub struct BreakwaterSummary {
     pub set: usize,
     /// What the dry settling did (`settle_time`).
     pub settled: Option<Settled>,
+    /// How the units were linked (`wires`).
+    pub linked: Option<Linked>,
 }
 
 impl BreakwaterSummary {
@@ -153,6 +160,14 @@ impl BreakwaterSummary {
         }
         if self.crown_wall {
             s.push_str("  crown wall: obstacle `crown_wall` (obstacle_crown_wall.csv)\n");
+        }
+        if let Some(l) = self.linked {
+            s.push_str(&format!(
+                "  wires: {} between units (each to its {PER_UNIT} nearest neighbours up the \
+                 slope within {REACH} D_n, centre to centre), {} from the top units (none up the \
+                 slope) to the crest; fitted as the run starts, to wires.csv\n",
+                l.between, l.to_crest
+            ));
         }
         if self.armour_defaulted {
             s.push_str("  [armour] from [breakwater]: toe, slope, D_n, t_a and crest\n");
@@ -241,7 +256,27 @@ pub(super) fn expand(src: &mut Source) -> Result<Option<BreakwaterSummary>, Scen
         e.blocks = BlockSet::List(units);
         e.summary.settled = Some(settled);
     }
+    let mut wires = Vec::new();
+    if let Some(w) = &b.armour.wires {
+        let BlockSet::List(units) = &e.blocks else {
+            unreachable!("the section places its units as a list")
+        };
+        let first = ids_before(src)?;
+        let (_, slope) = profile_of(src, &b)?;
+        let length = (b.crest_level - slope.toe_z) / slope.cos_sin().1;
+        let centres: Vec<Vec3> = units
+            .blocks
+            .iter()
+            .map(|u| Vec3::from(u.position))
+            .collect();
+        let periodic = src.scenario.domain.periodic[1];
+        let d_n = e.armour.as_ref().map_or(0.0, |a| a.nominal_diameter);
+        let (w, linked) = wires::link(src, w, (&slope, length, periodic), &centres, (first, d_n))?;
+        wires = w;
+        e.summary.linked = Some(linked);
+    }
     let sc = &mut src.scenario;
+    sc.wires.extend(wires);
     sc.walls.extend(e.walls);
     sc.blocks.push(e.blocks);
     if let Some(f) = sc.fluid.as_mut() {
@@ -252,6 +287,27 @@ pub(super) fn expand(src: &mut Source) -> Result<Option<BreakwaterSummary>, Scen
         sc.armour = e.armour;
     }
     Ok(Some(e.summary))
+}
+
+/// The id of the section's first unit: blocks are numbered in the order they are defined, and
+/// the section's come after the scenario's own `[[blocks]]`, which must then be lists.
+fn ids_before(src: &Source) -> Result<u32, ScenarioError> {
+    let mut n = 0;
+    for (i, set) in src.scenario.blocks.iter().enumerate() {
+        match set {
+            BlockSet::List(l) => n += l.blocks.len() as u32,
+            _ => {
+                return Err(src.invalid(
+                    "breakwater.armour.wires",
+                    format!(
+                        "the wires need the units' block ids, which follow the scenario's own \
+                         blocks: blocks[{i}] is not a list; give it as a list or drop the wires"
+                    ),
+                ))
+            }
+        }
+    }
+    Ok(n)
 }
 
 /// The profile checked: (profile, slope frame).
@@ -489,6 +545,7 @@ fn expansion(src: &Source, b: &BreakwaterSection) -> Result<Expansion, ScenarioE
         crown_wall: crown.is_some(),
         set: src.scenario.blocks.len(),
         settled: None,
+        linked: None,
     };
     Ok(Expansion {
         walls,

@@ -122,4 +122,21 @@ pub struct ArmourUnits {
     /// DEM alone, as a laboratory builds its mound before it fills the flume [s] (default: none,
     /// the units settle in the run).
     pub settle_time: Option<f64>,
+    /// Wires linking each unit to its nearest neighbours up the slope, and the top units to
+    /// the crest (default: none).
+    pub wires: Option<ArmourWires>,
+}
+
+/// `[breakwater.armour] wires`: the links of a wire-linked armour layer.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ArmourWires {
+    /// Axial stiffness E A / l₀ of each wire [N m⁻¹].
+    pub stiffness: f64,
+    /// Damping of the stretching [N s m⁻¹] (default 0).
+    pub damping: Option<f64>,
+    /// Breaking force [N] (default: unbreakable).
+    pub breaking_force: Option<f64>,
+    /// Slack: each wire becomes taut this much beyond its initial length [m] (default 0).
+    pub slack: Option<f64>,
 }
