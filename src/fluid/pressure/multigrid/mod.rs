@@ -46,8 +46,9 @@
 //! place and makes both colours in one pass over the planes ([`sweep`]); along a row every
 //! cell is computed in short vectorised runs and those of the colour kept. Both give the bits
 //! of the plain half-sweeps, which the other levels still make; on the lab-scale armour
-//! example (`examples/armour_lab.toml`, 546,480 cells) the step took 0.71 times as long
-//! (2026-12-07, 1 thread, with the flume's column-wise wave targets, `super::super::flume`).
+//! example (`examples/armour_lab.toml` as it was then, 546,480 cells) the step took 0.71
+//! times as long (2026-12-07, 1 thread, with the flume's column-wise wave targets,
+//! `super::super::flume`).
 //!
 //! Alternatives: deflation with piecewise-constant subdomain vectors (Tang & Vuik 2007, for
 //! bubbly flows at a density ratio of 1000) is this method's two-level form with the coarse
