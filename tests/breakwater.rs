@@ -113,7 +113,7 @@ fn random_placement_reaches_the_target_count_and_check_reports_it() {
         "porous zones: 28 core and 0 filter boxes",
         "crown wall",
         "armour: slope 1:2",
-        "displacement_reference_time = 1 s",
+        "settled dry before the run (settle_time): 1 s, 6666 DEM steps",
     ] {
         assert!(report.contains(needle), "no `{needle}` in\n{report}");
     }
@@ -169,6 +169,18 @@ fn bad_input_names_the_key_and_the_reason() {
             "slope = -2.0 ",
             "breakwater.slope",
             "positive",
+        ),
+        (
+            "# wires = { stiffness = 2.0e4 }",
+            "wires = { stiffness = -2.0e4 }",
+            "breakwater.armour.wires.stiffness",
+            "positive",
+        ),
+        (
+            "# wires = { stiffness = 2.0e4 }",
+            "wires = { stiffness = 2.0e4, slack = -0.01 }",
+            "breakwater.armour.wires.slack",
+            "zero or positive",
         ),
         (
             "crest_level = 0.28",
@@ -243,12 +255,17 @@ fn armour_is_taken_from_the_breakwater_unless_given() {
     assert!(!src.breakwater.as_ref().unwrap().armour_defaulted);
 }
 
-/// The example without the water (and so without the crown wall): the DEM alone.
+/// The example without the water (and so without the crown wall), its units as placed (not
+/// settled): the DEM alone.
 fn dry(end: f64) -> String {
     let i = EXAMPLE.find("\n[coupling]").unwrap();
     let j = EXAMPLE.find("\n[output]").unwrap();
     let text = format!("{}{}", &EXAMPLE[..i], &EXAMPLE[j..]);
-    text.replace("end_time = 6.4 ", &format!("end_time = {end} "))
+    const SETTLE: &str =
+        "settle_time = 1.0              # s: settled dry, the DEM alone, before the flume fills\n";
+    assert!(text.contains(SETTLE));
+    text.replace(SETTLE, "")
+        .replace("end_time = 6.4 ", &format!("end_time = {end} "))
         .replace(
             "crown_wall = { height = 0.06, width = 0.04, offset = 0.1 }",
             "",

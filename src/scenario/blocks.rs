@@ -1,7 +1,6 @@
 //! Rigid blocks of a scenario: templates, block sets (list, lattice, random drop), wires and
 //! bonds, with the checks on where blocks start.
 
-use super::breakwater::settled_overlap;
 use super::checks::{finite, material_of, non_negative, positive};
 use super::schema::{
     v3, BlockSet, BlockTemplateSection, BondBetween, LatticeBlocks, ListBlocks, RandomBlocks,
@@ -390,7 +389,9 @@ fn check_block_overlaps(
         let d = domain.minimum_image(s.position[j] - s.position[i]).length();
         let overlap = s.radius[i] + s.radius[j] - d;
         // Touching is fine; a layer settled dry starts with its contacts pressed.
-        let settled = settled_overlap(src, &origin[i]).min(settled_overlap(src, &origin[j]));
+        let settled = src
+            .settled_overlap(&origin[i])
+            .min(src.settled_overlap(&origin[j]));
         if overlap
             > (1e-9 * (s.radius[i] + s.radius[j])).max(settled * s.radius[i].min(s.radius[j]))
         {

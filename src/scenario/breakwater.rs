@@ -215,20 +215,6 @@ impl BreakwaterSummary {
     }
 }
 
-/// The overlap over the smaller radius a sphere from `origin` (a key path) may start with
-/// when it is a member of the section's units settled dry ([`Settled::allowed_overlap`]); 0
-/// otherwise.
-pub(super) fn settled_overlap(src: &Source, origin: &str) -> f64 {
-    match &src.breakwater {
-        Some(BreakwaterSummary {
-            set,
-            settled: Some(s),
-            ..
-        }) if origin.starts_with(&format!("blocks[{set}]")) => s.allowed_overlap(),
-        _ => 0.0,
-    }
-}
-
 /// What the section adds to the scenario.
 struct Expansion {
     walls: Vec<WallSection>,

@@ -15,7 +15,7 @@ use crate::geometry::ContactBuf;
 /// sphere pairs: touching is fine), and for a breakwater's units settled dry what the settling
 /// left.
 fn allowed_ratio(src: &Source, origin: &str) -> f64 {
-    let settled = super::breakwater::settled_overlap(src, origin);
+    let settled = src.settled_overlap(origin);
     if settled > 0.0 {
         return 0.5 * settled;
     }

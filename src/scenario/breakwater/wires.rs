@@ -11,6 +11,7 @@
 //! (after `settle_time`), each taut at its initial length plus `slack`; they are ordinary
 //! `[[wire]]`s (tension only, `wires.csv`, the damage report's wire section).
 
+use super::super::checks::{non_negative, positive};
 use super::super::schema::{WireEndSection, WireSection};
 use super::super::{ScenarioError, Source};
 use super::ArmourWires;
@@ -47,31 +48,14 @@ pub(super) fn link(
     centres: &[Vec3],
     (first, d_n): (u32, f64),
 ) -> Result<(Vec<WireSection>, Linked), ScenarioError> {
-    let key = "breakwater.armour.wires";
-    let positive = |k: &str, v: f64| {
-        if v.is_finite() && v > 0.0 {
-            Ok(v)
-        } else {
-            Err(src.invalid(
-                &format!("{key}.{k}"),
-                format!("must be a positive number, got {v}"),
-            ))
-        }
+    let key = |k: &str| format!("breakwater.armour.wires.{k}");
+    let stiffness = positive(src, &key("stiffness"), w.stiffness)?;
+    let breaking_force = match w.breaking_force {
+        Some(f) => Some(positive(src, &key("breaking_force"), f)?),
+        None => None,
     };
-    let stiffness = positive("stiffness", w.stiffness)?;
-    let breaking_force = w
-        .breaking_force
-        .map(|f| positive("breaking_force", f))
-        .transpose()?;
-    let non_negative = |k: &str, v: Option<f64>| match v {
-        Some(v) if !(v.is_finite() && v >= 0.0) => Err(src.invalid(
-            &format!("{key}.{k}"),
-            format!("must be zero or positive, got {v}"),
-        )),
-        v => Ok(v.unwrap_or(0.0)),
-    };
-    let damping = non_negative("damping", w.damping)?;
-    let slack = non_negative("slack", w.slack)?;
+    let damping = non_negative(src, &key("damping"), w.damping.unwrap_or(0.0))?;
+    let slack = non_negative(src, &key("slack"), w.slack.unwrap_or(0.0))?;
     // (s, y, η) of each centre.
     let at: Vec<(f64, f64, f64)> = centres
         .iter()
