@@ -43,7 +43,7 @@ use crate::io::vtk::{write_points, write_surface, Array, Format};
 use crate::scenario::schema::{OutputKind, OutputSection};
 use crate::scenario::{build, Source};
 use crate::simulation::Simulation;
-use armour::ArmourOutput;
+use armour::{ArmourOutput, Ending};
 use fingerprint::Fingerprint;
 use flow::FlowOutput;
 use progress::Progress;
@@ -372,6 +372,10 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             let _ = write_spheres(&sim, &out.join("spheres_failed.vtu"), format);
             let _ = frames.blocks.write(&sim, &out);
             flow::write_failed(&sim, &out, format);
+            if let Some(a) = &mut armour {
+                // The damage up to the failure, marked as such.
+                let _ = a.finish(&sim, kinds.plots, Ending::Unstable);
+            }
             if let Some(p) = &progress {
                 p.abandon();
             }
@@ -432,11 +436,13 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
             }
         }
         if let Some(a) = &mut armour {
-            a.finish(&sim, kinds.plots, false).context(ARMOUR)?;
+            a.finish(&sim, kinds.plots, Ending::Complete)
+                .context(ARMOUR)?;
         }
     } else if let Some(a) = &mut armour {
         // The damage so far: what an engineer stopping a long sea wants to look at.
-        a.finish(&sim, kinds.plots, true).context(ARMOUR)?;
+        a.finish(&sim, kinds.plots, Ending::Interrupted)
+            .context(ARMOUR)?;
     }
     if kinds.plots && particles {
         plot_energy(&out)

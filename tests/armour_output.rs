@@ -295,6 +295,29 @@ fn a_signal_leaves_the_damage_so_far_and_the_restart_the_same_rows() {
     assert!(!md.contains("interrupted"), "{md}");
 }
 
+/// A run stopped unstable writes the damage report up to the failure, marked as such (nothing
+/// is lost), and adds no row. Here the speed limit is set below the moving stone's 1 m/s, so
+/// that the run stops at its first step.
+#[test]
+fn a_run_stopped_unstable_leaves_the_damage_report_so_far() {
+    let src = scenario(true, false, "");
+    let text = src.text.replace(
+        "reference_velocity = 1.0\n",
+        "reference_velocity = 1.0\nmax_speed = 0.5\n",
+    );
+    let src = Source::from_str(&text, "case.toml", PathBuf::from(".")).unwrap();
+    let dir = temp_dir("unstable");
+    let e = execute(&src, &opts(&dir, None, None))
+        .err()
+        .expect("the run should stop unstable");
+    assert!(e.to_string().contains("unstable"), "{e}");
+    let md = std::fs::read_to_string(dir.join("armour_report.md")).unwrap();
+    assert!(md.contains("The run stopped unstable at t ="), "{md}");
+    assert!(md.contains("units moved more than 0.1 D_n"), "{md}");
+    let (_, rows) = read(&dir.join("armour.csv"));
+    assert_eq!(rows.len(), 1, "only the start's row");
+}
+
 /// The error for `[armour]` edited by `edit` (or the scenario without blocks), checked to name
 /// the file, the line of `marker`, the key and the reason.
 #[track_caller]

@@ -48,6 +48,7 @@ pub mod report;
 use crate::armour::damage::unit_movement;
 use crate::armour::design::ArmourUnit;
 use figures::MapUnit;
+pub use report::Ending;
 use report::{DamageRow, Incident, Report, ReportContext, Section};
 
 /// The bookkeeping of `[armour]` in a run, and its files.
@@ -203,21 +204,16 @@ impl ArmourOutput {
     }
 
     /// At the end of a run: the last row (unless written at this step), armour_profile.csv,
-    /// armour_units.csv, armour_report.md and, with `plots`, its figures. A run `interrupted`
+    /// armour_units.csv, armour_report.md and, with `plots`, its figures. A run interrupted
     /// by a signal writes them as they stand but adds no row: its restart writes the rows
-    /// where an uninterrupted run would.
-    pub fn finish(
-        &mut self,
-        sim: &Simulation,
-        plots: bool,
-        interrupted: bool,
-    ) -> anyhow::Result<()> {
+    /// where an uninterrupted run would; so does a run stopped unstable.
+    pub fn finish(&mut self, sim: &Simulation, plots: bool, ending: Ending) -> anyhow::Result<()> {
         let Some(st) = &self.state else {
             return Ok(());
         };
         let before = st.before.clone();
         let t_ref = st.reference_time;
-        if self.last_row != Some(sim.step) && !interrupted {
+        if self.last_row != Some(sim.step) && ending == Ending::Complete {
             self.row(sim)?;
         }
         let after = self.profile(sim);
@@ -265,7 +261,7 @@ impl ArmourOutput {
                 figures: plots,
                 cost: self.cost(sim.time),
                 wires: &sim.rigid.wires,
-                interrupted,
+                ending,
             },
         )
         .context("cannot write armour_report.md")?;

@@ -292,8 +292,19 @@ pub struct Report<'a> {
     pub cost: Option<(f64, usize)>,
     /// The wires between units, with the tensions they carried.
     pub wires: &'a [WireLink],
-    /// Whether the run was interrupted (a signal) before its end: the report covers it so far.
-    pub interrupted: bool,
+    /// How the run ended: the report covers it so far unless it is complete.
+    pub ending: Ending,
+}
+
+/// How a run ended, for the damage report.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ending {
+    /// At its end time.
+    Complete,
+    /// Stopped by a signal; a restart from its checkpoint continues it.
+    Interrupted,
+    /// Stopped unstable (the run's message says why).
+    Unstable,
 }
 
 /// Writes `armour_report.md` in `out`.
@@ -313,13 +324,25 @@ pub fn markdown(r: &Report) -> String {
          t = {:.3} s.\n",
         s.times.0, s.times.1
     );
-    if r.interrupted {
-        let _ = writeln!(
-            m,
-            "**The run was interrupted at t = {:.3} s**: this report covers it so far. A \
-             restart from its checkpoint continues it and writes the report again at its end.\n",
-            s.times.1
-        );
+    match r.ending {
+        Ending::Complete => {}
+        Ending::Interrupted => {
+            let _ = writeln!(
+                m,
+                "**The run was interrupted at t = {:.3} s**: this report covers it so far. A \
+                 restart from its checkpoint continues it and writes the report again at its \
+                 end.\n",
+                s.times.1
+            );
+        }
+        Ending::Unstable => {
+            let _ = writeln!(
+                m,
+                "**The run stopped unstable at t = {:.3} s** (its message says what was seen): \
+                 this report covers it up to there.\n",
+                s.times.1
+            );
+        }
     }
     structure_section(&mut m, r);
     if let Some(inc) = r.incident {
@@ -797,7 +820,7 @@ mod tests {
             figures: true,
             cost: Some((96.0, 1)),
             wires: &[wire],
-            interrupted: false,
+            ending: Ending::Complete,
         });
         for s in [
             "## The structure",
