@@ -307,9 +307,7 @@ fn a_run_stopped_unstable_leaves_the_damage_report_so_far() {
     );
     let src = Source::from_str(&text, "case.toml", PathBuf::from(".")).unwrap();
     let dir = temp_dir("unstable");
-    let e = execute(&src, &opts(&dir, None, None))
-        .err()
-        .expect("the run should stop unstable");
+    let e = execute(&src, &opts(&dir, None, None)).expect_err("the run should stop unstable");
     assert!(e.to_string().contains("unstable"), "{e}");
     let md = std::fs::read_to_string(dir.join("armour_report.md")).unwrap();
     assert!(md.contains("The run stopped unstable at t ="), "{md}");
