@@ -465,7 +465,10 @@ fn wires_hold_a_layer_that_would_slide() {
     );
     let (src, held) = slippery(&wired);
     let l = src.breakwater.as_ref().unwrap().linked.unwrap();
-    eprintln!("wires {l:?}: the median unit's move from 0.3 to 0.6 s {held:.3e} m wired, {free:.3e} m free");
+    eprintln!(
+        "wires {l:?}: the median unit's move from 0.3 to 0.6 s {held:.3e} m wired, \
+         {free:.3e} m free"
+    );
     assert!(l.to_crest > 0 && l.between > 89, "{l:?}");
     assert_eq!(src.scenario.wires.len(), l.between + l.to_crest);
     let report = check(&src).unwrap().report();

@@ -7,9 +7,9 @@
 //! the top of the layer and is tied to a fixed point on the crest line, at its own height
 //! above the plane and its own y: the mat hangs from the crest, every chain of wires ending
 //! there. (A random layer settles down the slope and leaves the top D_n or two of the plane
-//! bare, so the top units' wires can be longer than REACH.) The wires are fitted to the units as they start the run
-//! (after `settle_time`), each taut at its initial length plus `slack`; they are ordinary
-//! `[[wire]]`s (tension only, `wires.csv`, the damage report's wire section).
+//! bare, so the top units' wires can be longer than REACH.) The wires are fitted to the units
+//! as they start the run (after `settle_time`), each taut at its initial length plus `slack`;
+//! they are ordinary `[[wire]]`s (tension only, `wires.csv`, the damage report's wire section).
 
 use super::super::checks::{non_negative, positive};
 use super::super::schema::{WireEndSection, WireSection};
