@@ -422,6 +422,57 @@ fn a_layer_settled_dry_starts_at_rest_and_stays() {
     );
 }
 
+/// Regression: the settled layer was written back with each block's orientation as the list's
+/// rotation, but a list's rotation turns the template's definition frame and the block's
+/// orientation is that times the template's principal axes, so a template whose principal
+/// axes are not its definition frame came back turned. A stone of three spheres on a diagonal
+/// (principal axes at 45° about z), settled dry for 0.2 s: the run starts with every member
+/// sphere where the same DEM, stepped 0.2 s from the placed layer, leaves it (to 1e-12 m).
+#[test]
+fn a_settled_layer_of_turned_templates_starts_as_it_settled() {
+    let text = dry(0.2).replace(
+        "    [ 0.25,  0.2, 0.0, 0.6],\n    [ 0.25, -0.2, 0.0, 0.6],\n    [-0.25,  0.2, 0.0, 0.6],\n    \
+         [-0.25, -0.2, 0.0, 0.6],\n",
+        "    [ 0.3,  0.3, 0.0, 0.6],\n    [ 0.0,  0.0, 0.0, 0.6],\n    [-0.3, -0.3, 0.0, 0.6],\n",
+    );
+    assert!(
+        text.contains("[ 0.0,  0.0, 0.0, 0.6]"),
+        "the template was not replaced"
+    );
+    let settled = text.replace(
+        "gap = 0.001                    # m: above the plane, and between stones\n",
+        "gap = 0.001\nsettle_time = 0.2\n",
+    );
+    let members = |sim: &riprap::simulation::Simulation| {
+        let s = &sim.dem.spheres;
+        let mut m: Vec<(u32, Vec3)> = (0..s.len()).map(|i| (s.id[i], s.position[i])).collect();
+        m.sort_by_key(|x| x.0);
+        m
+    };
+    let mut stepped = build(&source(&text).unwrap()).unwrap().simulation;
+    assert!(
+        stepped.rigid.templates[0]
+            .principal_axes
+            .angle_between(riprap::math::Quat::IDENTITY)
+            > 0.1
+    );
+    while !stepped.reached(0.2) {
+        stepped.step_towards(0.2).unwrap();
+    }
+    let src = source(&settled).unwrap_or_else(|e| panic!("{e}"));
+    let start = build(&src).unwrap_or_else(|e| panic!("{e}")).simulation;
+    let (a, b) = (members(&stepped), members(&start));
+    assert_eq!(a.len(), b.len());
+    let worst = a
+        .iter()
+        .zip(&b)
+        .fold(0.0f64, |m, (x, y)| m.max((x.1 - y.1).length()));
+    assert!(
+        worst < 1e-12,
+        "a member starts {worst:e} m from where it settled"
+    );
+}
+
 /// `wires`: each unit tied to its three nearest neighbours up the slope and the top ones to
 /// the crest hold a layer that would slide. On a slope of nearly no friction (μ = 0.05 against
 /// tan α = 0.5) the dry layer, settled first on the example's friction, slides away unwired,

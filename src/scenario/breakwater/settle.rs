@@ -71,18 +71,12 @@ pub(super) fn settle(
         breakwater: None,
     };
     let mut sim = build(&dry)?.simulation;
-    let start = sim.rigid.blocks.centre.clone();
     while !sim.reached(time) {
         sim.step_towards(time)
             .map_err(|e| src.invalid(key, format!("the dry settling failed: {e}")))?;
     }
     let b = &sim.rigid.blocks;
-    let domain = sim.dem.domain;
-    let moves: Vec<f64> = start
-        .iter()
-        .zip(&b.centre)
-        .map(|(&c0, &c)| domain.minimum_image(c - c0).length())
-        .collect();
+    let moves: Vec<f64> = b.displacement.iter().map(|d| d.length()).collect();
     let settled = Settled {
         time,
         steps: sim.step,
@@ -91,10 +85,17 @@ pub(super) fn settle(
         kinetic_energy: b.kinetic_energy(),
         max_overlap_ratio: sim.dem.stats.max_overlap_ratio,
     };
+    // A list's rotation turns the template's definition frame; the block's orientation is
+    // that times the template's principal axes (Q = Q_def · principal_axes).
     let blocks = (0..b.centre.len())
         .map(|k| BlockEntry {
             position: b.centre[k].to_array(),
-            rotation: b.orientation[k].to_scaled_axis().to_array(),
+            rotation: {
+                let axes = sim.rigid.templates[b.template[k] as usize].principal_axes;
+                (b.orientation[k] * axes.inverse())
+                    .to_scaled_axis()
+                    .to_array()
+            },
             velocity: [0.0; 3],
             angular_velocity: [0.0; 3],
         })
