@@ -274,6 +274,32 @@ fn a_block_whose_members_overlap_the_floor_is_refused() {
     );
 }
 
+/// A list of blocks may start with its contacts pressed by up to its `max_overlap_ratio` of the
+/// smaller member's diameter (a layer written from a settled heap), and no deeper; without it
+/// touching is the limit.
+#[test]
+fn a_list_of_blocks_accepts_the_overlap_it_states() {
+    let pair = |setting: &str| {
+        format!(
+            "\n[[blocks]]\nkind = \"list\"\ntemplate = \"tetrapod\"\n{setting}\nblocks = [\n \
+             {{ position = [0.2, 0.2, 0.2] }},\n {{ position = [0.218, 0.2, 0.2] }}, # here\n]\n"
+        )
+    };
+    build(&source(&format!(
+        "{BASE}{}",
+        pair("max_overlap_ratio = 0.15")
+    )))
+    .unwrap_or_else(|e| panic!("0.15 of the diameter accepted: {e}"));
+    let key = "blocks[0].blocks[1]";
+    refused(&pair(""), "# here", key, &["blocks start overlapping"]);
+    refused(
+        &pair("max_overlap_ratio = 0.05"),
+        "# here",
+        key,
+        &["blocks start overlapping", "its max_overlap_ratio accepts"],
+    );
+}
+
 /// Block displacements used to count from placement only, so the settling of a freshly placed
 /// armour layer showed as damage. With `[output] displacement_reference_time` they count from
 /// the first step at that time: zero there, the motion since then after it, the placement

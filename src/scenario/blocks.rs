@@ -178,6 +178,8 @@ pub(super) fn build_blocks(
     let first_member = spheres.len();
     // What each new sphere is, for messages.
     let mut names_of: Vec<String> = vec![String::new(); spheres.len()];
+    // The start overlap each sphere's set accepts, relative to the smaller diameter.
+    let mut accepts = vec![0.0; spheres.len()];
     for (i, set) in sc.blocks.iter().enumerate() {
         let key = format!("blocks[{i}]");
         let name = match set {
@@ -336,6 +338,14 @@ pub(super) fn build_blocks(
             }
         }
         let is_list = matches!(set, BlockSet::List(_));
+        let accepted = match set {
+            BlockSet::List(l) => non_negative(
+                src,
+                &format!("{key}.max_overlap_ratio"),
+                l.max_overlap_ratio,
+            )?,
+            _ => 0.0,
+        };
         for (k, s) in placed.into_iter().enumerate() {
             // The key path of a listed block, else the set's.
             let at = if is_list {
@@ -357,22 +367,31 @@ pub(super) fn build_blocks(
             rigid.add_block(spheres, t, material, density, s);
             origin.resize(spheres.len(), at);
             names_of.resize(spheres.len(), format!("block {k} of {key}"));
+            accepts.resize(spheres.len(), accepted);
         }
     }
-    check_block_overlaps(src, spheres, first_member, domain, origin, &names_of)?;
+    check_block_overlaps(
+        src,
+        spheres,
+        first_member,
+        domain,
+        origin,
+        (&names_of, &accepts),
+    )?;
     build_wires(src, &mut rigid, domain)?;
     build_bonds(src, &mut rigid, spheres, domain)?;
     Ok(rigid)
 }
 
-/// Refuses block members that overlap a sphere or a member of another block.
+/// Refuses block members that overlap a sphere or a member of another block by more than both
+/// sets accept (`accepts`, relative to the smaller diameter; touching is fine).
 fn check_block_overlaps(
     src: &Source,
     s: &Spheres,
     first: usize,
     domain: &Domain,
     origin: &[String],
-    names_of: &[String],
+    (names_of, accepts): (&[String], &[f64]),
 ) -> Result<(), ScenarioError> {
     let what = |k: usize| {
         if names_of[k].is_empty() {
@@ -388,21 +407,21 @@ fn check_block_overlaps(
         }
         let d = domain.minimum_image(s.position[j] - s.position[i]).length();
         let overlap = s.radius[i] + s.radius[j] - d;
-        // Touching is fine; a layer settled dry starts with its contacts pressed.
-        let settled = src
-            .settled_overlap(&origin[i])
-            .min(src.settled_overlap(&origin[j]));
-        if overlap
-            > (1e-9 * (s.radius[i] + s.radius[j])).max(settled * s.radius[i].min(s.radius[j]))
-        {
+        let accepted = accepts[i].min(accepts[j]) * 2.0 * s.radius[i].min(s.radius[j]);
+        if overlap > (1e-9 * (s.radius[i] + s.radius[j])).max(accepted) {
             return Err(src.invalid(
                 &origin[j],
                 format!(
-                    "blocks start overlapping: a sphere of {} overlaps {} by {:.3e} m; \
+                    "blocks start overlapping: a sphere of {} overlaps {} by {:.3e} m{}; \
                      space them further apart",
                     what(j),
                     what(i),
-                    overlap
+                    overlap,
+                    if accepted > 0.0 {
+                        format!(", more than the {accepted:.3e} m its max_overlap_ratio accepts")
+                    } else {
+                        String::new()
+                    }
                 ),
             ));
         }

@@ -117,8 +117,6 @@ pub struct BreakwaterSummary {
     pub fall: f64,
     /// A crown wall was made.
     pub crown_wall: bool,
-    /// The index of the units' `[[blocks]]` set.
-    pub set: usize,
     /// What the dry settling did (`settle_time`).
     pub settled: Option<Settled>,
     /// How the units were linked (`wires`).
@@ -492,6 +490,7 @@ fn expansion(src: &Source, b: &BreakwaterSection) -> Result<Expansion, ScenarioE
                 angular_velocity: [0.0; 3],
             })
             .collect(),
+        max_overlap_ratio: 0.0,
     });
     let armour = ArmourSection {
         toe: b.toe,
@@ -529,7 +528,6 @@ fn expansion(src: &Source, b: &BreakwaterSection) -> Result<Expansion, ScenarioE
         armour_defaulted: src.scenario.armour.is_none(),
         fall: n as f64 * gap,
         crown_wall: crown.is_some(),
-        set: src.scenario.blocks.len(),
         settled: None,
         linked: None,
     };

@@ -122,20 +122,6 @@ impl Source {
         Ok(src)
     }
 
-    /// The overlap over the smaller radius a sphere from `origin` (its key path) may start
-    /// with: what the dry settling left a `[breakwater]`'s units
-    /// ([`breakwater::Settled::allowed_overlap`]), 0 for every other sphere.
-    pub fn settled_overlap(&self, origin: &str) -> f64 {
-        match &self.breakwater {
-            Some(breakwater::BreakwaterSummary {
-                set,
-                settled: Some(s),
-                ..
-            }) if origin.starts_with(&format!("blocks[{set}].")) => s.allowed_overlap(),
-            _ => 0.0,
-        }
-    }
-
     /// An `Invalid` error for `key` (a dotted path such as `spheres[1].diameter`), at its line.
     pub fn invalid(&self, key: &str, reason: impl Into<String>) -> ScenarioError {
         self.invalid_at(key, key, reason)

@@ -706,6 +706,11 @@ pub struct ListBlocks {
     pub template: String,
     /// The blocks.
     pub blocks: Vec<BlockEntry>,
+    /// Largest overlap of a member with a member of another block or with a wall accepted at
+    /// the start, relative to the smaller diameter [–] (default 0: touching only; a layer
+    /// written from a settled heap holds its contacts' small overlaps, as `settle_time` writes).
+    #[serde(default)]
+    pub max_overlap_ratio: f64,
 }
 
 /// `kind = "lattice"`

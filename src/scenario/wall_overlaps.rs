@@ -2,7 +2,7 @@
 //! overlaps between spheres: a sphere that starts pressed into a wall is thrown out with a
 //! huge force at the first step, and the run then fails far from the cause.
 
-use super::schema::{FileSet, SphereSet};
+use super::schema::{BlockSet, SphereSet};
 use super::text::{sig4, vec4};
 use super::{ScenarioError, Source};
 use crate::dem::spheres::Spheres;
@@ -10,23 +10,23 @@ use crate::dem::walls::{Hits, Shape, Wall};
 use crate::geometry::ContactBuf;
 
 /// The overlap a sphere from `origin` may start with against a wall, as a fraction of its
-/// diameter: a file set's `max_overlap_ratio` (the tolerance of its sphere pairs, where the
-/// smaller diameter is the sphere's own), none for the other sets and for blocks (as for their
-/// sphere pairs: touching is fine), and for a breakwater's units settled dry what the settling
-/// left.
+/// diameter: its set's `max_overlap_ratio` (the tolerance of its sphere pairs, where the
+/// smaller diameter is the sphere's own) for a file of spheres or a list of blocks, none for
+/// the other sets (as for their sphere pairs: touching is fine).
 fn allowed_ratio(src: &Source, origin: &str) -> f64 {
-    let settled = src.settled_overlap(origin);
-    if settled > 0.0 {
-        return 0.5 * settled;
-    }
-    let set = origin
-        .strip_prefix("spheres[")
-        .and_then(|s| s.split(']').next())
-        .and_then(|i| i.parse::<usize>().ok());
-    match set.and_then(|i| src.scenario.spheres.get(i)) {
-        Some(SphereSet::File(FileSet {
-            max_overlap_ratio, ..
-        })) => *max_overlap_ratio,
+    let set = |prefix: &str| {
+        origin
+            .strip_prefix(prefix)
+            .and_then(|s| s.split(']').next())
+            .and_then(|i| i.parse::<usize>().ok())
+    };
+    let sc = &src.scenario;
+    match (
+        set("spheres[").and_then(|i| sc.spheres.get(i)),
+        set("blocks[").and_then(|i| sc.blocks.get(i)),
+    ) {
+        (Some(SphereSet::File(f)), _) => f.max_overlap_ratio,
+        (_, Some(BlockSet::List(l))) => l.max_overlap_ratio,
         _ => 0.0,
     }
 }

@@ -29,17 +29,10 @@ pub struct Settled {
     /// The units' kinetic energy at the end, zeroed for the run [J].
     pub kinetic_energy: f64,
     /// The deepest contact left, overlap over the smaller radius [-]: the run starts with the
-    /// heap's contacts pressed as they came to rest, which the initial checks allow for these
-    /// units (`allowed_overlap`).
+    /// heap's contacts pressed as they came to rest, which the list of units accepts
+    /// (its `max_overlap_ratio`, relative to the smaller diameter, with 10 % for the last
+    /// step's drift).
     pub max_overlap_ratio: f64,
-}
-
-impl Settled {
-    /// The overlap over the smaller radius the initial checks allow the settled units [-]:
-    /// what the settling left, with 10 % for the last step's drift.
-    pub fn allowed_overlap(&self) -> f64 {
-        1.1 * self.max_overlap_ratio
-    }
 }
 
 /// Settles `units` (the armour list) dry for `time` [s] on the scenario's walls and `walls`
@@ -103,6 +96,7 @@ pub(super) fn settle(
     let list = ListBlocks {
         template: units.template.clone(),
         blocks,
+        max_overlap_ratio: 1.1 * 0.5 * settled.max_overlap_ratio,
     };
     Ok((list, settled))
 }
