@@ -82,8 +82,8 @@ enum Command {
         #[arg(long)]
         resume: bool,
         /// The free-surface cases' momentum transport across the surface ([fluid.air]
-        /// momentum: exchange or weighted; default exchange).
-        #[arg(long, value_parser = ["weighted", "exchange"])]
+        /// momentum: upwind, exchange or weighted; default upwind).
+        #[arg(long, value_parser = ["weighted", "exchange", "upwind"])]
         momentum: Option<String>,
     },
     /// Validate a scenario and print the derived quantities (contact time, time step, ...).

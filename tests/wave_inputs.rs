@@ -501,11 +501,11 @@ fn an_irregular_sea_runs_with_its_significant_height() {
     assert!(corr > 0.9, "{corr}");
 }
 
-/// Regression: the default momentum transport changed (`"weighted"` to `"exchange"`,
-/// 2026-12-07). A scenario without the key means the new one, so the fluid's fingerprint
-/// counts the transport a run gets, not the key: a checkpoint written under the former
-/// default without the key (hashed as "no key") is refused on restart, and a scenario that
-/// names `"exchange"` is the same run as one that leaves it out.
+/// Regression: the default momentum transport changed (`"weighted"` to `"exchange"`, then to
+/// `"upwind"`, 2026-12-07). A scenario without the key means the new one, so the fluid's
+/// fingerprint counts the transport a run gets, not the key: a checkpoint written under a
+/// former default without the key is refused on restart, and a scenario that names
+/// `"upwind"` is the same run as one that leaves it out.
 #[test]
 fn a_checkpoint_of_the_former_default_transport_is_refused() {
     let fluid_print = |text: &str| {
@@ -521,8 +521,9 @@ fn a_checkpoint_of_the_former_default_transport_is_refused() {
             1,
         )
     };
-    assert_ne!(with("exchange"), EXAMPLE);
+    assert_ne!(with("upwind"), EXAMPLE);
     let default = fluid_print(EXAMPLE);
-    assert_eq!(fluid_print(&with("exchange")), default);
+    assert_eq!(fluid_print(&with("upwind")), default);
+    assert_ne!(fluid_print(&with("exchange")), default);
     assert_ne!(fluid_print(&with("weighted")), default);
 }

@@ -40,9 +40,13 @@
 //! ([`super::advection`]); exchanging there as well counted it twice, an upwind mixing at every
 //! surface face that took 4.5 to 5 % of a regular wave's height over 5 L.
 //!
-//! **Which transport** (`[fluid.air] momentum`, [`Momentum`]). `"exchange"`, the default
-//! since 2026-12-07, is the exchange with the bounded density-weighted transport
-//! ([`super::advection`], "Bounded"). The exchange is applied after the projection, as the
+//! **Which transport** (`[fluid.air] momentum`, [`Momentum`]). `"upwind"`, the default, is
+//! the exchange with the bounded density-weighted transport on the faces in the water and the
+//! donor-cell transport on every face with air ([`super::advection`], "Upwind off the
+//! water"); `"exchange"`, the default before it, keeps the bounded transport on every face
+//! ([`super::advection`], "Bounded"): in a double layer of armour stones its air pockets ran
+//! away along the water line (`tests/free_surface.rs`,
+//! `air_blowing_under_a_falling_layer_overshot_its_speed`). The exchange is applied after the projection, as the
 //! coupling's correction [62] is, so where the surface crossed a face the velocity is a little
 //! off divergence-free until the next projection ([`super::Fluid::projected_divergence`]
 //! reports the projection's own); α is always carried by a projected velocity, so the water's
@@ -89,30 +93,35 @@ pub enum Momentum {
     /// faces' densities ([`super::advection`], "Water and air"); no exchange. The default
     /// until 2026-12-07: its runs stop where a wave's run-down sprays (the module's table).
     Weighted,
-    /// The default: the bounded weighted transport ([`super::advection`], "Bounded") and the
-    /// exchange of this module.
-    #[default]
+    /// The bounded weighted transport ([`super::advection`], "Bounded") and the exchange of
+    /// this module: the default until 2026-12-07, whose runs stop where air pockets run
+    /// through an armour layer at the water line (the module's table).
     Exchange,
+    /// The default: [`Momentum::Exchange`] with the donor-cell transport on every face with
+    /// air ([`super::advection`], "Upwind off the water").
+    #[default]
+    Upwind,
 }
 
 impl Momentum {
-    /// How the advection forms the transported velocity.
-    pub fn transport(self) -> Transport {
+    /// How the advection forms the transported velocity; `water` is ρ_w [kg m⁻³].
+    pub fn transport(self, water: f64) -> Transport {
         match self {
             Momentum::Weighted => Transport::Weighted,
             Momentum::Exchange => Transport::Bounded,
+            Momentum::Upwind => Transport::Upwind { water },
         }
     }
 
     /// Whether the phases exchange momentum where the surface crosses a face.
     pub fn exchanges(self) -> bool {
-        self == Momentum::Exchange
+        self != Momentum::Weighted
     }
 
     /// True for the default (left out of the serialised form, so that a scenario's
     /// fingerprint is unchanged when the key is not given).
     pub fn is_default(&self) -> bool {
-        *self == Momentum::Exchange
+        *self == Momentum::default()
     }
 
     /// Its TOML name.
@@ -120,12 +129,13 @@ impl Momentum {
         match self {
             Momentum::Weighted => "weighted",
             Momentum::Exchange => "exchange",
+            Momentum::Upwind => "upwind",
         }
     }
 
     /// The transport of TOML name `name`, if there is one.
     pub fn named(name: &str) -> Option<Momentum> {
-        [Momentum::Weighted, Momentum::Exchange]
+        [Momentum::Weighted, Momentum::Exchange, Momentum::Upwind]
             .into_iter()
             .find(|m| m.name() == name)
     }
@@ -139,7 +149,11 @@ impl Momentum {
             }
             Momentum::Exchange => {
                 "momentum carried with bounded density-weighted transport and exchanged where \
-                 water fills a face of air"
+                 water fills a face of air (the default until 2026-12-07)"
+            }
+            Momentum::Upwind => {
+                "momentum carried with bounded density-weighted transport in the water, \
+                 donor-cell on the faces with air, and exchanged where water fills a face of air"
             }
         }
     }

@@ -26,7 +26,7 @@
 //! brings ([`super::exchange`]; after the projection, like the coupling's correction [62], so
 //! uⁿ⁺¹ is divergence-free to the projection's tolerance only where the surface did not
 //! cross). The transported velocity is density-weighted, and bounded with
-//! `Momentum::Exchange` ([`super::advection`]).
+//! `Momentum::Exchange` and `Momentum::Upwind` ([`super::advection`]).
 //!
 //! Boundary conditions: the normal velocity on boundary faces and all ghosts are set at
 //! tⁿ⁺¹ before the projection (outflow faces by the convective condition, corrected to
@@ -134,7 +134,9 @@ impl Fluid {
                 Some(_) => (&self.stress_viscosity[..], true, 0.0),
                 None => (&state.eddy_viscosity[..], par.smagorinsky.is_some(), mu),
             };
-            let transport = par.air.map_or(Transport::Plain, |a| a.momentum.transport());
+            let transport = par
+                .air
+                .map_or(Transport::Plain, |a| a.momentum.transport(rho_w));
             for (a, h) in self.tendency.iter_mut().enumerate() {
                 let inertia = match (par.air, &self.solids) {
                     (Some(_), Some(solids)) => Inertia::Mixture {

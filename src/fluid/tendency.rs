@@ -58,50 +58,67 @@ pub fn tendency_row(
     start: usize,
     out: &mut [f64],
 ) {
-    // The transported velocity: 0 plain, 1 weighted, 2 bounded (only with face densities).
-    let t = match (transport, rho) {
-        (_, Inertia::Cells(_)) | (Transport::Plain, _) => 0,
-        (Transport::Weighted, _) => 1,
-        (Transport::Bounded, _) => 2,
+    // The transported velocity: 0 plain, 1 weighted, 2 bounded, 3 upwind off the water (only
+    // with face densities).
+    let (t, water) = match (transport, rho) {
+        (_, Inertia::Cells(_)) | (Transport::Plain, _) => (0, 0.0),
+        (Transport::Weighted, _) => (1, 0.0),
+        (Transport::Bounded, _) => (2, 0.0),
+        (Transport::Upwind { water }, _) => (3, water),
     };
+    let w = Fluids { mu, water };
     match (a, sgs, t) {
-        (0, false, 0) => row::<0, false, 0>(st, u, mu_t, rho, mu, start, out),
-        (1, false, 0) => row::<1, false, 0>(st, u, mu_t, rho, mu, start, out),
-        (2, false, 0) => row::<2, false, 0>(st, u, mu_t, rho, mu, start, out),
-        (0, true, 0) => row::<0, true, 0>(st, u, mu_t, rho, mu, start, out),
-        (1, true, 0) => row::<1, true, 0>(st, u, mu_t, rho, mu, start, out),
-        (2, true, 0) => row::<2, true, 0>(st, u, mu_t, rho, mu, start, out),
-        (0, false, 1) => row::<0, false, 1>(st, u, mu_t, rho, mu, start, out),
-        (1, false, 1) => row::<1, false, 1>(st, u, mu_t, rho, mu, start, out),
-        (2, false, 1) => row::<2, false, 1>(st, u, mu_t, rho, mu, start, out),
-        (0, true, 1) => row::<0, true, 1>(st, u, mu_t, rho, mu, start, out),
-        (1, true, 1) => row::<1, true, 1>(st, u, mu_t, rho, mu, start, out),
-        (2, true, 1) => row::<2, true, 1>(st, u, mu_t, rho, mu, start, out),
-        (0, false, 2) => row::<0, false, 2>(st, u, mu_t, rho, mu, start, out),
-        (1, false, 2) => row::<1, false, 2>(st, u, mu_t, rho, mu, start, out),
-        (2, false, 2) => row::<2, false, 2>(st, u, mu_t, rho, mu, start, out),
-        (0, true, 2) => row::<0, true, 2>(st, u, mu_t, rho, mu, start, out),
-        (1, true, 2) => row::<1, true, 2>(st, u, mu_t, rho, mu, start, out),
-        (2, true, 2) => row::<2, true, 2>(st, u, mu_t, rho, mu, start, out),
+        (0, false, 0) => row::<0, false, 0>(st, u, mu_t, rho, w, start, out),
+        (1, false, 0) => row::<1, false, 0>(st, u, mu_t, rho, w, start, out),
+        (2, false, 0) => row::<2, false, 0>(st, u, mu_t, rho, w, start, out),
+        (0, true, 0) => row::<0, true, 0>(st, u, mu_t, rho, w, start, out),
+        (1, true, 0) => row::<1, true, 0>(st, u, mu_t, rho, w, start, out),
+        (2, true, 0) => row::<2, true, 0>(st, u, mu_t, rho, w, start, out),
+        (0, false, 1) => row::<0, false, 1>(st, u, mu_t, rho, w, start, out),
+        (1, false, 1) => row::<1, false, 1>(st, u, mu_t, rho, w, start, out),
+        (2, false, 1) => row::<2, false, 1>(st, u, mu_t, rho, w, start, out),
+        (0, true, 1) => row::<0, true, 1>(st, u, mu_t, rho, w, start, out),
+        (1, true, 1) => row::<1, true, 1>(st, u, mu_t, rho, w, start, out),
+        (2, true, 1) => row::<2, true, 1>(st, u, mu_t, rho, w, start, out),
+        (0, false, 2) => row::<0, false, 2>(st, u, mu_t, rho, w, start, out),
+        (1, false, 2) => row::<1, false, 2>(st, u, mu_t, rho, w, start, out),
+        (2, false, 2) => row::<2, false, 2>(st, u, mu_t, rho, w, start, out),
+        (0, true, 2) => row::<0, true, 2>(st, u, mu_t, rho, w, start, out),
+        (1, true, 2) => row::<1, true, 2>(st, u, mu_t, rho, w, start, out),
+        (2, true, 2) => row::<2, true, 2>(st, u, mu_t, rho, w, start, out),
+        (0, false, 3) => row::<0, false, 3>(st, u, mu_t, rho, w, start, out),
+        (1, false, 3) => row::<1, false, 3>(st, u, mu_t, rho, w, start, out),
+        (2, false, 3) => row::<2, false, 3>(st, u, mu_t, rho, w, start, out),
+        (0, true, 3) => row::<0, true, 3>(st, u, mu_t, rho, w, start, out),
+        (1, true, 3) => row::<1, true, 3>(st, u, mu_t, rho, w, start, out),
+        (2, true, 3) => row::<2, true, 3>(st, u, mu_t, rho, w, start, out),
         _ => panic!("velocity component {a} does not exist"),
     }
 }
 
 /// [`tendency_row`] for component `A`, with the subgrid term when `SGS`, and the transported
 /// velocity across the faces parallel to u_a plain (`W` = 0), weighted by the face densities
-/// (1) or weighted and bounded (2) (water and air; [`super::advection`]).
+/// (1), weighted and bounded (2), or bounded in the water and donor-cell on the faces with air
+/// (3) (water and air; [`super::advection`]).
 ///
 /// Names of the shifted rows: `u0` = u_a[c], `up[b]`/`um[b]` = u_a[c ± s_b]; for b ≠ a
 /// `vb0[b]` = u_b[c], `vbma[b]` = u_b[c − s_a], `vbp[b]` = u_b[c + s_b],
 /// `vbpma[b]` = u_b[c + s_b − s_a]; μ_SGS: `m0` at c, `mma` at c − s_a, `mmb[b]` at c − s_b,
 /// `mmamb[b]` at c − s_a − s_b, `mpb[b]` at c + s_b, `mpbma[b]` at c + s_b − s_a.
+/// The molecular viscosity μ [Pa s] and, for the upwind transport, ρ_w [kg m⁻³].
+#[derive(Clone, Copy)]
+struct Fluids {
+    mu: f64,
+    water: f64,
+}
+
 #[inline(always)]
 fn row<const A: usize, const SGS: bool, const W: u8>(
     st: &Stencil,
     u: Velocity,
     mu_t: &[f64],
     rho: Inertia,
-    mu: f64,
+    Fluids { mu, water }: Fluids,
     start: usize,
     out: &mut [f64],
 ) {
@@ -171,11 +188,25 @@ fn row<const A: usize, const SGS: bool, const W: u8>(
         // A_a (advection::advection): fluxes at the cell centres (b = a) and at the a-b
         // edges of c + s_b and c (b ≠ a).
         let mut adv = 0.0;
+        // A face with air under the upwind transport: donor-cell (advection::advection_upwind).
+        let donor = W == 3 && r_own[i] < water;
         for b in 0..3 {
-            if W > 0 && b != A {
+            if donor {
+                let (t_hi, t_lo) = if b == A {
+                    (0.5 * (c + up[A][i]), 0.5 * (um[A][i] + c))
+                } else {
+                    (
+                        0.5 * (vbp[b][i] + vbpma[b][i]),
+                        0.5 * (vb0[b][i] + vbma[b][i]),
+                    )
+                };
+                let m_hi = if t_hi > 0.0 { c } else { up[b][i] };
+                let m_lo = if t_lo > 0.0 { um[b][i] } else { c };
+                adv += (t_hi * m_hi - t_lo * m_lo) * inv_d[b];
+            } else if W > 0 && b != A {
                 // Across the faces parallel to u_a the transported u_a is the density-weighted
-                // mean of the two faces (advection::advection_weighted), or with W = 2 each
-                // face's own weight is at least ½ (advection::advection_bounded).
+                // mean of the two faces (advection::advection_weighted), or with W = 2 or 3
+                // each face's own weight is at least ½ (advection::advection_bounded).
                 let q = r_own[i];
                 let (m_hi, m_lo) = if W == 1 {
                     (
@@ -211,7 +242,9 @@ fn row<const A: usize, const SGS: bool, const W: u8>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::fluid::advection::{advection, advection_bounded, advection_weighted};
+    use crate::fluid::advection::{
+        advection, advection_bounded, advection_upwind, advection_weighted,
+    };
     use crate::fluid::diffusion::{molecular, subgrid};
     use crate::fluid::grid::StaggeredGrid;
     use crate::fluid::operators::interp_to_face;
@@ -270,9 +303,13 @@ mod tests {
                             assert_eq!(h.to_bits(), expected.to_bits(), "a {a} sgs {sgs} c {c}");
                         }
                         // With air: face densities, and the weighted or bounded advection.
-                        let air: [(Transport, Adv); 2] = [
+                        // ρ_w = 1000 puts about half the faces on either side (rho 925-1075).
+                        let upwind: Adv =
+                            |st, u, rho, a, c| advection_upwind(st, u, rho, 1e3, a, c);
+                        let air: [(Transport, Adv); 3] = [
                             (Transport::Weighted, advection_weighted),
                             (Transport::Bounded, advection_bounded),
+                            (Transport::Upwind { water: 1e3 }, upwind),
                         ];
                         for (transport, adv) in air {
                             let inertia = Inertia::Faces(&rho);
@@ -400,6 +437,39 @@ mod tests {
                 );
                 assert_eq!(p.to_bits(), b.to_bits(), "a {a} c {c}: {p} {b}");
             }
+        }
+    }
+
+    /// Upwind off the water: a face in the water takes the bounded form to the bit; on a face
+    /// with air the donor cell damps the two-cell mode u_x = ±U alternating along z under a
+    /// uniform w, at the rate 2 w/Δz, which the central form leaves alone (its two
+    /// neighbours are equal, so their difference is zero).
+    #[test]
+    fn the_donor_cell_damps_the_two_cell_mode_that_central_differences_keep() {
+        let grid = StaggeredGrid::new([6, 5, 8], Vec3::new(0.6, 0.5, 0.8), Vec3::ZERO);
+        let st = Stencil::new(&grid);
+        let sz = grid.strides()[2];
+        let (w, amp) = (0.01, 0.3);
+        let ux: Vec<f64> = (0..grid.len())
+            .map(|c| if (c / sz) % 2 == 0 { amp } else { -amp })
+            .collect();
+        let (uy, uz) = (vec![0.0; grid.len()], vec![w; grid.len()]);
+        let u = [&ux[..], &uy[..], &uz[..]];
+        let (water, air) = (vec![998.0; grid.len()], vec![1.2; grid.len()]);
+        let faces = (2..6).flat_map(|k| (2..4).flat_map(move |j| (2..5).map(move |i| (i, j, k))));
+        for c in faces.map(|(i, j, k)| grid.index(i, j, k)) {
+            let bounded = advection_bounded(&st, u, &water, 0, c);
+            let upwind = advection_upwind(&st, u, &water, 998.0, 0, c);
+            assert_eq!(upwind.to_bits(), bounded.to_bits(), "water face {c}");
+            let central = advection_bounded(&st, u, &air, 0, c);
+            assert!(central.abs() < 1e-15, "central keeps the mode: {central}");
+            // −A = −w (u[c] − u[c − s_z]) / Δz = −2 w u[c] / Δz: towards zero.
+            let donor = -advection_upwind(&st, u, &air, 998.0, 0, c);
+            let expected = -2.0 * w * ux[c] / grid.spacing.z;
+            assert!(
+                (donor - expected).abs() < 1e-12,
+                "face {c}: {donor} against {expected}"
+            );
         }
     }
 }

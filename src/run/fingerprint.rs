@@ -41,8 +41,8 @@ pub fn fingerprint(src: &Source, sim: &Simulation) -> Fingerprint {
             o.force_interval = None;
         }
         // The transport a surface gets without the key is part of what the state means: the
-        // default changed (weighted to exchange, 2026-12-07), and a checkpoint written under
-        // one must not continue under the other.
+        // default changed (weighted to exchange to upwind, 2026-12-07), and a checkpoint
+        // written under one must not continue under another.
         if let Some(a) = &mut f.air {
             a.momentum = Some(a.momentum.unwrap_or_default());
         }

@@ -96,7 +96,7 @@ pub fn up_crossings(record: &[(f64, f64)], after: f64) -> Vec<f64> {
 
 /// The momentum transport across the surface the free-surface cases run with
 /// (`riprap validate --momentum`; the default unless set).
-static MOMENTUM: std::sync::Mutex<Momentum> = std::sync::Mutex::new(Momentum::Exchange);
+static MOMENTUM: std::sync::Mutex<Momentum> = std::sync::Mutex::new(Momentum::Upwind);
 
 /// Sets the momentum transport of the free-surface cases ([`momentum`]).
 pub fn set_momentum(m: Momentum) {

@@ -182,7 +182,7 @@ pub struct AirSection {
     /// "spectral" (the constant-coefficient FFT/DCT solve).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pressure_preconditioner: Option<crate::fluid::pressure::Preconditioner>,
-    /// How momentum is carried across the surface: "exchange" (default) or "weighted"
+    /// How momentum is carried across the surface: "upwind" (default), "exchange" or "weighted"
     /// (`fluid::exchange::Momentum`, with what each was measured to do).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub momentum: Option<crate::fluid::exchange::Momentum>,
