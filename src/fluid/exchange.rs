@@ -46,30 +46,32 @@
 //! water"); `"exchange"`, the default before it, keeps the bounded transport on every face
 //! ([`super::advection`], "Bounded"): in a double layer of armour stones its air pockets ran
 //! away along the water line (`tests/free_surface.rs`,
-//! `air_blowing_under_a_falling_layer_overshot_its_speed`). The exchange is applied after the projection, as the
-//! coupling's correction [62] is, so where the surface crossed a face the velocity is a little
-//! off divergence-free until the next projection ([`super::Fluid::projected_divergence`]
-//! reports the projection's own); α is always carried by a projected velocity, so the water's
-//! volume is kept as before. A face exchanges or not as its cells' α fall either side of ½:
-//! a round-off difference can switch one, so two runs that differ at round-off (another
-//! preconditioner) part by about 1e-5 of the pressure in 20 steps (`tests/free_surface.rs`);
-//! results still do not depend on the number of threads. What each measured (`riprap
-//! validate --momentum NAME`; 2026-12-06 quick levels and 2026-12-07 full levels, the case
-//! READMEs give every row):
+//! `air_blowing_under_a_falling_layer_overshot_its_speed`). The exchange is applied after the
+//! projection, as the coupling's correction [62] is, so where the surface crossed a face the
+//! velocity is a little off divergence-free until the next projection
+//! ([`super::Fluid::projected_divergence`] reports the projection's own); α is always carried
+//! by a projected velocity, so the water's volume is kept as before. A face exchanges or not
+//! as its cells' α fall either side of ½: a round-off difference can switch one, so two runs
+//! that differ at round-off (another preconditioner) part by about 1e-5 of the pressure in 20
+//! steps (`tests/free_surface.rs`); results still do not depend on the number of threads.
+//! What each measured (`riprap validate --momentum NAME`; `weighted` 2026-12-06, the others
+//! 2026-12-07, full levels unless said; the case READMEs give every row):
 //!
-//! | | `weighted` (default until 2026-12-07) | `exchange` (default) |
-//! |---|---|---|
-//! | dam break, front speed at a/12, a/16 (measured 1.298) | 1.237, 1.286 | 1.323, 1.300 |
-//! | standing wave, period at L/Δ = 50, 100 (0.5 % at 100) | +0.51 %, +0.34 % | +0.36 %, +0.21 % |
-//! | solitary wave at h/Δx = 10, H/Δz = 4: crests (2 %), speed (1 %) | 0.994-1.012, 0.9922 | 0.984-1.016, 0.9965 |
-//! | solitary wave at 20, 8: crests, speed | 0.987-1.010, 0.9966 | 0.989-1.008, 0.9987 |
-//! | regular waves at L/Δx = 40, H/Δz = 4: heights (3 %), speed, steady wave | within 1.7 %, 1.0000, 0.997 | 0.979-1.001, 1.0062, 1.0029 |
-//! | regular waves at 80, 8: heights, speed / steady wave | 1.015-1.018, 0.9958 | 1.011-1.013, 1.0000 |
-//! | absorption, K_r at kh 0.5, 1, 2, 3 (5 %) | 0.020, 0.012, 0.011, 0.012 | 0.020, 0.020, 0.009, 0.009 |
-//! | wavemakers, piston and flap at kh 0.5, 1, 2: height / first-order theory (3 %) | piston kh 1: 0.997 (the quick level only) | 0.978-1.003, all six pass |
-//! | floating sphere at d/Δ = 8, 500 and 250 kg/m³: draft error (1 %) | +0.16 %, +0.89 % | −0.07 %, +0.06 % |
-//! | the falling layer of `tests/free_surface.rs`, largest u in the water | 2.27 m/s | 0.742 m/s |
-//! | `examples/rubble_mound.toml` with H = 7 cm | stops at 3.49 s (80 m/s) | runs to 6.4 s (S 1.25) |
+//! | | `weighted` | `exchange` | `upwind` (default) |
+//! |---|---|---|---|
+//! | dam break, front speed at a/12, a/16 (measured 1.298) | 1.237, 1.286 | 1.323, 1.300 | 1.262, 1.283 |
+//! | standing wave, period at L/Δ = 50, 100 (0.5 % at 100) | +0.51 %, +0.34 % | +0.36 %, +0.21 % | +0.20 %, +0.36 % |
+//! | standing wave, amplitude kept over three periods at 50, 100 | 0.96-0.97 | 1.005, 0.994 | 0.981, 0.979 |
+//! | solitary wave at h/Δx = 10, H/Δz = 4: crests (2 %), speed (1 %) | 0.994-1.012, 0.9922 | 0.984-1.016, 0.9965 | 0.986-1.015, 0.9948 |
+//! | solitary wave at 20, 8: crests, speed | 0.987-1.010, 0.9966 | 0.989-1.008, 0.9987 | 0.990-1.007, 0.9973 |
+//! | regular waves at L/Δx = 40, H/Δz = 4: heights (3 %), speed, steady wave | within 1.7 %, 1.0000, 0.997 | 0.979-1.001, 1.0062, 1.0029 | 0.982-1.001, 1.0089, 1.0057 |
+//! | regular waves at 80, 8: heights, speed / steady wave; reflection | 1.015-1.018, 0.9958 | 1.011-1.013, 1.0000; 0.016-0.036 | 0.989-1.014, 0.9995; 0.043-0.060 |
+//! | absorption, K_r at kh 0.5, 1, 2, 3 (5 %) | 0.020, 0.012, 0.011, 0.012 | 0.020, 0.020, 0.009, 0.009 | 0.020, 0.020, 0.011, 0.010 |
+//! | wavemakers, piston and flap at kh 0.5, 1, 2: height / first-order theory (3 %) | piston kh 1: 0.997 (the quick level only) | 0.978-1.003, all six pass | 0.980-1.007, all six pass |
+//! | floating sphere at d/Δ = 8, 500 and 250 kg/m³: draft error (1 %) | +0.16 %, +0.89 % | −0.07 %, +0.06 % | +0.02 %, −0.31 % |
+//! | the falling layer of `tests/free_surface.rs`: largest u in the water; in the air (exactly 0; 5 m/s) | 2.27 m/s | 0.742; 7.16 m/s | 0.0088; 4.87 m/s |
+//! | `examples/rubble_mound.toml` with H = 7 cm | stops at 3.49 s (80 m/s) | runs to 6.4 s (S 1.25) | not run |
+//! | `examples/breakwater.toml` (a double layer) with H = 7 cm | | stops at 3.43 s (100 m/s) | runs to 6.4 s (S 0.51) |
 //!
 //! Each part is needed: the weighted transport (unbounded) with the exchange stops the rubble
 //! mound at 3.48 s; the plain transport with the exchange runs it but lets the air's
