@@ -66,32 +66,31 @@ pub fn tendency_row(
         (Transport::Bounded, _) => (2, 0.0),
         (Transport::Upwind { water }, _) => (3, water),
     };
-    let w = Fluids { mu, water };
     match (a, sgs, t) {
-        (0, false, 0) => row::<0, false, 0>(st, u, mu_t, rho, w, start, out),
-        (1, false, 0) => row::<1, false, 0>(st, u, mu_t, rho, w, start, out),
-        (2, false, 0) => row::<2, false, 0>(st, u, mu_t, rho, w, start, out),
-        (0, true, 0) => row::<0, true, 0>(st, u, mu_t, rho, w, start, out),
-        (1, true, 0) => row::<1, true, 0>(st, u, mu_t, rho, w, start, out),
-        (2, true, 0) => row::<2, true, 0>(st, u, mu_t, rho, w, start, out),
-        (0, false, 1) => row::<0, false, 1>(st, u, mu_t, rho, w, start, out),
-        (1, false, 1) => row::<1, false, 1>(st, u, mu_t, rho, w, start, out),
-        (2, false, 1) => row::<2, false, 1>(st, u, mu_t, rho, w, start, out),
-        (0, true, 1) => row::<0, true, 1>(st, u, mu_t, rho, w, start, out),
-        (1, true, 1) => row::<1, true, 1>(st, u, mu_t, rho, w, start, out),
-        (2, true, 1) => row::<2, true, 1>(st, u, mu_t, rho, w, start, out),
-        (0, false, 2) => row::<0, false, 2>(st, u, mu_t, rho, w, start, out),
-        (1, false, 2) => row::<1, false, 2>(st, u, mu_t, rho, w, start, out),
-        (2, false, 2) => row::<2, false, 2>(st, u, mu_t, rho, w, start, out),
-        (0, true, 2) => row::<0, true, 2>(st, u, mu_t, rho, w, start, out),
-        (1, true, 2) => row::<1, true, 2>(st, u, mu_t, rho, w, start, out),
-        (2, true, 2) => row::<2, true, 2>(st, u, mu_t, rho, w, start, out),
-        (0, false, 3) => row::<0, false, 3>(st, u, mu_t, rho, w, start, out),
-        (1, false, 3) => row::<1, false, 3>(st, u, mu_t, rho, w, start, out),
-        (2, false, 3) => row::<2, false, 3>(st, u, mu_t, rho, w, start, out),
-        (0, true, 3) => row::<0, true, 3>(st, u, mu_t, rho, w, start, out),
-        (1, true, 3) => row::<1, true, 3>(st, u, mu_t, rho, w, start, out),
-        (2, true, 3) => row::<2, true, 3>(st, u, mu_t, rho, w, start, out),
+        (0, false, 0) => row::<0, false, 0>(st, u, mu_t, rho, mu, water, start, out),
+        (1, false, 0) => row::<1, false, 0>(st, u, mu_t, rho, mu, water, start, out),
+        (2, false, 0) => row::<2, false, 0>(st, u, mu_t, rho, mu, water, start, out),
+        (0, true, 0) => row::<0, true, 0>(st, u, mu_t, rho, mu, water, start, out),
+        (1, true, 0) => row::<1, true, 0>(st, u, mu_t, rho, mu, water, start, out),
+        (2, true, 0) => row::<2, true, 0>(st, u, mu_t, rho, mu, water, start, out),
+        (0, false, 1) => row::<0, false, 1>(st, u, mu_t, rho, mu, water, start, out),
+        (1, false, 1) => row::<1, false, 1>(st, u, mu_t, rho, mu, water, start, out),
+        (2, false, 1) => row::<2, false, 1>(st, u, mu_t, rho, mu, water, start, out),
+        (0, true, 1) => row::<0, true, 1>(st, u, mu_t, rho, mu, water, start, out),
+        (1, true, 1) => row::<1, true, 1>(st, u, mu_t, rho, mu, water, start, out),
+        (2, true, 1) => row::<2, true, 1>(st, u, mu_t, rho, mu, water, start, out),
+        (0, false, 2) => row::<0, false, 2>(st, u, mu_t, rho, mu, water, start, out),
+        (1, false, 2) => row::<1, false, 2>(st, u, mu_t, rho, mu, water, start, out),
+        (2, false, 2) => row::<2, false, 2>(st, u, mu_t, rho, mu, water, start, out),
+        (0, true, 2) => row::<0, true, 2>(st, u, mu_t, rho, mu, water, start, out),
+        (1, true, 2) => row::<1, true, 2>(st, u, mu_t, rho, mu, water, start, out),
+        (2, true, 2) => row::<2, true, 2>(st, u, mu_t, rho, mu, water, start, out),
+        (0, false, 3) => row::<0, false, 3>(st, u, mu_t, rho, mu, water, start, out),
+        (1, false, 3) => row::<1, false, 3>(st, u, mu_t, rho, mu, water, start, out),
+        (2, false, 3) => row::<2, false, 3>(st, u, mu_t, rho, mu, water, start, out),
+        (0, true, 3) => row::<0, true, 3>(st, u, mu_t, rho, mu, water, start, out),
+        (1, true, 3) => row::<1, true, 3>(st, u, mu_t, rho, mu, water, start, out),
+        (2, true, 3) => row::<2, true, 3>(st, u, mu_t, rho, mu, water, start, out),
         _ => panic!("velocity component {a} does not exist"),
     }
 }
@@ -99,26 +98,21 @@ pub fn tendency_row(
 /// [`tendency_row`] for component `A`, with the subgrid term when `SGS`, and the transported
 /// velocity across the faces parallel to u_a plain (`W` = 0), weighted by the face densities
 /// (1), weighted and bounded (2), or bounded in the water and donor-cell on the faces with air
-/// (3) (water and air; [`super::advection`]).
+/// (3) (water and air; [`super::advection`]); `water` is ρ_w [kg m⁻³], read only with `W` = 3.
 ///
 /// Names of the shifted rows: `u0` = u_a[c], `up[b]`/`um[b]` = u_a[c ± s_b]; for b ≠ a
 /// `vb0[b]` = u_b[c], `vbma[b]` = u_b[c − s_a], `vbp[b]` = u_b[c + s_b],
 /// `vbpma[b]` = u_b[c + s_b − s_a]; μ_SGS: `m0` at c, `mma` at c − s_a, `mmb[b]` at c − s_b,
 /// `mmamb[b]` at c − s_a − s_b, `mpb[b]` at c + s_b, `mpbma[b]` at c + s_b − s_a.
-/// The molecular viscosity μ [Pa s] and, for the upwind transport, ρ_w [kg m⁻³].
-#[derive(Clone, Copy)]
-struct Fluids {
-    mu: f64,
-    water: f64,
-}
-
+#[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn row<const A: usize, const SGS: bool, const W: u8>(
     st: &Stencil,
     u: Velocity,
     mu_t: &[f64],
     rho: Inertia,
-    Fluids { mu, water }: Fluids,
+    mu: f64,
+    water: f64,
     start: usize,
     out: &mut [f64],
 ) {
