@@ -10,7 +10,7 @@ use std::path::PathBuf;
 
 use riprap::math::Vec3;
 use riprap::scenario::fluid::ObstacleKind;
-use riprap::scenario::schema::{BlockSet, WallSection};
+use riprap::scenario::schema::{BlockSet, SphereSet, WallSection};
 use riprap::scenario::{build, check, ScenarioError, Source};
 
 const EXAMPLE: &str = include_str!("../examples/breakwater.toml");
@@ -345,7 +345,8 @@ fn the_lab_example_places_its_double_layer_and_check_reports_its_sea() {
         "10.0 cells per H, 231.2 per L",
         "490 × 18 × 86 = 758520 cells",
         "zones 0 to 64 (one medium): [3.21, 0, 0] to [4.9, 0.18, 0.01] m, …, [4.49, 0, 0.64] to",
-        "settled dry before the run (settle_time): 1 s, 6666 DEM steps",
+        "settled dry before the run (settle_time): 1.5 s, 10000 DEM steps",
+        "under-layer stones: 900 fixed spheres of 0.018 m on the plane and the bed (0.45 D_n)",
     ] {
         assert!(report.contains(needle), "no `{needle}` in\n{report}");
     }
@@ -531,5 +532,101 @@ fn wires_hold_a_layer_that_would_slide() {
     assert!(
         held < free / 50.0,
         "wired, the layer moved {held:e} m (free {free:e} m)"
+    );
+}
+
+/// `underlayer_stones`: the armour rests on the under-layer's stones, not on a smooth plane.
+/// The plane, the bed and the stones of a material of friction μ = 0.3 (16.7°, below the 1:2
+/// slope's 26.6°; the units keep 0.7 among themselves): the dry layer, settled first on the
+/// example's friction, slides down the smooth plane, accelerating at up to
+/// g (sin α − μ cos α) = 1.8 m/s² where its toe lets it: the median unit moves 4.7 cm from
+/// 0.3 to 0.6 s (measured; 9.9 cm at μ = 0.25, 0.1 mm at 0.4, where the toe holds the layer).
+/// On stones of D_n / 2.2 spaced 1.1 d the bottom units lie between them, held by their form
+/// as well as by friction: 3.5 mm (measured; 9.8 mm at μ = 0.25). Bound: an eighth.
+#[test]
+fn the_underlayer_stones_hold_a_layer_that_slides_on_the_smooth_plane() {
+    const FILTER: &str =
+        "[[material]]\nname = \"filter\"\ndensity = 2650.0\nyoung_modulus = 1.0e8\n\
+        poisson_ratio = 0.25\nfriction_coefficient = 0.7\nrestitution_coefficient = 0.2\n\n";
+    let settled = dry(0.6)
+        .replace(
+            "gap = 0.001                    # m: above the plane, and between stones\n",
+            "gap = 0.001\nsettle_time = 1.0\n",
+        )
+        .replace("[[block_template]]", &format!("{FILTER}[[block_template]]"))
+        .replace(
+            "material = \"rock\"              # of the under-layer plane",
+            "material = \"filter\"            # of the under-layer plane",
+        );
+    // The median unit's move from 0.3 to 0.6 s [m].
+    let sliding = |text: &str| {
+        let src = source(text).unwrap_or_else(|e| panic!("{e}"));
+        let mut sim = build(&src).unwrap_or_else(|e| panic!("{e}")).simulation;
+        let n = sim.dem.materials.len();
+        for (k, l) in sim.dem.laws.iter_mut().enumerate() {
+            if k / n == 1 || k % n == 1 {
+                l.mixed.friction = 0.3;
+                l.k = l.model.constants(&l.mixed);
+            }
+        }
+        let mut go = |end: f64| {
+            while !sim.reached(end) {
+                sim.step_towards(end).unwrap_or_else(|e| panic!("{e}"));
+            }
+            sim.rigid.blocks.centre.clone()
+        };
+        let (half, end) = (go(0.3), go(0.6));
+        let domain = sim.dem.domain;
+        let mut moves: Vec<f64> = half
+            .iter()
+            .zip(&end)
+            .map(|(&a, &b)| domain.minimum_image(b - a).length())
+            .collect();
+        moves.sort_by(f64::total_cmp);
+        (src, moves[moves.len() / 2])
+    };
+    let (_, smooth) = sliding(&settled);
+    let rough = settled.replace(
+        "[breakwater.armour]",
+        "underlayer_stones = 0.018\n\n[breakwater.armour]",
+    );
+    let (src, held) = sliding(&rough);
+    let (n, d) = src.breakwater.as_ref().unwrap().underlayer.unwrap();
+    eprintln!(
+        "{n} under-layer stones of {d} m: the median unit's move from 0.3 to 0.6 s {held:.3e} m \
+         on them, {smooth:.3e} m on the smooth plane"
+    );
+    let SphereSet::List(l) = src.scenario.spheres.last().unwrap() else {
+        panic!("the stones are not a list")
+    };
+    assert_eq!(l.spheres.len(), n);
+    assert!(l.spheres.iter().all(|s| s.fixed && s.diameter == 0.018));
+    let report = check(&src).unwrap().report();
+    assert!(
+        report.contains(&format!("under-layer stones: {n} fixed spheres of 0.018 m")),
+        "{report}"
+    );
+    // The stones do not shorten the step: a fixed sphere meets no wall and no other fixed one.
+    assert!(
+        report.contains("fixed filter d=0.0180 / block member")
+            && !report.contains("fixed filter d=0.0180 / wall"),
+        "{report}"
+    );
+    assert!(
+        smooth > 0.02,
+        "on the smooth plane the layer moved only {smooth:e} m"
+    );
+    assert!(
+        held < smooth / 8.0,
+        "on the stones the layer moved {held:e} m (smooth {smooth:e} m)"
+    );
+    // Stones as coarse as the armour are refused by their key.
+    let e = source(&rough.replace("underlayer_stones = 0.018", "underlayer_stones = 0.05"))
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(
+        e.contains("breakwater.underlayer_stones") && e.contains("finer"),
+        "{e}"
     );
 }

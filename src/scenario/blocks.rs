@@ -178,8 +178,12 @@ pub(super) fn build_blocks(
     let first_member = spheres.len();
     // What each new sphere is, for messages.
     let mut names_of: Vec<String> = vec![String::new(); spheres.len()];
-    // The start overlap each sphere's set accepts, relative to the smaller diameter.
-    let mut accepts = vec![0.0; spheres.len()];
+    // The start overlap each sphere's set accepts, relative to the smaller diameter. A fixed
+    // sphere accepts what the block's set states, as a wall does (a settled heap rests pressed
+    // on the under-layer's stones as on its plane).
+    let mut accepts: Vec<f64> = (spheres.fixed.iter())
+        .map(|&f| if f { f64::INFINITY } else { 0.0 })
+        .collect();
     for (i, set) in sc.blocks.iter().enumerate() {
         let key = format!("blocks[{i}]");
         let name = match set {

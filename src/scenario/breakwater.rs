@@ -3,7 +3,8 @@
 //! a user would otherwise write by hand (compare `examples/rubble_mound.toml` with
 //! `examples/breakwater.toml`):
 //!
-//! * a DEM plane for the under-layer surface the armour rests on, and one for the flume's bed;
+//! * a DEM plane for the under-layer surface the armour rests on, and one for the flume's bed,
+//!   optionally with the under-layer's top stones on them (fixed spheres, `underlayer`);
 //! * the core (and an optional filter layer under the armour) as porous zones
 //!   (`[[fluid.porous]]`, Darcy-Forchheimer) stepped under the slope, one fluid cell high;
 //! * an optional crown wall on the crest, a box obstacle of the flow (`[[fluid.obstacles]]`);
@@ -22,6 +23,7 @@
 //! step_height = 0.01         # of the porous steps [m] (default: one fluid cell)
 //! core = { porosity = 0.4, grain_diameter = 0.015 }    # alpha, beta as [[fluid.porous]]
 //! filter = { thickness = 0.02, porosity = 0.4, grain_diameter = 0.008 }   # optional
+//! underlayer_stones = 0.018  # optional: the filter's top stones, fixed spheres [m] (`underlayer`)
 //! crown_wall = { height = 0.06, width = 0.05, offset = 0.1 }             # optional
 //!
 //! [breakwater.armour]
@@ -51,12 +53,16 @@
 mod placement;
 mod profile;
 mod settle;
+mod underlayer;
 mod wires;
 
 use super::armour::ArmourSection;
 use super::blocks::template;
 use super::checks::{finite, non_negative, positive};
-use super::schema::{BlockEntry, BlockSet, ListBlocks, PlaneWall, ShapeName, WallSection};
+use super::schema::{
+    BlockEntry, BlockSet, ListBlocks, ListSet, PlaneWall, ShapeName, SphereEntry, SphereSet,
+    WallSection,
+};
 use super::text::sig4;
 use super::{ScenarioError, Source};
 use crate::armour::design::ArmourUnit;
@@ -117,6 +123,8 @@ pub struct BreakwaterSummary {
     pub fall: f64,
     /// A crown wall was made.
     pub crown_wall: bool,
+    /// The under-layer's stones: (count, diameter [m]).
+    pub underlayer: Option<(usize, f64)>,
     /// What the dry settling did (`settle_time`).
     pub settled: Option<Settled>,
     /// How the units were linked (`wires`).
@@ -158,6 +166,14 @@ impl BreakwaterSummary {
         }
         if self.crown_wall {
             s.push_str("  crown wall: obstacle `crown_wall` (obstacle_crown_wall.csv)\n");
+        }
+        if let Some((n, d)) = self.underlayer {
+            s.push_str(&format!(
+                "  under-layer stones: {n} fixed spheres of {} m on the plane and the bed \
+                 ({:.2} D_n), the armour's bottom units rest between them\n",
+                sig4(d),
+                d / self.nominal_diameter
+            ));
         }
         if let Some(l) = self.linked {
             s.push_str(&format!(
@@ -216,6 +232,8 @@ impl BreakwaterSummary {
 /// What the section adds to the scenario.
 struct Expansion {
     walls: Vec<WallSection>,
+    /// The under-layer's stones (`underlayer_stones`), fixed spheres.
+    stones: Option<SphereSet>,
     blocks: BlockSet,
     porous: Vec<super::fluid::PorousSection>,
     crown: Option<super::fluid::ObstacleSection>,
@@ -236,7 +254,7 @@ pub(super) fn expand(src: &mut Source) -> Result<Option<BreakwaterSummary>, Scen
         let BlockSet::List(units) = &e.blocks else {
             unreachable!("the section places its units as a list")
         };
-        let (units, settled) = settle::settle(src, units, &e.walls, t, key)?;
+        let (units, settled) = settle::settle(src, units, (&e.walls, &e.stones), t, key)?;
         e.blocks = BlockSet::List(units);
         e.summary.settled = Some(settled);
     }
@@ -262,6 +280,7 @@ pub(super) fn expand(src: &mut Source) -> Result<Option<BreakwaterSummary>, Scen
     let sc = &mut src.scenario;
     sc.wires.extend(wires);
     sc.walls.extend(e.walls);
+    sc.spheres.extend(e.stones);
     sc.blocks.push(e.blocks);
     if let Some(f) = sc.fluid.as_mut() {
         f.porous.extend(e.porous);
@@ -472,6 +491,25 @@ fn expansion(src: &Source, b: &BreakwaterSection) -> Result<Expansion, ScenarioE
     }
     let mut layer = unit_layer(src, b, slope, (gap, release, d_n));
     layer.max_tilt = tilt.to_radians();
+    let stones = match b.underlayer_stones {
+        Some(d) => {
+            let key = "breakwater.underlayer_stones";
+            let d = positive(src, key, d)?;
+            if d >= d_n {
+                return Err(src.invalid(
+                    key,
+                    format!(
+                        "the under-layer's stones ({d} m) must be finer than the armour's \
+                         (D_n = {d_n:.4} m); a filter's are about D_n / 2.2"
+                    ),
+                ));
+            }
+            let centres = underlayer::stones(&layer, d);
+            layer.underlayer = underlayer::in_slope_frame(&layer, &centres, d);
+            Some(underlayer_set(&centres, d, &material))
+        }
+        None => None,
+    };
     let unit = Unit::of(&tpl);
     let area = layer.length * slope.width;
     let target = (phi * area / (d_n * d_n)).round() as usize;
@@ -528,11 +566,19 @@ fn expansion(src: &Source, b: &BreakwaterSection) -> Result<Expansion, ScenarioE
         armour_defaulted: src.scenario.armour.is_none(),
         fall: n as f64 * gap,
         crown_wall: crown.is_some(),
+        underlayer: b
+            .underlayer_stones
+            .zip(stones.as_ref())
+            .map(|(d, s)| match s {
+                SphereSet::List(l) => (l.spheres.len(), d),
+                _ => unreachable!("the stones are a list"),
+            }),
         settled: None,
         linked: None,
     };
     Ok(Expansion {
         walls,
+        stones,
         blocks,
         porous,
         crown,
@@ -565,6 +611,7 @@ fn unit_layer(
         periodic_y: d.periodic[1],
         x_range: (d.min[0], d.max[0]),
         z_max: d.max[2],
+        underlayer: Vec::new(),
     }
 }
 
@@ -604,6 +651,24 @@ fn place(
             Ok((placed, across as f64))
         }
     }
+}
+
+/// The under-layer's stones as a list of fixed spheres of `material`.
+fn underlayer_set(centres: &[Vec3], d: f64, material: &str) -> SphereSet {
+    SphereSet::List(ListSet {
+        material: Some(material.to_string()),
+        spheres: centres
+            .iter()
+            .map(|c| SphereEntry {
+                position: c.to_array(),
+                diameter: d,
+                material: None,
+                velocity: [0.0; 3],
+                angular_velocity: [0.0; 3],
+                fixed: true,
+            })
+            .collect(),
+    })
 }
 
 /// The DEM planes: the under-layer surface, and the bed.

@@ -428,7 +428,11 @@ fn syntax_key(text: &str, pos: usize) -> String {
         .rev()
         .map(str::trim)
         .find(|l| l.starts_with('['))
-        .map(|h| h.trim_matches(|c| c == '[' || c == ']').trim().to_string());
+        // The name between the brackets, without a comment after the header.
+        .map(|h| {
+            let name = h.trim_start_matches('[').split(']').next().unwrap_or("");
+            name.trim().to_string()
+        });
     match header {
         Some(h) if !h.is_empty() => format!("{h}.{key}"),
         _ => key.to_string(),
@@ -438,6 +442,17 @@ fn syntax_key(text: &str, pos: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Regression: a syntax error under a header with a comment named the key
+    /// `breakwater]   # the mound ….material`.
+    #[test]
+    fn a_syntax_error_under_a_commented_header_names_the_table() {
+        let text = "[breakwater]   # the mound\nslope = 2.0\nslope = 3.0\n";
+        let pos = text.rfind("slope").unwrap();
+        assert_eq!(syntax_key(text, pos), "breakwater.slope");
+        let text = "[[blocks]] # a list\nkind = \"list\"\nkind = \"x\"\n";
+        assert_eq!(syntax_key(text, text.rfind("kind").unwrap()), "blocks.kind");
+    }
 
     #[test]
     fn unknown_key_names_line_and_key() {

@@ -26,6 +26,10 @@ pub struct BreakwaterSection {
     pub core: PorousLayer,
     /// A filter (under-layer) between the core and the armour.
     pub filter: Option<FilterLayer>,
+    /// Diameter of the under-layer's top stones [m]: fixed spheres centred on the under-layer
+    /// plane (and the bed under the toe's units), so that the armour rests on a rough surface
+    /// (default: none, the smooth plane).
+    pub underlayer_stones: Option<f64>,
     /// A crown wall on the crest.
     pub crown_wall: Option<CrownWall>,
     /// The armour layer.

@@ -13,7 +13,7 @@ use crate::dem::walls::Wall;
 use crate::rigid::bodies::RigidBodies;
 
 /// A kind of sphere in contact: its material, radius [m] and mass [kg], and what it is (empty
-/// for a loose sphere, "block member " for a member) for the report.
+/// for a loose sphere, "fixed " for a fixed one, "block member " for a member) for the report.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Kind {
     /// Material index.
@@ -24,6 +24,9 @@ pub(super) struct Kind {
     pub mass: f64,
     /// The pairing's name starts with this.
     pub what: &'static str,
+    /// Held fixed: it meets no wall and no other fixed sphere, and a sphere that meets it
+    /// springs back with its own mass.
+    pub fixed: bool,
 }
 
 /// The kinds present: every material with its smallest and largest radius (at the start or
@@ -42,25 +45,32 @@ pub(super) fn kinds(
         materials.list[m as usize].density * 4.0 / 3.0 * std::f64::consts::PI * r.powi(3)
     };
     for m in 0..materials.list.len() as u16 {
-        let radii = spheres
-            .radius
-            .iter()
-            .zip(&spheres.material)
-            .zip(&spheres.body)
-            .filter(|((_, &mm), &b)| mm == m && b == NO_BODY)
-            .map(|((r, _), _)| *r);
-        let feed = feeders
-            .iter()
-            .flat_map(|f| f.classes.iter())
-            .filter(|c| c.material == m)
-            .map(|c| 0.5 * c.diameter);
-        let all: Vec<f64> = radii.chain(feed).collect();
-        if let (Some(lo), Some(hi)) = (
-            all.iter().cloned().reduce(f64::min),
-            all.iter().cloned().reduce(f64::max),
-        ) {
-            note(&mut kinds, m, lo, ball(m, lo), "");
-            note(&mut kinds, m, hi, ball(m, hi), "");
+        for fixed in [false, true] {
+            let radii = (0..spheres.len())
+                .filter(|&k| {
+                    spheres.material[k] == m
+                        && spheres.body[k] == NO_BODY
+                        && spheres.fixed[k] == fixed
+                })
+                .map(|k| spheres.radius[k]);
+            let feed = feeders
+                .iter()
+                .flat_map(|f| f.classes.iter())
+                .filter(|c| c.material == m && !fixed)
+                .map(|c| 0.5 * c.diameter);
+            let all: Vec<f64> = radii.chain(feed).collect();
+            if let (Some(lo), Some(hi)) = (
+                all.iter().cloned().reduce(f64::min),
+                all.iter().cloned().reduce(f64::max),
+            ) {
+                for r in [lo, hi] {
+                    let (mass, what) = match fixed {
+                        false => (ball(m, r), ""),
+                        true => (f64::INFINITY, "fixed "),
+                    };
+                    note(&mut kinds, (m, r, mass), what, fixed);
+                }
+            }
         }
     }
     member_kinds(src, materials, rigid, &mut kinds)?;
@@ -89,24 +99,31 @@ fn member_kinds(
         let light = by(&|b, a| masses[b] < masses[a]);
         let big = by(&|b, a| tpl.members[b].radius > tpl.members[a].radius);
         for k in [light, big] {
-            note(kinds, m, tpl.members[k].radius, masses[k], "block member ");
+            let kind = (m, tpl.members[k].radius, masses[k]);
+            note(kinds, kind, "block member ", false);
         }
     }
     Ok(())
 }
 
-/// Adds a kind unless one of the same material, radius and mass is there.
-fn note(kinds: &mut Vec<Kind>, material: u16, radius: f64, mass: f64, what: &'static str) {
-    let same = |x: f64, y: f64| (x - y).abs() <= 1e-9 * x.abs().max(y.abs());
-    if !kinds
-        .iter()
-        .any(|k| k.material == material && same(k.radius, radius) && same(k.mass, mass))
-    {
+/// Adds a kind (material, radius [m], mass [kg]) unless one of the same material, radius and
+/// mass is there.
+fn note(
+    kinds: &mut Vec<Kind>,
+    (material, radius, mass): (u16, f64, f64),
+    what: &'static str,
+    fixed: bool,
+) {
+    let same = |x: f64, y: f64| x == y || (x - y).abs() <= 1e-9 * x.abs().max(y.abs());
+    if !kinds.iter().any(|k| {
+        k.material == material && same(k.radius, radius) && same(k.mass, mass) && k.fixed == fixed
+    }) {
         kinds.push(Kind {
             material,
             radius,
             mass,
             what,
+            fixed,
         });
     }
 }
@@ -126,9 +143,18 @@ pub(super) fn pairings(
     for (a, ka) in kinds.iter().enumerate() {
         let (ma, ra, mass_a) = (ka.material as usize, ka.radius, ka.mass);
         for kb in &kinds[a..] {
+            if ka.fixed && kb.fixed {
+                continue;
+            }
             let (mb, rb, mass_b) = (kb.material as usize, kb.radius, kb.mass);
             let law = &laws[ma * n_mat + mb];
-            let (r_star, m_star) = (ra * rb / (ra + rb), mass_a * mass_b / (mass_a + mass_b));
+            // Against a fixed sphere the other springs back with its own mass.
+            let m_star = match (ka.fixed, kb.fixed) {
+                (true, _) => mass_b,
+                (_, true) => mass_a,
+                _ => harmonic(mass_a, mass_b),
+            };
+            let r_star = ra * rb / (ra + rb);
             let name = format!(
                 "{}{} d={:.4} / {}{} d={:.4}",
                 ka.what,
@@ -142,7 +168,7 @@ pub(super) fn pairings(
             pairings.push((name, contact_scales(law, r_star, m_star, v_ref, weight)));
         }
         let mut seen = Vec::new();
-        for w in walls {
+        for w in walls.iter().filter(|_| !ka.fixed) {
             if seen.contains(&w.material) {
                 continue;
             }

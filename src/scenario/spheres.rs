@@ -598,6 +598,11 @@ pub(super) fn check_walls(
             .clone()
             .unwrap_or_else(|| format!("{}{w}", wall.kind()));
         for (k, &x) in s.position.iter().enumerate() {
+            // A fixed sphere does not meet walls (`dem::wall_contacts`): the under-layer's
+            // stones are centred on its plane.
+            if s.fixed[k] {
+                continue;
+            }
             let wrong = match wall {
                 WallSection::Plane(p) => {
                     let n = v3(p.normal).normalize_or_zero();

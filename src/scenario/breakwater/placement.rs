@@ -49,6 +49,9 @@ pub struct UnitLayer {
     pub x_range: (f64, f64),
     /// The domain's top [m].
     pub z_max: f64,
+    /// Fixed spheres the units rest on besides the plane and the bed, in slope coordinates
+    /// [s, y, η, r] [m] (the under-layer's top stones).
+    pub underlayer: Vec<[f64; 4]>,
 }
 
 impl UnitLayer {
@@ -125,16 +128,22 @@ impl Placed3 {
             .iter()
             .map(|(o, r)| o.length() + r)
             .fold(0.0, f64::max);
-        let r_max = unit.members.iter().map(|m| m.1).fold(0.0, f64::max);
+        let r_max = (unit.members.iter().map(|m| m.1))
+            .chain(layer.underlayer.iter().map(|u| u[3]))
+            .fold(0.0, f64::max);
         let bin = 2.0 * r_max + layer.gap;
         let s0 = -reach;
         let n = ((layer.length + 2.0 * reach) / bin).ceil() as usize + 1;
-        Placed3 {
+        let mut placed = Placed3 {
             bins: vec![Vec::new(); n],
             s0,
             bin,
             r_max,
+        };
+        for &[s, y, eta, r] in &layer.underlayer {
+            placed.insert(Sphere { s, y, eta, r });
         }
+        placed
     }
 
     fn index(&self, s: f64) -> usize {
@@ -393,6 +402,7 @@ mod tests {
             periodic_y: true,
             x_range: (0.0, 3.0),
             z_max: 1.0,
+            underlayer: Vec::new(),
         }
     }
 

@@ -12,7 +12,9 @@
 //! Buoyancy does not unsettle what settled dry: it scales the weight and every normal contact
 //! force alike, so a heap held by friction dry is held under water.
 
-use super::super::schema::{BlockEntry, BlockSet, ListBlocks, OutputSection, WallSection};
+use super::super::schema::{
+    BlockEntry, BlockSet, ListBlocks, OutputSection, SphereSet, WallSection,
+};
 use super::super::{build, ScenarioError, Source};
 
 /// What the dry settling did, for `riprap check`.
@@ -35,12 +37,12 @@ pub struct Settled {
     pub max_overlap_ratio: f64,
 }
 
-/// Settles `units` (the armour list) dry for `time` [s] on the scenario's walls and `walls`
-/// (the section's planes); returns them moved and at rest. `key` names the setting in errors.
+/// Settles `units` (the armour list) dry for `time` [s] on the scenario's walls, `walls` (the
+/// section's planes) and `stones` (the under-layer's, fixed); returns them moved and at rest. `key` names the setting in errors.
 pub(super) fn settle(
     src: &Source,
     units: &ListBlocks,
-    walls: &[WallSection],
+    (walls, stones): (&[WallSection], &Option<SphereSet>),
     time: f64,
     key: &str,
 ) -> Result<(ListBlocks, Settled), ScenarioError> {
@@ -48,7 +50,7 @@ pub(super) fn settle(
     sc.run.end_time = time;
     sc.walls.extend(walls.iter().cloned());
     sc.blocks = vec![BlockSet::List(units.clone())];
-    sc.spheres.clear();
+    sc.spheres = stones.iter().cloned().collect();
     sc.wires.clear();
     sc.bonds.clear();
     sc.fluid = None;
