@@ -347,6 +347,9 @@ fn the_lab_example_places_its_double_layer_and_check_reports_its_sea() {
         "zones 0 to 64 (one medium): [3.21, 0, 0] to [4.9, 0.18, 0.01] m, …, [4.49, 0, 0.64] to",
         "settled dry before the run (settle_time): 1.5 s, 10000 DEM steps",
         "under-layer stones: 900 fixed spheres of 0.018 m on the plane and the bed (0.45 D_n)",
+        // The coarse grid's drag, measured by validation sphere_drag, is stated.
+        "drag is over-predicted where their boundary layer (d/√Re) is thinner than a cell",
+        "here Re = U d/ν = 5.7e4 at the velocity scale for d = 3.2307e-2 m at d/Δ = 3.23",
     ] {
         assert!(report.contains(needle), "no `{needle}` in\n{report}");
     }

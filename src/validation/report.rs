@@ -29,7 +29,9 @@ use super::channel180::{
 use super::cylinder_strouhal::{cylinder_level, roshko_1954, run_cylinder};
 use super::morison_sphere::Shape;
 use super::sheet_flow::sections::{self, CaseFive};
-use super::sphere_drag::{run_sphere_drag, sphere_drag_level, standard_drag_curve};
+use super::sphere_drag::{
+    run_sphere_drag, sphere_drag_level, sphere_drag_resolution, standard_drag_curve,
+};
 use crate::coupling::drag::{clift_grace_weber_1978, schiller_naumann_1933};
 use crate::io::plot::{line_plot, Axes, LineStyle, Series};
 
@@ -294,8 +296,52 @@ fn sphere_drag_section(out: &Path, quick: bool, md: &mut String) -> anyhow::Resu
         ],
     )?;
     md.push_str("\n![C_D against Re](sphere_drag.png)\n");
+    if !quick {
+        all &= sphere_drag_resolution_rows(md);
+    }
     let _ = writeln!(md, "\nVerdict: {}\n", if all { "pass" } else { "FAIL" });
     Ok(all)
+}
+
+/// The full level's rows at Re = 10⁴ and d/Δ = 4, 6, 8: C_D over the curve, reported; the
+/// verdict asks that it fall as the grid is refined.
+fn sphere_drag_resolution_rows(md: &mut String) -> bool {
+    md.push_str(
+        "\nAt an armour unit's Reynolds number (reported; the check: C_D falls toward the curve \
+         as d/Δ grows):\n\n| Re | d/Δ | steps | C_D riprap | C_D standard | ratio |\n\
+         |---:|---:|---:|---:|---:|---:|\n",
+    );
+    let mut last = f64::INFINITY;
+    let mut falls = true;
+    for case in sphere_drag_resolution() {
+        let r = run_sphere_drag(&case);
+        falls &= r.drag_coefficient < last;
+        last = r.drag_coefficient;
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {:.3} | {:.3} | {:.2} |",
+            case.re,
+            case.cells_per_diameter,
+            r.steps,
+            r.drag_coefficient,
+            r.reference,
+            r.drag_coefficient / r.reference
+        );
+        eprintln!(
+            "sphere drag Re {} at d/Δ {}: C_D {:.3}, {:.2} × the standard {:.3}",
+            case.re,
+            case.cells_per_diameter,
+            r.drag_coefficient,
+            r.drag_coefficient / r.reference,
+            r.reference
+        );
+    }
+    let _ = writeln!(
+        md,
+        "\nC_D falls as d/Δ grows: {}",
+        if falls { "yes (pass)" } else { "no (FAIL)" }
+    );
+    falls
 }
 
 /// Case 2 of the coupling: Strouhal number of a fixed cylinder against Roshko (1954).

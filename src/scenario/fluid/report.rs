@@ -202,6 +202,9 @@ impl FluidDerived {
                 }
             }
         }
+        if let Some(w2) = self.coarse_drag() {
+            w.push(w2);
+        }
         if let Some(dt) = self.dem_step {
             if self.fluid_step < dt {
                 w.push(format!(
@@ -213,6 +216,28 @@ impl FluidDerived {
             }
         }
         w
+    }
+
+    /// The over-predicted drag of resolved spheres at a high Reynolds number on a coarse grid
+    /// (validation `sphere_drag`, full level: a fixed sphere at Re = 10⁴).
+    fn coarse_drag(&self) -> Option<String> {
+        let ((_, r), (_, d), from) = (
+            self.cells_per_diameter()?,
+            self.diameters?,
+            self.resolved_from?,
+        );
+        let u = self.velocity_scale.abs().max_element();
+        let re = u * d / self.parameters.kinematic_viscosity;
+        (r >= from && re >= 1.0e3).then(|| {
+            format!(
+                "the resolved spheres' drag is over-predicted where their boundary layer \
+                 (d/√Re) is thinner than a cell: a fixed sphere at Re = 10⁴ has C_D 2.5, 1.65 \
+                 and 1.55 times the standard curve at d/Δ = 4, 6 and 8 (validation \
+                 sphere_drag, full level); here Re = U d/ν = {re:.1e} at the velocity scale for \
+                 d = {d:.4e} m at d/Δ = {r:.2}: the forces on the spheres, and what they move, \
+                 come out too large"
+            )
+        })
     }
 
     /// The lines `riprap check` prints.
