@@ -477,6 +477,34 @@ fn a_settled_layer_of_turned_templates_starts_as_it_settled() {
     );
 }
 
+/// The dry layer of `text`, built, its contact laws given the friction `mu(k)` of law k where
+/// that is some: the median unit's move from 0.3 to 0.6 s [m], with the scenario.
+fn median_slide(text: &str, mu: impl Fn(usize) -> Option<f64>) -> (Source, f64) {
+    let src = source(text).unwrap_or_else(|e| panic!("{e}"));
+    let mut sim = build(&src).unwrap_or_else(|e| panic!("{e}")).simulation;
+    for (k, l) in sim.dem.laws.iter_mut().enumerate() {
+        if let Some(mu) = mu(k) {
+            l.mixed.friction = mu;
+            l.k = l.model.constants(&l.mixed);
+        }
+    }
+    let mut go = |end: f64| {
+        while !sim.reached(end) {
+            sim.step_towards(end).unwrap_or_else(|e| panic!("{e}"));
+        }
+        sim.rigid.blocks.centre.clone()
+    };
+    let (half, end) = (go(0.3), go(0.6));
+    let domain = sim.dem.domain;
+    let mut moves: Vec<f64> = half
+        .iter()
+        .zip(&end)
+        .map(|(&a, &b)| domain.minimum_image(b - a).length())
+        .collect();
+    moves.sort_by(f64::total_cmp);
+    (src, moves[moves.len() / 2])
+}
+
 /// `wires`: each unit tied to its three nearest neighbours up the slope and the top ones to
 /// the crest hold a layer that would slide. On a slope of nearly no friction (μ = 0.05 against
 /// tan α = 0.5) the dry layer, settled first on the example's friction, slides away unwired,
@@ -489,36 +517,12 @@ fn wires_hold_a_layer_that_would_slide() {
         "gap = 0.001                    # m: above the plane, and between stones\n",
         "gap = 0.001\nsettle_time = 1.0\n",
     );
-    // The median unit's move from 0.3 to 0.6 s [m].
-    let slippery = |text: &str| {
-        let src = source(text).unwrap_or_else(|e| panic!("{e}"));
-        let mut sim = build(&src).unwrap_or_else(|e| panic!("{e}")).simulation;
-        for l in sim.dem.laws.iter_mut() {
-            l.mixed.friction = 0.05;
-            l.k = l.model.constants(&l.mixed);
-        }
-        let mut go = |end: f64| {
-            while !sim.reached(end) {
-                sim.step_towards(end).unwrap_or_else(|e| panic!("{e}"));
-            }
-            sim.rigid.blocks.centre.clone()
-        };
-        let (half, end) = (go(0.3), go(0.6));
-        let domain = sim.dem.domain;
-        let mut moves: Vec<f64> = half
-            .iter()
-            .zip(&end)
-            .map(|(&a, &b)| domain.minimum_image(b - a).length())
-            .collect();
-        moves.sort_by(f64::total_cmp);
-        (src, moves[moves.len() / 2])
-    };
-    let (_, free) = slippery(&settled);
+    let (_, free) = median_slide(&settled, |_| Some(0.05));
     let wired = settled.replace(
         "settle_time = 1.0\n",
         "settle_time = 1.0\nwires = { stiffness = 2.0e4 }\n",
     );
-    let (src, held) = slippery(&wired);
+    let (src, held) = median_slide(&wired, |_| Some(0.05));
     let l = src.breakwater.as_ref().unwrap().linked.unwrap();
     eprintln!(
         "wires {l:?}: the median unit's move from 0.3 to 0.6 s {held:.3e} m wired, \
@@ -561,39 +565,14 @@ fn the_underlayer_stones_hold_a_layer_that_slides_on_the_smooth_plane() {
             "material = \"rock\"              # of the under-layer plane",
             "material = \"filter\"            # of the under-layer plane",
         );
-    // The median unit's move from 0.3 to 0.6 s [m].
-    let sliding = |text: &str| {
-        let src = source(text).unwrap_or_else(|e| panic!("{e}"));
-        let mut sim = build(&src).unwrap_or_else(|e| panic!("{e}")).simulation;
-        let n = sim.dem.materials.len();
-        for (k, l) in sim.dem.laws.iter_mut().enumerate() {
-            if k / n == 1 || k % n == 1 {
-                l.mixed.friction = 0.3;
-                l.k = l.model.constants(&l.mixed);
-            }
-        }
-        let mut go = |end: f64| {
-            while !sim.reached(end) {
-                sim.step_towards(end).unwrap_or_else(|e| panic!("{e}"));
-            }
-            sim.rigid.blocks.centre.clone()
-        };
-        let (half, end) = (go(0.3), go(0.6));
-        let domain = sim.dem.domain;
-        let mut moves: Vec<f64> = half
-            .iter()
-            .zip(&end)
-            .map(|(&a, &b)| domain.minimum_image(b - a).length())
-            .collect();
-        moves.sort_by(f64::total_cmp);
-        (src, moves[moves.len() / 2])
-    };
-    let (_, smooth) = sliding(&settled);
+    // The laws of the pairs with material 1, the filter, of n = 2.
+    let filter = |k: usize| (k / 2 == 1 || k % 2 == 1).then_some(0.3);
+    let (_, smooth) = median_slide(&settled, filter);
     let rough = settled.replace(
         "[breakwater.armour]",
         "underlayer_stones = 0.018\n\n[breakwater.armour]",
     );
-    let (src, held) = sliding(&rough);
+    let (src, held) = median_slide(&rough, filter);
     let (n, d) = src.breakwater.as_ref().unwrap().underlayer.unwrap();
     eprintln!(
         "{n} under-layer stones of {d} m: the median unit's move from 0.3 to 0.6 s {held:.3e} m \

@@ -379,31 +379,38 @@ pub fn pattern(
     Ok((out, across))
 }
 
+/// The layer the tests place on: a 1:2 slope 0.3 m high from x = 1 m, 0.18 m across and
+/// periodic, 1 mm gap, a 0.12 m release zone.
+#[cfg(test)]
+pub(super) fn test_layer() -> UnitLayer {
+    UnitLayer {
+        slope: Slope {
+            toe_x: 1.0,
+            toe_z: 0.0,
+            cot_alpha: 2.0,
+            y_min: 0.0,
+            width: 0.18,
+        },
+        length: 0.3 * 5f64.sqrt(),
+        bed_z: Some(0.0),
+        gap: 0.001,
+        ceiling: 0.12,
+        max_tilt: std::f64::consts::PI,
+        // Through the top of the release zone over the toe, as `breakwater::unit_layer`.
+        toe_face: (1.0 - 0.12 * 5f64.sqrt() / 2.0 * 1.5, 1.5),
+        periodic_y: true,
+        x_range: (0.0, 3.0),
+        z_max: 1.0,
+        underlayer: Vec::new(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn layer() -> UnitLayer {
-        UnitLayer {
-            slope: Slope {
-                toe_x: 1.0,
-                toe_z: 0.0,
-                cot_alpha: 2.0,
-                y_min: 0.0,
-                width: 0.18,
-            },
-            length: 0.3 * 5f64.sqrt(),
-            bed_z: Some(0.0),
-            gap: 0.001,
-            ceiling: 0.12,
-            max_tilt: std::f64::consts::PI,
-            // Through the top of the release zone over the toe, as `breakwater::unit_layer`.
-            toe_face: (1.0 - 0.12 * 5f64.sqrt() / 2.0 * 1.5, 1.5),
-            periodic_y: true,
-            x_range: (0.0, 3.0),
-            z_max: 1.0,
-            underlayer: Vec::new(),
-        }
+        test_layer()
     }
 
     fn flat_stone() -> Unit {

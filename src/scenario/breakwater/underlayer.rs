@@ -82,28 +82,9 @@ pub fn in_slope_frame(layer: &UnitLayer, centres: &[Vec3], d: f64) -> Vec<[f64; 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::armour::slope::Slope;
 
     fn layer() -> UnitLayer {
-        UnitLayer {
-            slope: Slope {
-                toe_x: 1.0,
-                toe_z: 0.0,
-                cot_alpha: 2.0,
-                y_min: 0.0,
-                width: 0.18,
-            },
-            length: 0.3 * 5f64.sqrt(),
-            bed_z: Some(0.0),
-            gap: 0.001,
-            ceiling: 0.12,
-            max_tilt: std::f64::consts::PI,
-            toe_face: (0.8, 1.5),
-            periodic_y: true,
-            x_range: (0.0, 3.0),
-            z_max: 1.0,
-            underlayer: Vec::new(),
-        }
+        super::super::placement::test_layer()
     }
 
     /// The nearest of two stones, across the periodic width.
@@ -138,6 +119,7 @@ mod tests {
         assert!((closest(&l, &c) - a).abs() < 1e-9, "{}", closest(&l, &c));
         // The bed is covered to where the toe's face meets it, and a stone beyond.
         let front = c.iter().map(|p| p.x).fold(f64::INFINITY, f64::min);
-        assert!(front <= 0.8 && front >= 0.8 - d - h, "{front}");
+        let foot = l.toe_face.0;
+        assert!(front <= foot && front >= foot - d - h, "{front}");
     }
 }
