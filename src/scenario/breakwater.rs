@@ -254,7 +254,7 @@ pub(super) fn expand(src: &mut Source) -> Result<Option<BreakwaterSummary>, Scen
         let BlockSet::List(units) = &e.blocks else {
             unreachable!("the section places its units as a list")
         };
-        let (units, settled) = settle::settle(src, units, (&e.walls, &e.stones), t, key)?;
+        let (units, settled) = settle::settle(src, units, (&e.walls, e.stones.as_ref()), t, key)?;
         e.blocks = BlockSet::List(units);
         e.summary.settled = Some(settled);
     }
@@ -506,7 +506,7 @@ fn expansion(src: &Source, b: &BreakwaterSection) -> Result<Expansion, ScenarioE
             }
             let centres = underlayer::stones(&layer, d);
             layer.underlayer = underlayer::in_slope_frame(&layer, &centres, d);
-            Some(underlayer_set(&centres, d, &material))
+            Some((centres, d))
         }
         None => None,
     };
@@ -566,19 +566,13 @@ fn expansion(src: &Source, b: &BreakwaterSection) -> Result<Expansion, ScenarioE
         armour_defaulted: src.scenario.armour.is_none(),
         fall: n as f64 * gap,
         crown_wall: crown.is_some(),
-        underlayer: b
-            .underlayer_stones
-            .zip(stones.as_ref())
-            .map(|(d, s)| match s {
-                SphereSet::List(l) => (l.spheres.len(), d),
-                _ => unreachable!("the stones are a list"),
-            }),
+        underlayer: stones.as_ref().map(|(c, d)| (c.len(), *d)),
         settled: None,
         linked: None,
     };
     Ok(Expansion {
         walls,
-        stones,
+        stones: stones.map(|(c, d)| underlayer_set(&c, d, &material)),
         blocks,
         porous,
         crown,

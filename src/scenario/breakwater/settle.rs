@@ -38,11 +38,12 @@ pub struct Settled {
 }
 
 /// Settles `units` (the armour list) dry for `time` [s] on the scenario's walls, `walls` (the
-/// section's planes) and `stones` (the under-layer's, fixed); returns them moved and at rest. `key` names the setting in errors.
+/// section's planes) and `stones` (the under-layer's, fixed); returns them moved and at rest.
+/// `key` names the setting in errors.
 pub(super) fn settle(
     src: &Source,
     units: &ListBlocks,
-    (walls, stones): (&[WallSection], &Option<SphereSet>),
+    (walls, stones): (&[WallSection], Option<&SphereSet>),
     time: f64,
     key: &str,
 ) -> Result<(ListBlocks, Settled), ScenarioError> {
@@ -50,7 +51,7 @@ pub(super) fn settle(
     sc.run.end_time = time;
     sc.walls.extend(walls.iter().cloned());
     sc.blocks = vec![BlockSet::List(units.clone())];
-    sc.spheres = stones.iter().cloned().collect();
+    sc.spheres = stones.into_iter().cloned().collect();
     sc.wires.clear();
     sc.bonds.clear();
     sc.fluid = None;
