@@ -5,7 +5,8 @@ The same scenarios, checks, runs and bits as the ``riprap`` command (docs/PYTHON
 * ``riprap.check(scenario)``: a TOML path or a dict, checked; the derived quantities as a dict
 * ``riprap.run(scenario, output=...)``: ``riprap run``, the same files and checkpoints
 * ``riprap.Simulation(scenario)``: step it (``advance``, ``run_until``), read and set its state
-  as numpy arrays between steps; ``riprap.drive`` calls a function at output times
+  as numpy arrays between steps; ``riprap.drive`` calls a function at output times. A
+  ``[shallow]`` scenario gives a ``riprap.ShallowSimulation`` (depth, discharges, bed, debris)
 * ``riprap.Results(folder)``: a run's series, probes, blocks, gauges as numpy arrays or pandas
   frames
 
@@ -15,6 +16,7 @@ Bad input raises ``riprap.ScenarioInputError`` (a ValueError) whose ``key`` name
 from ._riprap import (
     InstabilityError,
     ScenarioInputError,
+    ShallowSimulation,
     Simulation,
     __version__,
     check,
@@ -29,6 +31,7 @@ __all__ = [
     "InstabilityError",
     "Results",
     "ScenarioInputError",
+    "ShallowSimulation",
     "Simulation",
     "__version__",
     "check",

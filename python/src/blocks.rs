@@ -62,17 +62,14 @@ pub fn add(
     Ok(id)
 }
 
-/// Removes the blocks `ids` with their members (not in a scenario with wires or bonds, whose
-/// ends name blocks and spheres). Returns how many blocks went.
+/// Removes the blocks `ids` with their members, and the wires and bonds attached to them
+/// (`RigidBodies::remove_links_to`: the other links keep their order). Returns how many
+/// blocks went.
 pub fn remove(sim: &mut Simulation, ids: &[u32]) -> PyResult<usize> {
     let rigid = &mut sim.rigid;
-    if !(rigid.wires.is_empty() && rigid.bonds.is_empty()) {
-        return Err(PyValueError::new_err(
-            "remove_blocks: not in a scenario with wires or bonds",
-        ));
-    }
     let s = &sim.dem.spheres;
     let mut keep = vec![true; s.len()];
+    let mut members = Vec::new();
     for &id in ids {
         let Some(b) = rigid.blocks.slot_of(id) else {
             return Err(PyValueError::new_err(format!(
@@ -80,11 +77,13 @@ pub fn remove(sim: &mut Simulation, ids: &[u32]) -> PyResult<usize> {
             )));
         };
         for m in rigid.blocks.member_ids(b) {
+            members.push(*m);
             if let Some(k) = s.slot_of(*m) {
                 keep[k] = false;
             }
         }
     }
+    rigid.remove_links_to(ids, &members);
     let removed = rigid.drop_partial_blocks(s, &mut keep);
     sim.dem.spheres.retain(&keep);
     Ok(removed)

@@ -12,6 +12,7 @@
 mod blocks;
 mod dict;
 mod flow;
+mod shallow;
 mod sim;
 
 use std::path::PathBuf;
@@ -384,6 +385,7 @@ fn _riprap(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(set_threads, m)?)?;
     m.add_function(wrap_pyfunction!(threads, m)?)?;
     m.add_class::<sim::PySimulation>()?;
+    m.add_class::<shallow::PyShallow>()?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -18,14 +18,18 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use riprap::dem::spheres::{NewSphere, NO_BODY};
 use riprap::dem::walls::Motion;
-use riprap::io::checkpoint::Checkpoint;
+use riprap::io::blocks::DisplacementReference;
+use riprap::io::checkpoint::{ArmourState, Checkpoint};
 use riprap::math::Vec3;
+use riprap::rigid::bodies::LinkEnd;
+use riprap::run::armour::ArmourCounters;
 use riprap::run::fingerprint::{self, Fingerprint};
 use riprap::run::{checkpoint_of, flow, restore, series_row};
 use riprap::scenario::{build, Source};
 use riprap::simulation::Simulation;
 
-use crate::{instability, load, scenario_error, Loaded};
+use crate::shallow::PyShallow;
+use crate::{instability, load, runtime_error, scenario_error, Loaded};
 
 /// A chunk of steps between two looks at Ctrl-C doubles until it takes this long.
 const CHUNK: Duration = Duration::from_millis(50);
@@ -40,6 +44,10 @@ pub struct PySimulation {
     one_step: OneStep,
     /// The DEM steps of the next chunk (`drive`).
     chunk: u64,
+    /// `[output] displacement_reference_time` while it is ahead (the CLI's `DisplacementReference`).
+    reference: DisplacementReference,
+    /// `[armour]`'s reference and rocking counters, which checkpoints carry (the CLI's).
+    armour: Option<ArmourCounters>,
 }
 
 /// Where a chunk of one step runs: on a worker of the pool, which costs a round trip to wake
@@ -140,14 +148,36 @@ impl PySimulation {
     fn of(src: Source) -> PyResult<PySimulation> {
         let built = build(&src).map_err(scenario_error)?;
         let fingerprint = fingerprint::fingerprint(&src, &built.simulation);
-        Ok(PySimulation {
+        let mut s = PySimulation {
             sim: built.simulation,
             report: built.derived.report(),
             src,
             fingerprint,
             one_step: OneStep::default(),
             chunk: 1,
-        })
+            reference: DisplacementReference::new(None, 0.0, &Default::default()),
+            armour: None,
+        };
+        s.bookkeeping(None)?;
+        Ok(s)
+    }
+
+    /// The displacement reference and `[armour]`'s counters for the present state, as `riprap
+    /// run` opens them (from `saved`, a checkpoint's armour state, on a restart).
+    fn bookkeeping(&mut self, saved: Option<ArmourState>) -> PyResult<()> {
+        let t_ref = self.src.scenario.output.displacement_reference_time;
+        self.reference = DisplacementReference::new(t_ref, self.sim.time, &self.sim.rigid);
+        self.armour = ArmourCounters::of(&self.src, &self.sim, saved).map_err(runtime_error)?;
+        if let Some(a) = &mut self.armour {
+            a.begin(&self.sim, self.reference.pending());
+        }
+        Ok(())
+    }
+
+    /// Whether each step must be followed by the bookkeeping (then steps go one by one, as the
+    /// CLI takes them).
+    fn per_step(&self) -> bool {
+        self.reference.pending() || self.armour.is_some()
     }
 
     /// Steps with the GIL released on a worker of rayon's pool (a one-step chunk perhaps on
@@ -175,7 +205,15 @@ impl PySimulation {
             } else {
                 chunk.min(steps)
             };
-            let sim = &mut self.sim;
+            let per_step = self.per_step();
+            let (sim, reference, armour) = (&mut self.sim, &mut self.reference, &mut self.armour);
+            // After each step, as the CLI's loop: the displacement reference, then the armour.
+            let mut after = |sim: &mut Simulation| {
+                reference.after_step(&mut sim.rigid, sim.time);
+                if let Some(a) = armour.as_mut() {
+                    a.after_step(sim, reference.pending());
+                }
+            };
             let clock = Instant::now();
             let on_caller = k == 1 && self.one_step.on_caller();
             let r = py.detach(|| {
@@ -186,6 +224,14 @@ impl PySimulation {
                                 break;
                             }
                             sim.step_towards(end)?;
+                            after(sim);
+                        }
+                        Ok(())
+                    }
+                    None if per_step => {
+                        for _ in 0..k {
+                            sim.advance(1)?;
+                            after(sim);
                         }
                         Ok(())
                     }
@@ -230,31 +276,34 @@ impl PySimulation {
 #[pymethods]
 impl PySimulation {
     /// Loads, checks and builds a scenario: a path to a TOML file, or a dict of the same
-    /// tables (paths inside it relative to `base_dir`, default the current folder).
+    /// tables (paths inside it relative to `base_dir`, default the current folder). A
+    /// `[shallow]` scenario gives a `riprap.ShallowSimulation` (`shallow.rs`).
     #[new]
     #[pyo3(signature = (scenario, base_dir = None))]
-    fn new(scenario: &Bound<'_, PyAny>, base_dir: Option<PathBuf>) -> PyResult<Self> {
+    fn create(
+        py: Python<'_>,
+        scenario: &Bound<'_, PyAny>,
+        base_dir: Option<PathBuf>,
+    ) -> PyResult<Py<PyAny>> {
         match load(scenario, base_dir)? {
-            Loaded::Dem(src) => PySimulation::of(src),
-            Loaded::Shallow(src) => Err(PyValueError::new_err(format!(
-                "{}: a shallow-water scenario ([shallow]) runs with riprap.run(); \
-                 riprap.Simulation steps the DEM and the 3D flow",
-                src.file
-            ))),
+            Loaded::Dem(src) => Ok(Py::new(py, PySimulation::of(src)?)?.into_any()),
+            Loaded::Shallow(src) => Ok(Py::new(py, PyShallow::of(src)?)?.into_any()),
         }
     }
 
     /// Builds the scenario and puts the state of `checkpoint` (written by `riprap run`, by
-    /// `riprap.run` or by `save_checkpoint` for the same scenario) into it.
+    /// `riprap.run` or by `save_checkpoint` for the same scenario) into it (a `[shallow]`
+    /// scenario: a `ShallowSimulation` from its checkpoint).
     #[staticmethod]
     #[pyo3(signature = (scenario, checkpoint, base_dir = None))]
     fn from_checkpoint(
         scenario: &Bound<'_, PyAny>,
         checkpoint: PathBuf,
         base_dir: Option<PathBuf>,
-    ) -> PyResult<Self> {
-        let mut s = PySimulation::new(scenario, base_dir)?;
-        s.load_checkpoint(checkpoint)?;
+    ) -> PyResult<Py<PyAny>> {
+        let py = scenario.py();
+        let s = PySimulation::create(py, scenario, base_dir)?;
+        s.bind(py).call_method1("load_checkpoint", (checkpoint,))?;
         Ok(s)
     }
 
@@ -262,7 +311,8 @@ impl PySimulation {
     /// (the time step, the scenario's fingerprint, the flow's grid).
     fn load_checkpoint(&mut self, path: PathBuf) -> PyResult<()> {
         let err = |e: String| PyRuntimeError::new_err(e);
-        let ck = Checkpoint::read(&path).map_err(|e| err(format!("{}: {e}", path.display())))?;
+        let mut ck =
+            Checkpoint::read(&path).map_err(|e| err(format!("{}: {e}", path.display())))?;
         let built = build(&self.src).map_err(scenario_error)?;
         let dt = built.simulation.dem.dt;
         if ck.dt.to_bits() != dt.to_bits() {
@@ -283,15 +333,17 @@ impl PySimulation {
             }
         }
         flow::check_restart(&built.simulation, &ck, &path).map_err(|e| err(format!("{e:#}")))?;
+        let saved = ck.armour.take();
         self.sim = restore(built.simulation, ck);
-        Ok(())
+        self.bookkeeping(saved)
     }
 
     /// Writes a checkpoint that `riprap run --restart` (or `load_checkpoint`) continues bit
-    /// for bit. An `[armour]` scenario's damage counters are not in it.
+    /// for bit, with an `[armour]` scenario's reference and rocking counters as the CLI's.
     fn save_checkpoint(&self, path: PathBuf) -> PyResult<()> {
         let mut ck = checkpoint_of(&self.sim);
         ck.fingerprint = self.fingerprint.clone();
+        ck.armour = self.armour.as_ref().and_then(ArmourCounters::state);
         ck.write(&path).map_err(|e| {
             PyRuntimeError::new_err(format!(
                 "{}: cannot write the checkpoint: {e}",
@@ -549,8 +601,9 @@ impl PySimulation {
         Ok(id)
     }
 
-    /// Removes the spheres with these ids between steps (not block members); returns how
-    /// many were removed. An id not present is an error.
+    /// Removes the spheres with these ids between steps (not block members), with the bonds
+    /// on them (the other links keep their order); returns how many spheres were removed. An
+    /// id not present is an error.
     fn remove_spheres(&mut self, ids: Vec<u32>) -> PyResult<usize> {
         let s = &self.sim.dem.spheres;
         let mut keep = vec![true; s.len()];
@@ -569,6 +622,7 @@ impl PySimulation {
             keep[i] = false;
         }
         let removed = keep.iter().filter(|k| !**k).count();
+        self.sim.rigid.remove_links_to(&[], &ids);
         self.sim.dem.spheres.retain(&keep);
         self.relist();
         Ok(removed)
@@ -602,12 +656,68 @@ impl PySimulation {
         Ok(id)
     }
 
-    /// Removes the blocks with these ids, with their member spheres, between steps (not in
-    /// a scenario with wires or bonds, whose ends would be left dangling); returns how many.
+    /// Removes the blocks with these ids, with their member spheres and every wire and bond
+    /// attached to them, between steps; returns how many blocks went. The other links keep
+    /// their order (their indices in `wire_ends`, `bond_spheres` and breakages.csv shift
+    /// down past the removed ones).
     fn remove_blocks(&mut self, ids: Vec<u32>) -> PyResult<usize> {
         let removed = crate::blocks::remove(&mut self.sim, &ids)?;
         self.relist();
         Ok(removed)
+    }
+
+    /// The wires' ends (w, 2): the block id of each end, −1 for a fixed point; in
+    /// `[[wire]]` order.
+    #[getter]
+    fn wire_ends<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<i64>>> {
+        let w = &self.sim.rigid.wires;
+        let ends: Vec<i64> = (w.iter().flat_map(|w| w.ends))
+            .map(|e| match e {
+                LinkEnd::Block { block, .. } => block as i64,
+                LinkEnd::Fixed(_) => -1,
+            })
+            .collect();
+        PyArray1::from_vec(py, ends).reshape([w.len(), 2])
+    }
+
+    /// Whether each wire has broken (w,).
+    #[getter]
+    fn wires_broken<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<bool>> {
+        let b: Vec<bool> = self.sim.rigid.wires.iter().map(|w| w.broken).collect();
+        PyArray1::from_vec(py, b)
+    }
+
+    /// The bonds' sphere ids (k, 2), in the order the scenario made them.
+    #[getter]
+    fn bond_spheres<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<u32>>> {
+        let b = &self.sim.rigid.bonds;
+        let ids: Vec<u32> = b.iter().flat_map(|b| b.spheres).collect();
+        PyArray1::from_vec(py, ids).reshape([b.len(), 2])
+    }
+
+    /// Whether each bond has broken (k,).
+    #[getter]
+    fn bonds_broken<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<bool>> {
+        let b: Vec<bool> = (self.sim.rigid.bonds.iter())
+            .map(|b| b.state.broken)
+            .collect();
+        PyArray1::from_vec(py, b)
+    }
+
+    /// `[armour]`'s bookkeeping once its reference time is reached, as a dict:
+    /// `reference_time` [s], `units` (the block ids present then) and `rocks` (each unit's
+    /// rocking count so far); None before it, or without `[armour]`.
+    #[getter]
+    fn armour<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(st) = self.armour.as_ref().and_then(ArmourCounters::state) else {
+            return Ok(None);
+        };
+        let d = PyDict::new(py);
+        d.set_item("reference_time", st.reference_time)?;
+        d.set_item("units", PyArray1::from_slice(py, &st.units))?;
+        let rocks: Vec<u64> = st.counters.iter().map(|c| c.rocks() as u64).collect();
+        d.set_item("rocks", PyArray1::from_vec(py, rocks))?;
+        Ok(Some(d))
     }
 
     /// The walls' names (`[[wall]]` order).

@@ -272,3 +272,65 @@ def test_a_block_can_be_moved_in_place(repo):
         sim.set_block_pose(10**9, lifted)
     with pytest.raises(ValueError, match="outside the domain"):
         sim.set_block_pose(bid, lifted + [0.0, 0.0, 100.0])
+
+
+def linked_blocks():
+    """Five three-sphere rods resting on a plane, two wires (rod 0 to a post, rods 1 to 2)
+    and four bonds (between rod members, and between two free spheres)."""
+    mat = {"name": "concrete", "density": 2400.0, "young_modulus": 1.0e8,
+           "poisson_ratio": 0.2, "friction_coefficient": 0.5, "restitution_coefficient": 0.3}
+    return {
+        "run": {"name": "linked", "end_time": 0.01},
+        "domain": {"min": [0.0, 0.0, -0.05], "max": [0.5, 0.2, 0.2]},
+        "material": [mat],
+        "wall": [{"kind": "plane", "material": "concrete", "point": [0.0, 0.0, 0.0],
+                  "normal": [0.0, 0.0, 1.0]}],
+        "block_template": [{"name": "rod", "shape": "three_sphere_rod", "material": "concrete",
+                            "nominal_diameter": 0.02}],
+        "blocks": [{"kind": "list", "template": "rod", "blocks": [
+            {"position": [0.05 + 0.08 * i, 0.1, 0.012]} for i in range(5)]}],
+        "spheres": [{"kind": "list", "material": "concrete", "spheres": [
+            {"position": [0.1, 0.03, 0.011], "diameter": 0.02},
+            {"position": [0.12, 0.03, 0.011], "diameter": 0.02}]}],
+        "wire": [
+            {"ends": [{"point": [0.05, 0.1, 0.1]}, {"block": 0, "point": [0.0, 0.0, 0.0]}],
+             "stiffness": 1.0e3},
+            {"ends": [{"block": 1, "point": [0.0, 0.0, 0.0]},
+                      {"block": 2, "point": [0.0, 0.0, 0.0]}], "stiffness": 1.0e3},
+        ],
+        "output": {"skip": ["spheres", "walls", "plots"]},
+    }
+
+
+def test_blocks_with_wires_and_bonds_are_removed_with_their_links():
+    plain = riprap.Simulation(linked_blocks())
+    ids, bodies = plain.ids, plain.bodies
+    member = {b: [int(i) for i in ids[bodies == b]] for b in range(5)}
+    free = [int(i) for i in ids[bodies < 0]]
+    # Bonds: rod 1-rod 2, rod 2-rod 3, the free pair, rod 3-rod 4 (scenario order).
+    pairs = [[member[1][-1], member[2][0]], [member[2][-1], member[3][0]], free,
+             [member[3][-1], member[4][0]]]
+    scenario = linked_blocks()
+    scenario["bond"] = [{"between": "pairs", "spheres": pairs, "normal_stiffness": 1.0e4,
+                         "shear_stiffness": 1.0e4}]
+    sim = riprap.Simulation(scenario)
+    assert sim.wire_ends.tolist() == [[-1, 0], [1, 2]]
+    assert sim.bond_spheres.tolist() == pairs
+    sim.advance(10)
+    n, spheres = len(sim.block_ids), sim.n_spheres
+    # Rod 2 carries wire 1 and bonds 0 and 1: they go with it, the others keep their order.
+    assert sim.remove_blocks([2]) == 1
+    assert len(sim.block_ids) == n - 1 and sim.n_spheres == spheres - 3
+    assert sim.wire_ends.tolist() == [[-1, 0]]
+    assert sim.bond_spheres.tolist() == [pairs[2], pairs[3]]
+    # A free sphere's bonds go with it too.
+    assert sim.remove_spheres([free[0]]) == 1
+    assert sim.bond_spheres.tolist() == [pairs[3]]
+    # Rod 0's wire to the post goes with rod 0.
+    assert sim.remove_blocks([0]) == 1
+    assert sim.wire_ends.shape == (0, 2) and len(sim.wires_broken) == 0
+    z = sim.block_centres[:, 2].copy()
+    sim.advance(50)  # steps on with what is left
+    assert sim.step == 60 and np.all(np.isfinite(sim.block_centres))
+    assert not np.array_equal(sim.block_centres[:, 2], z)
+    assert not sim.bonds_broken.any()

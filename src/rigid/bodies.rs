@@ -441,8 +441,128 @@ impl RigidBodies {
         removed
     }
 
+    /// Removes the wires with an end on one of `blocks` and the bonds on one of `spheres`
+    /// (ids), before those blocks and spheres are removed between steps, so that no link is
+    /// left dangling. The other links keep their order; `breakages` keeps the entries of the
+    /// links that stay, with their new indices (those of removed links go with them). Returns
+    /// how many (wires, bonds) were removed. (Blocks that leave the domain keep their links,
+    /// which then pull nothing: their indices stay those of the scenario.)
+    pub fn remove_links_to(&mut self, blocks: &[BlockId], spheres: &[SphereId]) -> (usize, usize) {
+        let on_block =
+            |e: &LinkEnd| matches!(e, LinkEnd::Block { block, .. } if blocks.contains(block));
+        let keep_wire: Vec<bool> = (self.wires.iter())
+            .map(|w| !w.ends.iter().any(on_block))
+            .collect();
+        let keep_bond: Vec<bool> = (self.bonds.iter())
+            .map(|b| !b.spheres.iter().any(|id| spheres.contains(id)))
+            .collect();
+        // New index of each kept link: the kept links before it.
+        let renumber = |keep: &[bool]| -> Vec<usize> {
+            keep.iter()
+                .scan(0, |n, &k| {
+                    let i = *n;
+                    *n += k as usize;
+                    Some(i)
+                })
+                .collect()
+        };
+        let (wire_at, bond_at) = (renumber(&keep_wire), renumber(&keep_bond));
+        self.breakages.retain_mut(|b| {
+            let (keep, at) = match b.kind {
+                LinkKind::Wire => (&keep_wire, &wire_at),
+                LinkKind::Bond => (&keep_bond, &bond_at),
+            };
+            if !keep[b.index] {
+                return false;
+            }
+            b.index = at[b.index];
+            true
+        });
+        let mut k = keep_wire.iter();
+        self.wires.retain(|_| *k.next().expect("one flag per wire"));
+        let mut k = keep_bond.iter();
+        self.bonds.retain(|_| *k.next().expect("one flag per bond"));
+        let gone = |keep: &[bool]| keep.iter().filter(|&&k| !k).count();
+        (gone(&keep_wire), gone(&keep_bond))
+    }
+
     /// Kinetic energy of the blocks as rigid bodies, Σ ½ M v_g² + ½ ω·I_g ω [J].
     pub fn kinetic_energy(&self) -> f64 {
         self.blocks.kinetic_energy()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rigid::links::{Bond, BondState, Wire};
+
+    fn wire(ends: [LinkEnd; 2]) -> WireLink {
+        let law = Wire {
+            slack_length: 1.0,
+            stiffness: 1.0,
+            damping: 0.0,
+            breaking_force: 1.0,
+        };
+        WireLink::new(law, ends)
+    }
+
+    fn bond(i: SphereId, j: SphereId) -> BondLink {
+        BondLink {
+            bond: Bond::beam(1.0, 1.0, 0.1, 1.0),
+            spheres: [i, j],
+            state: BondState::new(1.0),
+        }
+    }
+
+    fn broke(kind: LinkKind, index: usize) -> Breakage {
+        Breakage {
+            time: index as f64,
+            kind,
+            index,
+            position: Vec3::ZERO,
+        }
+    }
+
+    #[test]
+    fn removing_links_keeps_the_others_in_order_with_their_breakages_renumbered() {
+        let on = |block| LinkEnd::Block {
+            block,
+            point: Vec3::ZERO,
+        };
+        let fixed = LinkEnd::Fixed(Vec3::ZERO);
+        let mut r = RigidBodies {
+            wires: vec![
+                wire([fixed, on(0)]),
+                wire([on(1), on(2)]),
+                wire([on(2), fixed]),
+            ],
+            bonds: vec![bond(10, 11), bond(11, 12), bond(12, 13), bond(14, 15)],
+            breakages: vec![
+                broke(LinkKind::Wire, 0),
+                broke(LinkKind::Bond, 3),
+                broke(LinkKind::Wire, 2),
+                broke(LinkKind::Bond, 1),
+            ],
+            ..RigidBodies::default()
+        };
+        // Block 1 and sphere 12 go: wire 1 (1-2), bonds 1 and 2 (11-12, 12-13).
+        assert_eq!(r.remove_links_to(&[1], &[12]), (1, 2));
+        assert_eq!(r.wires, vec![wire([fixed, on(0)]), wire([on(2), fixed])]);
+        assert_eq!(r.bonds, vec![bond(10, 11), bond(14, 15)]);
+        let left: Vec<(LinkKind, usize, f64)> = (r.breakages.iter())
+            .map(|b| (b.kind, b.index, b.time))
+            .collect();
+        // Wire 2 is now wire 1 and bond 3 bond 1; bond 1's breakage went with it.
+        assert_eq!(
+            left,
+            vec![
+                (LinkKind::Wire, 0, 0.0),
+                (LinkKind::Bond, 1, 3.0),
+                (LinkKind::Wire, 1, 2.0)
+            ]
+        );
+        assert_eq!(r.remove_links_to(&[7], &[99]), (0, 0));
+        assert_eq!(r.wires.len() + r.bonds.len(), 4);
     }
 }

@@ -161,38 +161,13 @@ pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<Shallow
     let print = fingerprint(src);
     let resuming = opts.restart.is_some();
     if let Some(path) = &opts.restart {
-        let ck = ShallowCheckpoint::read(path)?;
-        let differ: Vec<String> = print
-            .iter()
-            .filter(|p| !ck.fingerprint.contains(p))
-            .map(|p| p.0.clone())
-            .collect();
-        if !differ.is_empty() {
+        let at = restore(path, &print, &mut w, debris.as_mut())?;
+        if at >= end {
             bail!(
-                "{}: written by a different scenario; these parts differ: {}. A checkpoint \
-                 continues only the scenario that wrote it (end_time and [output] may change).",
-                path.display(),
-                differ.join(", ")
-            );
-        }
-        if ck.state.time >= end {
-            bail!(
-                "{}: the checkpoint is at t = {:.6} s, at or past the end time {end} s: give a \
+                "{}: the checkpoint is at t = {at:.6} s, at or past the end time {end} s: give a \
                  later --end-time (or [run] end_time) to continue it",
-                path.display(),
-                ck.state.time
+                path.display()
             );
-        }
-        w.restore(ck.state)
-            .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-        if let Some(d) = &mut debris {
-            let dp = debris_checkpoint(path);
-            let state = DebrisCheckpoint::read(&dp)?;
-            if state.fingerprint != print {
-                bail!("{}: not written beside {}", dp.display(), path.display());
-            }
-            d.restore(state.state)
-                .map_err(|e| anyhow::anyhow!("{}: {e}", dp.display()))?;
         }
         if opts.progress {
             eprintln!(
@@ -236,23 +211,6 @@ pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<Shallow
         }
     }
     let ck_path = out.join("checkpoint.ck");
-    let save = |w: &ShallowWater, d: &Option<Debris>, path: &Path| {
-        ShallowCheckpoint {
-            state: w.state().clone(),
-            fingerprint: print.clone(),
-        }
-        .write(path)
-        .context("cannot write the checkpoint")?;
-        if let Some(d) = d {
-            DebrisCheckpoint {
-                state: d.snapshot(),
-                fingerprint: print.clone(),
-            }
-            .write(&debris_checkpoint(path))
-            .context("cannot write the debris' checkpoint")?;
-        }
-        anyhow::Ok(())
-    };
     let started = Instant::now();
     let mut debris_seconds = 0.0;
     let (mut k, mut interrupted_by) = (0u64, None);
@@ -265,24 +223,21 @@ pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<Shallow
             interrupted_by = Some(sig);
             break;
         }
-        let dt = w.step_towards(end);
+        let dt = match step(&mut w, debris.as_mut(), end) {
+            Ok((dt, seconds)) => {
+                debris_seconds += seconds;
+                dt
+            }
+            Err(e @ StepFailure::Flow { .. }) => {
+                let _ = write_frame(&w, &out.join("shallow_failed.vti"), format);
+                bail!(
+                    "{e}; the state is in shallow_failed.vti, the output so far in {}",
+                    out.display()
+                );
+            }
+            Err(e) => bail!("{e}"),
+        };
         k += 1;
-        if !(dt.is_finite() && dt > 0.0) {
-            let _ = write_frame(&w, &out.join("shallow_failed.vti"), format);
-            bail!(
-                "the step failed at t = {:.6} s, step {}: Δt = {dt}; the state is in \
-                 shallow_failed.vti, the output so far in {}",
-                w.time(),
-                w.steps(),
-                out.display()
-            );
-        }
-        if let Some(d) = &mut debris {
-            let clock = Instant::now();
-            d.advance_to(&w, w.time())
-                .map_err(|e| anyhow::anyhow!("{e}"))?;
-            debris_seconds += clock.elapsed().as_secs_f64();
-        }
         let (t, n) = (w.time(), w.steps());
         if rows.due(t, n) {
             out_files.rows(&w, dt)?;
@@ -300,7 +255,7 @@ pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<Shallow
             }
         }
         if saves.due(t, n) {
-            save(&w, &debris, &ck_path)?;
+            save(&ck_path, &print, &w, debris.as_ref())?;
         }
         if opts.progress && (t - t0) >= next_report * (end - t0) {
             eprintln!(
@@ -311,7 +266,7 @@ pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<Shallow
             next_report += 0.1;
         }
     }
-    save(&w, &debris, &ck_path)?;
+    save(&ck_path, &print, &w, debris.as_ref())?;
     if interrupted_by.is_none() {
         let last_frame = frames.fired_at(w.steps());
         if !last_frame {
@@ -352,6 +307,122 @@ pub fn execute(src: &ShallowSource, opts: &RunOptions) -> anyhow::Result<Shallow
         interrupted_by,
         checkpoint: ck_path,
     })
+}
+
+/// Why a step of [`step`] failed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StepFailure {
+    /// The flow's Δt [s] was not a positive number (at the time and step the flow holds).
+    Flow {
+        /// The Δt the step gave [s].
+        dt: f64,
+        /// Time [s] and step of the flow.
+        at: (f64, u64),
+    },
+    /// A debris block's state stopped being finite.
+    Debris(String),
+}
+
+impl std::fmt::Display for StepFailure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            StepFailure::Flow { dt, at } => write!(
+                f,
+                "the step failed at t = {:.6} s, step {}: Δt = {dt}",
+                at.0, at.1
+            ),
+            StepFailure::Debris(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for StepFailure {}
+
+/// One step of a run towards `end` [s] (none at `end`): the flow's, then the debris' to the
+/// flow's new time in the flow at the end of its step. Returns Δt [s] and the wall seconds the
+/// debris took. `execute` and the Python package step with this.
+pub fn step(
+    w: &mut ShallowWater,
+    debris: Option<&mut Debris>,
+    end: f64,
+) -> Result<(f64, f64), StepFailure> {
+    let dt = w.step_towards(end);
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(StepFailure::Flow {
+            dt,
+            at: (w.time(), w.steps()),
+        });
+    }
+    let mut seconds = 0.0;
+    if let Some(d) = debris {
+        let clock = Instant::now();
+        d.advance_to(w, w.time()).map_err(StepFailure::Debris)?;
+        seconds = clock.elapsed().as_secs_f64();
+    }
+    Ok((dt, seconds))
+}
+
+/// Writes the checkpoint of `w` at `path`, and the debris' beside it
+/// ([`debris_checkpoint`]), marked with the scenario's fingerprint `print`.
+pub fn save(
+    path: &Path,
+    print: &[(String, u32)],
+    w: &ShallowWater,
+    debris: Option<&Debris>,
+) -> anyhow::Result<()> {
+    ShallowCheckpoint {
+        state: w.state().clone(),
+        fingerprint: print.to_vec(),
+    }
+    .write(path)
+    .context("cannot write the checkpoint")?;
+    if let Some(d) = debris {
+        DebrisCheckpoint {
+            state: d.snapshot(),
+            fingerprint: print.to_vec(),
+        }
+        .write(&debris_checkpoint(path))
+        .context("cannot write the debris' checkpoint")?;
+    }
+    Ok(())
+}
+
+/// Puts the state of the checkpoint at `path` (and of the debris' beside it) into `w` and
+/// `debris`, once its fingerprint shows it was written by the scenario of `print` (a
+/// [`fingerprint`]). Returns the checkpoint's time [s].
+pub fn restore(
+    path: &Path,
+    print: &[(String, u32)],
+    w: &mut ShallowWater,
+    debris: Option<&mut Debris>,
+) -> anyhow::Result<f64> {
+    let ck = ShallowCheckpoint::read(path)?;
+    let differ: Vec<&str> = print
+        .iter()
+        .filter(|p| !ck.fingerprint.contains(p))
+        .map(|p| p.0.as_str())
+        .collect();
+    if !differ.is_empty() {
+        bail!(
+            "{}: written by a different scenario; these parts differ: {}. A checkpoint \
+             continues only the scenario that wrote it (end_time and [output] may change).",
+            path.display(),
+            differ.join(", ")
+        );
+    }
+    let time = ck.state.time;
+    w.restore(ck.state)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+    if let Some(d) = debris {
+        let dp = debris_checkpoint(path);
+        let state = DebrisCheckpoint::read(&dp)?;
+        if state.fingerprint != print {
+            bail!("{}: not written beside {}", dp.display(), path.display());
+        }
+        d.restore(state.state)
+            .map_err(|e| anyhow::anyhow!("{}: {e}", dp.display()))?;
+    }
+    Ok(time)
 }
 
 /// Removes the files of an earlier shallow-water run from `dir`.

@@ -51,17 +51,113 @@ use figures::MapUnit;
 pub use report::Ending;
 use report::{DamageRow, Incident, Report, ReportContext, Section};
 
-/// The bookkeeping of `[armour]` in a run, and its files.
-pub struct ArmourOutput {
+/// What a checkpoint keeps of `[armour]`, kept step by step without files: the reference (the
+/// units present and the profile at t_ref) once the displacement reference is reached, and the
+/// rocking counters fed after every step. [`ArmourOutput`] keeps one, and so does the Python
+/// package's `Simulation`, so that its checkpoints carry what the CLI's do.
+pub struct ArmourCounters {
     settings: ArmourSettings,
     grid: ProfileGrid,
     /// [x_toe, x_crest], the slope face, the range of A_e [m].
     face: (f64, f64),
+    /// None until the reference time.
+    state: Option<ArmourState>,
+}
+
+impl ArmourCounters {
+    /// The counters of `settings` for `sim`, resumed from `saved` (a checkpoint's state).
+    pub fn new(settings: ArmourSettings, sim: &Simulation, saved: Option<ArmourState>) -> Self {
+        let (slope, layer) = (&settings.slope, &settings.layer);
+        let dn = layer.nominal_diameter;
+        let face = (slope.toe_x, slope.plane_x(layer.crest_z));
+        // A little seaward of the toe and landward of the crest, where moved units land.
+        let d = &sim.dem.domain;
+        let (x0, x1) = ((face.0 - 2.0 * dn).max(d.min.x), (face.1 + dn).min(d.max.x));
+        let grid = ProfileGrid::across(
+            slope,
+            settings.profile_lines,
+            x0,
+            x1,
+            settings.profile_step,
+            settings.probe_radius,
+        );
+        ArmourCounters {
+            settings,
+            grid,
+            face,
+            state: saved,
+        }
+    }
+
+    /// [`new`](Self::new) for a scenario `src` with `[armour]` (None without).
+    pub fn of(
+        src: &Source,
+        sim: &Simulation,
+        saved: Option<ArmourState>,
+    ) -> anyhow::Result<Option<Self>> {
+        Ok(armour_settings(src)?.map(|a| ArmourCounters::new(a, sim, saved)))
+    }
+
+    /// The state a checkpoint keeps (None before the reference time).
+    pub fn state(&self) -> Option<ArmourState> {
+        self.state.clone()
+    }
+
+    /// Takes the reference now (the units present, the profile, fresh counters) unless it is
+    /// taken or still `pending`; true when it took it.
+    pub fn begin(&mut self, sim: &Simulation, pending: bool) -> bool {
+        if self.state.is_some() || pending {
+            return false;
+        }
+        let b = &sim.rigid.blocks;
+        let h = self.settings.rocking_threshold;
+        self.state = Some(ArmourState {
+            reference_time: sim.time,
+            units: b.id.clone(),
+            before: self.profile(sim),
+            counters: vec![RockingCounter::new(h); b.len()],
+        });
+        true
+    }
+
+    /// After every step: [`begin`](Self::begin) before the reference, the counters fed with
+    /// the units' rotation angles after it (no allocation). True when it took the reference.
+    pub fn after_step(&mut self, sim: &Simulation, pending: bool) -> bool {
+        let Some(st) = &mut self.state else {
+            return self.begin(sim, pending);
+        };
+        let b = &sim.rigid.blocks;
+        for (k, (&id, c)) in st.units.iter().zip(&mut st.counters).enumerate() {
+            // The blocks keep their order: slot k unless one was removed.
+            let slot = if b.id.get(k) == Some(&id) {
+                Some(k)
+            } else {
+                b.slot_of(id)
+            };
+            if let Some(j) = slot {
+                c.push(b.rotation_angle(j));
+            }
+        }
+        false
+    }
+
+    /// z̄ [m] of the spheres now (free ones and block members alike) on the grid; where the
+    /// probe meets none, the under-layer plane between the toe and crest levels.
+    fn profile(&self, sim: &Simulation) -> Vec<f64> {
+        let s = &sim.dem.spheres;
+        let slope = self.settings.slope;
+        let face = self.face;
+        let base = |x: f64| slope.plane_z(x.clamp(face.0, face.1));
+        measure_profiles(&slope, &self.grid, &s.position, &s.radius, base).mean
+    }
+}
+
+/// The bookkeeping of `[armour]` in a run, and its files.
+pub struct ArmourOutput {
+    counters: ArmourCounters,
     every: Schedule,
     csv: CsvSeries,
     out: PathBuf,
-    /// None until the reference time.
-    state: Option<ArmourState>,
     /// The step of the last row written.
     last_row: Option<u64>,
     /// Reference and present centres of the units [m], reused row to row.
@@ -107,20 +203,6 @@ impl ArmourOutput {
         (interval, dt, by_time): (f64, f64, bool),
         pending: bool,
     ) -> anyhow::Result<ArmourOutput> {
-        let (slope, layer) = (&settings.slope, &settings.layer);
-        let dn = layer.nominal_diameter;
-        let face = (slope.toe_x, slope.plane_x(layer.crest_z));
-        // A little seaward of the toe and landward of the crest, where moved units land.
-        let d = &sim.dem.domain;
-        let (x0, x1) = ((face.0 - 2.0 * dn).max(d.min.x), (face.1 + dn).min(d.max.x));
-        let grid = ProfileGrid::across(
-            slope,
-            settings.profile_lines,
-            x0,
-            x1,
-            settings.profile_step,
-            settings.probe_radius,
-        );
         let path = out.join("armour.csv");
         let cols = columns(settings.wave_period.is_some());
         let (csv, state) = match resume {
@@ -130,20 +212,17 @@ impl ArmourOutput {
         let mut every = Schedule::new(interval, dt, by_time);
         every.start(sim.time, sim.step);
         let mut a = ArmourOutput {
-            settings,
-            grid,
-            face,
+            counters: ArmourCounters::new(settings, sim, state),
             every,
             csv,
             out: out.to_path_buf(),
-            state,
             last_row: None,
             p0: Vec::new(),
             p: Vec::new(),
             context: ReportContext::default(),
             opened: (std::time::Instant::now(), sim.time),
         };
-        if a.state.is_none() && !pending {
+        if a.counters.begin(sim, pending) {
             a.start(sim)?;
         }
         Ok(a)
@@ -172,32 +251,18 @@ impl ArmourOutput {
 
     /// The state a checkpoint keeps (None before the reference time).
     pub fn state(&self) -> Option<ArmourState> {
-        self.state.clone()
+        self.counters.state()
     }
 
     /// After every step: takes the reference when the displacement reference is no longer
     /// `pending`, feeds the rocking counters (no allocation) and writes a row when due.
     pub fn after_step(&mut self, sim: &Simulation, pending: bool) -> anyhow::Result<()> {
         let due = self.every.due(sim.time, sim.step);
-        let Some(st) = &mut self.state else {
-            if !pending {
-                self.start(sim)?;
-            }
-            return Ok(());
-        };
-        let b = &sim.rigid.blocks;
-        for (k, (&id, c)) in st.units.iter().zip(&mut st.counters).enumerate() {
-            // The blocks keep their order: slot k unless one was removed.
-            let slot = if b.id.get(k) == Some(&id) {
-                Some(k)
-            } else {
-                b.slot_of(id)
-            };
-            if let Some(j) = slot {
-                c.push(b.rotation_angle(j));
-            }
+        let started = self.counters.state.is_some();
+        if self.counters.after_step(sim, pending) {
+            return self.start(sim);
         }
-        if due {
+        if started && due {
             self.row(sim)?;
         }
         Ok(())
@@ -208,7 +273,7 @@ impl ArmourOutput {
     /// by a signal writes them as they stand but adds no row: its restart writes the rows
     /// where an uninterrupted run would; so does a run stopped unstable.
     pub fn finish(&mut self, sim: &Simulation, plots: bool, ending: Ending) -> anyhow::Result<()> {
-        let Some(st) = &self.state else {
+        let Some(st) = &self.counters.state else {
             return Ok(());
         };
         let before = st.before.clone();
@@ -216,13 +281,13 @@ impl ArmourOutput {
         if self.last_row != Some(sim.step) && ending == Ending::Complete {
             self.row(sim)?;
         }
-        let after = self.profile(sim);
+        let after = self.counters.profile(sim);
         let mut csv = CsvSeries::create(
             &self.out.join("armour_profile.csv"),
             &["x", "before", "after"],
         )?;
         for (i, (b, a)) in before.iter().zip(&after).enumerate() {
-            csv.row(&[self.grid.x(i), *b, *a])?;
+            csv.row(&[self.counters.grid.x(i), *b, *a])?;
         }
         let map = self.units_file(sim)?;
         let rows = damage_rows(&self.out)?;
@@ -231,14 +296,14 @@ impl ArmourOutput {
         let design = match (&incident, rho, fw) {
             (Some(inc), Some(rho), Some(fw)) => {
                 let n = report::waves_at_toe(inc, sim.time);
-                Some(report::check(&self.settings, inc, rho, &fw, n))
+                Some(report::check(&self.counters.settings, inc, rho, &fw, n))
             }
             _ => None,
         };
         if plots {
             self.figures(&rows, t_ref, incident.as_ref(), (&before, &after), &map)?;
         }
-        let a = &self.settings;
+        let a = &self.counters.settings;
         let face_area = a.slope.width * (a.layer.crest_z - a.slope.toe_z) / a.slope.cos_sin().1;
         let in_layer = map.iter().filter(|u| u.in_layer).count();
         let largest = map.iter().map(|u| u.distance_dn).fold(0.0, f64::max);
@@ -271,7 +336,7 @@ impl ArmourOutput {
     /// Wall time [s] per wave period of simulated time, since this process opened the file,
     /// and the worker threads (None without a period or simulated time).
     fn cost(&self, t: f64) -> Option<(f64, usize)> {
-        let period = self.settings.wave_period?;
+        let period = self.counters.settings.wave_period?;
         let simulated = t - self.opened.1;
         (simulated > 0.0).then(|| {
             let wall = self.opened.0.elapsed().as_secs_f64();
@@ -292,7 +357,7 @@ impl ArmourOutput {
         };
         Ok(Some(report::incident(
             &self.context,
-            &self.settings,
+            &self.counters.settings,
             fw,
             &gauges,
             times,
@@ -302,8 +367,12 @@ impl ArmourOutput {
     /// armour_units.csv: per unit, the start (s, y, η) and movement since t_ref; the map.
     fn units_file(&mut self, sim: &Simulation) -> anyhow::Result<Vec<UnitOnMap>> {
         self.fill_centres(sim);
-        let st = self.state.as_ref().expect("units after the reference");
-        let (slope, layer) = (&self.settings.slope, &self.settings.layer);
+        let st = self
+            .counters
+            .state
+            .as_ref()
+            .expect("units after the reference");
+        let (slope, layer) = (&self.counters.settings.slope, &self.counters.settings.layer);
         let mut csv = CsvSeries::create(
             &self.out.join("armour_units.csv"),
             &[
@@ -368,7 +437,7 @@ impl ArmourOutput {
         (before, after): (&[f64], &[f64]),
         map: &[UnitOnMap],
     ) -> anyhow::Result<()> {
-        let a = &self.settings;
+        let a = &self.counters.settings;
         let (x, x_label): (Vec<f64>, &str) = match a.wave_period {
             Some(t) => (
                 rows.iter().map(|r| (r.time - t_ref) / t).collect(),
@@ -400,11 +469,11 @@ impl ArmourOutput {
             .map(|l| l.start);
         let formula = curve.as_ref().map(|(l, p)| (*l, p.as_slice()));
         figures::damage(&self.out, rows, &x, x_label, formula, start)?;
-        let g = &self.grid;
+        let g = &self.counters.grid;
         let pts = |z: &[f64]| -> Vec<(f64, f64)> {
             z.iter().enumerate().map(|(i, &z)| (g.x(i), z)).collect()
         };
-        let plane: Vec<(f64, f64)> = [self.face.0, self.face.1]
+        let plane: Vec<(f64, f64)> = [self.counters.face.0, self.counters.face.1]
             .iter()
             .map(|&x| (x, a.slope.plane_z(x)))
             .collect();
@@ -415,50 +484,38 @@ impl ArmourOutput {
         Ok(())
     }
 
-    /// Takes the reference: the units present, the profile, fresh counters; writes its row.
+    /// After the reference was taken (`ArmourCounters::begin`): room for the centres, and
+    /// its row.
     fn start(&mut self, sim: &Simulation) -> anyhow::Result<()> {
-        let b = &sim.rigid.blocks;
-        let h = self.settings.rocking_threshold;
-        self.state = Some(ArmourState {
-            reference_time: sim.time,
-            units: b.id.clone(),
-            before: self.profile(sim),
-            counters: vec![RockingCounter::new(h); b.len()],
-        });
-        self.p0.reserve(b.len());
-        self.p.reserve(b.len());
+        let n = sim.rigid.blocks.len();
+        self.p0.reserve(n);
+        self.p.reserve(n);
         self.row(sim)
-    }
-
-    /// z̄ [m] of the spheres now (free ones and block members alike) on the grid; where the
-    /// probe meets none, the under-layer plane between the toe and crest levels.
-    fn profile(&self, sim: &Simulation) -> Vec<f64> {
-        let s = &sim.dem.spheres;
-        let slope = self.settings.slope;
-        let face = self.face;
-        let base = |x: f64| slope.plane_z(x.clamp(face.0, face.1));
-        measure_profiles(&slope, &self.grid, &s.position, &s.radius, base).mean
     }
 
     /// One row of armour.csv (module doc).
     fn row(&mut self, sim: &Simulation) -> anyhow::Result<()> {
         self.fill_centres(sim);
-        let st = self.state.as_ref().expect("a row after the reference");
-        let (slope, layer) = (&self.settings.slope, &self.settings.layer);
+        let st = self
+            .counters
+            .state
+            .as_ref()
+            .expect("a row after the reference");
+        let (slope, layer) = (&self.counters.settings.slope, &self.counters.settings.layer);
         let c = count_damage(slope, layer, &self.p0, &self.p);
         let rocking = st.counters.iter().filter(|c| c.rocks() >= 1).count();
-        let after = self.profile(sim);
-        let g = &self.grid;
+        let after = self.counters.profile(sim);
+        let g = &self.counters.grid;
         let change = eroded_area(
             g.x_start,
             g.dx,
             &st.before,
             &after,
-            self.face.0,
-            self.face.1,
+            self.counters.face.0,
+            self.counters.face.1,
         );
         let mut row = vec![sim.time];
-        if let Some(t) = self.settings.wave_period {
+        if let Some(t) = self.counters.settings.wave_period {
             row.push((sim.time - st.reference_time) / t);
         }
         row.extend([
@@ -481,7 +538,11 @@ impl ArmourOutput {
     /// The reference and present centres of the units into `p0`, `p` (no allocation after
     /// the reference).
     fn fill_centres(&mut self, sim: &Simulation) {
-        let st = self.state.as_ref().expect("centres after the reference");
+        let st = self
+            .counters
+            .state
+            .as_ref()
+            .expect("centres after the reference");
         let b = &sim.rigid.blocks;
         self.p0.clear();
         self.p.clear();
