@@ -336,6 +336,9 @@ fn the_lab_example_places_its_double_layer_and_check_reports_its_sea() {
     let src = Source::from_str(LAB, "armour_lab.toml", dir()).unwrap_or_else(|e| panic!("{e}"));
     let s = src.breakwater.as_ref().unwrap();
     assert_eq!((s.target, s.placed), (206, 206));
+    // The units lie on the stones' tops: the layer's base is d/2 above the plane.
+    let armour = src.scenario.armour.as_ref().unwrap();
+    assert_eq!(armour.layer_base, Some(0.009));
     let report = check(&src).unwrap_or_else(|e| panic!("{e}")).report();
     for needle in [
         "206 units placed (Random), target 206 (φ = 1.260",

@@ -21,6 +21,16 @@
 //! height"). Here a unit is displaced when |d| > k D_n (k = [`DISPLACED_THRESHOLD_DN`] = 1 by
 //! default) **or** it left the layer: the union of the two, what an observer counts. Units
 //! that moved less and stayed in the layer (settlement, rocking) are not displaced.
+//!
+//! **In the layer, out of it.** A unit is in the layer at the reference when its centre lies
+//! over the slope (toe to crest) no higher than the layer's outer face, η ≤ b + t_a (b the
+//! layer's base: 0 on a smooth under-layer plane, the stones' tops on the filter's stones). It
+//! has left the layer when its centre is more than 0.2 D_n ([`LEAVING_MARGIN_DN`]) beyond
+//! those faces: a unit whose centre sat at the outer face is then not counted for a rock of a
+//! few tenths of a millimetre, but one lying on top of the layer is (its centre half its size
+//! over the face less the depth it nests in a hollow of the layer: for a sphere of diameter d
+//! on a single layer of touching ones, 0.21 d = 0.26 D_n over it on a square hollow, 0.32 d on
+//! a triangular one), and so is one rolled 0.2 D_n past the toe.
 
 use crate::math::{Quat, Vec3};
 
@@ -28,6 +38,10 @@ use super::slope::Slope;
 
 /// Default k of the displacement criterion |d| > k D_n [-] (one unit size, see the module doc).
 pub const DISPLACED_THRESHOLD_DN: f64 = 1.0;
+
+/// How far beyond the layer's faces a centre must be for its unit to have left the layer,
+/// in D_n [-] (module docs).
+pub const LEAVING_MARGIN_DN: f64 = 0.2;
 
 /// The armour layer on a [`Slope`], and the criterion for a displaced unit.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -39,6 +53,9 @@ pub struct ArmourLayer {
     pub thickness: f64,
     /// z of the crest, where the slope ends [m]
     pub crest_z: f64,
+    /// b, the height of the layer's base above the under-layer plane [m] (0 by default; the
+    /// tops of the filter's stones when they lie on the plane)
+    pub base: f64,
     /// k of |d| > k D_n [-], [`DISPLACED_THRESHOLD_DN`] by default
     pub displaced_threshold_dn: f64,
 }
@@ -50,16 +67,29 @@ impl ArmourLayer {
             nominal_diameter,
             thickness,
             crest_z,
+            base: 0.0,
             displaced_threshold_dn: DISPLACED_THRESHOLD_DN,
         }
     }
 
     /// True when the centre p [m] lies in the layer: 0 ≤ s ≤ s_crest (not below the toe, not
-    /// past the crest, with s_crest = (z_c − z_t)/sin α) and η ≤ t_a.
+    /// past the crest, with s_crest = (z_c − z_t)/sin α) and η ≤ b + t_a.
     pub fn contains(&self, slope: &Slope, p: Vec3) -> bool {
+        self.within(slope, p, 0.0)
+    }
+
+    /// True when the centre p [m] is more than [`LEAVING_MARGIN_DN`] D_n beyond the faces of
+    /// [`ArmourLayer::contains`]: its unit has left the layer.
+    pub fn has_left(&self, slope: &Slope, p: Vec3) -> bool {
+        !self.within(slope, p, LEAVING_MARGIN_DN * self.nominal_diameter)
+    }
+
+    /// The layer grown by `margin` [m] on its toe, crest and outer faces contains p.
+    fn within(&self, slope: &Slope, p: Vec3, margin: f64) -> bool {
         let (along, normal) = slope.to_slope(p.x, p.z);
         let crest_along = (self.crest_z - slope.toe_z) / slope.cos_sin().1;
-        (0.0..=crest_along).contains(&along) && normal <= self.thickness
+        (-margin..=crest_along + margin).contains(&along)
+            && normal <= self.base + self.thickness + margin
     }
 }
 
@@ -95,9 +125,9 @@ pub struct UnitMovement {
 /// layer, direction unknown.
 ///
 /// d = p − p⁰ (Δy to the nearest periodic image), displaced ⇔ |d| > k D_n ∨ (p⁰ ∈ layer ∧
-/// p ∉ layer): a unit that was not in the layer at the reference (a toe berm's, one past the
-/// crest) leaves it only by moving k D_n, so that it is not counted displaced for where it
-/// already was.
+/// p has left it, [`ArmourLayer::has_left`]): a unit that was not in the layer at the
+/// reference (a toe berm's, one past the crest) leaves it only by moving k D_n, so that it is
+/// not counted displaced for where it already was.
 pub fn unit_movement(slope: &Slope, layer: &ArmourLayer, p0: Vec3, p: Vec3) -> UnitMovement {
     if !crate::math::is_finite(p) {
         return UnitMovement {
@@ -113,7 +143,7 @@ pub fn unit_movement(slope: &Slope, layer: &ArmourLayer, p0: Vec3, p: Vec3) -> U
     d.y = slope.nearest_image_dy(d.y);
     let distance_dn = d.length() / layer.nominal_diameter;
     let along_slope = d.dot(slope.tangent());
-    let out_of_layer = layer.contains(slope, p0) && !layer.contains(slope, p);
+    let out_of_layer = layer.contains(slope, p0) && layer.has_left(slope, p);
     let displaced = out_of_layer || distance_dn > layer.displaced_threshold_dn;
     let direction = displaced.then_some(if along_slope > 0.0 {
         SlopeDirection::Up
@@ -247,8 +277,8 @@ mod tests {
     }
 
     /// 0.5 D_n down the slope: not displaced; 1.5 D_n: displaced, downward; 1.5 D_n up the
-    /// slope: displaced, upward. 0.8 D_n lifted off the layer (η = d/2 + 0.645 d > t_a = d):
-    /// displaced although it moved less than 1 D_n. Moving across the periodic face by one
+    /// slope: displaced, upward. 0.9 D_n lifted off the layer (η = d/2 + 0.725 d, beyond
+    /// t_a + 0.2 D_n = 1.161 d): displaced although it moved less than 1 D_n. Moving across the periodic face by one
     /// width W: no displacement at all.
     #[test]
     fn displaced_threshold_and_direction() {
@@ -264,13 +294,13 @@ mod tests {
         assert_eq!(m.direction, Some(SlopeDirection::Down));
         let m = unit_movement(&sl, &layer, p0[u], p0[u] + 1.5 * dn() * t);
         assert_eq!(m.direction, Some(SlopeDirection::Up));
-        let m = unit_movement(&sl, &layer, p0[u], p0[u] + 0.8 * dn() * sl.normal());
+        let m = unit_movement(&sl, &layer, p0[u], p0[u] + 0.9 * dn() * sl.normal());
         assert!(m.displaced && m.out_of_layer && m.distance_dn < 1.0);
         let wrapped = p0[u] + Vec3::new(0.0, sl.width, 0.0);
         let m = unit_movement(&sl, &layer, p0[u], wrapped);
         assert!(!m.displaced && m.displacement.length() < 1e-15);
         // Below the toe and past the crest are out of the layer.
-        let toe = sl.to_flume_point(Vec3::new(-0.5 * D, 0.0, 0.5 * D));
+        let toe = sl.to_flume_point(Vec3::new(-0.25 * D, 0.0, 0.5 * D));
         assert!(unit_movement(&sl, &layer, p0[0], toe).out_of_layer);
         let top = sl.to_flume_point(Vec3::new(20.5 * D, 0.0, 0.5 * D));
         assert!(unit_movement(&sl, &layer, p0[0], top).out_of_layer);
@@ -282,6 +312,27 @@ mod tests {
         p[201] -= 0.3 * dn() * t;
         let c = count_damage(&sl, &layer, &p0, &p);
         assert_eq!((c.displaced, c.displaced_up, c.displaced_down), (3, 1, 2));
+    }
+
+    /// Regression: a top-layer unit whose centre lay at the layer's outer face at the
+    /// reference was counted out of the layer, and displaced, after a rock of 0.3 mm (unit 173
+    /// of `examples/armour_lab.toml` on the filter's stones). A unit lying on top of the
+    /// layer, in a square hollow of it (η = d/2 + d/√2), has left it; with the layer's base
+    /// raised by b the same unit is still in it at η + b − 1 mm.
+    #[test]
+    fn a_unit_at_the_layers_face_rocked_out_of_the_layer() {
+        let sl = slope();
+        let (mut layer, p0) = layer_of_spheres(&sl);
+        let n = sl.normal();
+        let at_face = p0[125] + (0.5 * D - 1e-4) * n;
+        let rocked = unit_movement(&sl, &layer, at_face, at_face + 3e-4 * n);
+        assert!(!rocked.displaced && !rocked.out_of_layer, "{rocked:?}");
+        let on_top = unit_movement(&sl, &layer, p0[125], p0[125] + D / 2f64.sqrt() * n);
+        assert!(on_top.displaced && on_top.out_of_layer, "{on_top:?}");
+        layer.base = 0.01;
+        let raised = at_face + 0.009 * n;
+        assert!(layer.contains(&sl, raised) && !layer.contains(&sl, raised + 2e-3 * n));
+        assert!(layer.has_left(&sl, raised + (0.002 + 0.2 * dn()) * n));
     }
 
     /// Regression: a unit already past the crest (or in front of the toe) at the reference was

@@ -21,6 +21,7 @@
 //! notional_permeability = 0.4 # Van der Meer's P of the structure [-] (default 0.4)
 //! analysis_start = 2.8       # s: the incident waves are analysed from here (default: module
 //!                            # `run::armour`, when the full waves have reached the gauges)
+//! layer_base = 0.0           # b: the layer's base above the under-layer plane [m] (default 0)
 //! ```
 
 use serde::{Deserialize, Serialize};
@@ -80,6 +81,10 @@ pub struct ArmourSection {
     /// When the report's analysis of the incident waves starts [s] (default `run::armour`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub analysis_start: Option<f64>,
+    /// b, the height of the layer's base above the under-layer plane [m] (default 0; a
+    /// `[breakwater]` on `underlayer_stones` of diameter d sets d/2, the stones' tops).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub layer_base: Option<f64>,
 }
 
 /// ρ_s [kg m⁻³] of the armour units: the first block template's material.
@@ -205,6 +210,7 @@ pub fn armour_settings(src: &Source) -> Result<Option<ArmourSettings>, ScenarioE
     };
     let mut layer = ArmourLayer::new(dn, thickness, a.crest_level);
     layer.displaced_threshold_dn = k;
+    layer.base = non_negative(src, "armour.layer_base", a.layer_base.unwrap_or(0.0))?;
     Ok(Some(ArmourSettings {
         slope: Slope {
             toe_x: x,

@@ -551,6 +551,8 @@ fn expansion(src: &Source, b: &BreakwaterSection) -> Result<Expansion, ScenarioE
         }),
         notional_permeability: None,
         analysis_start: None,
+        // The units lie on the stones' tops, not on the plane through their centres.
+        layer_base: stones.as_ref().map(|(_, d)| 0.5 * d),
     };
     let summary = BreakwaterSummary {
         placement: b.armour.placement,

@@ -410,11 +410,19 @@ fn structure_section(m: &mut String, r: &Report) {
             rs / rw - 1.0
         );
     }
-    let _ = writeln!(
+    let _ = write!(
         m,
-        "| layer thickness | {} m ({:.2} D_n) |",
+        "| layer thickness | {} m ({:.2} D_n)",
         a.layer.thickness,
         a.layer.thickness / dn
+    );
+    if a.layer.base > 0.0 {
+        let _ = write!(m, " over a base {} m above the under-layer plane", a.layer.base);
+    }
+    let _ = writeln!(
+        m,
+        "; a unit has left the layer when its centre is {} D_n beyond its faces |",
+        crate::armour::damage::LEAVING_MARGIN_DN
     );
     let phi = s.in_layer as f64 * dn * dn / s.face_area;
     let _ = writeln!(
