@@ -417,7 +417,11 @@ fn structure_section(m: &mut String, r: &Report) {
         a.layer.thickness / dn
     );
     if a.layer.base > 0.0 {
-        let _ = write!(m, " over a base {} m above the under-layer plane", a.layer.base);
+        let _ = write!(
+            m,
+            " over a base {} m above the under-layer plane",
+            a.layer.base
+        );
     }
     let _ = writeln!(
         m,
