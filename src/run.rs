@@ -214,14 +214,7 @@ pub fn execute(src: &Source, opts: &RunOptions) -> anyhow::Result<RunSummary> {
         } else {
             fingerprint::differences(&ck.fingerprint, &fingerprint)
         };
-        if !differ.is_empty() {
-            bail!(
-                "{}: written by a different scenario; these parts differ: {}. A checkpoint \
-                 continues only the scenario that wrote it (end_time and [output] may change).",
-                path.display(),
-                differ.join(", ")
-            );
-        }
+        fingerprint::refuse_if_different(path, &differ)?;
         flow::check_restart(&sim, &ck, path)?;
         if ck.time >= end - 0.5 * dt {
             bail!(

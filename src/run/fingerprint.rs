@@ -112,6 +112,24 @@ pub fn fingerprint(src: &Source, sim: &Simulation) -> Fingerprint {
     .collect()
 }
 
+/// Refuses the checkpoint at `path` when the scenario's parts `differ` from the ones that
+/// wrote it (names, as [`differences`] gives them).
+pub fn refuse_if_different<S: AsRef<str>>(
+    path: &std::path::Path,
+    differ: &[S],
+) -> anyhow::Result<()> {
+    if differ.is_empty() {
+        return Ok(());
+    }
+    let names: Vec<&str> = differ.iter().map(AsRef::as_ref).collect();
+    anyhow::bail!(
+        "{}: written by a different scenario; these parts differ: {}. A checkpoint continues \
+         only the scenario that wrote it (end_time and [output] may change).",
+        path.display(),
+        names.join(", ")
+    )
+}
+
 /// The parts of `saved` that differ from `now` (or that only one of them has), in order.
 pub fn differences(saved: &Fingerprint, now: &Fingerprint) -> Vec<String> {
     let mut names: Vec<String> = now

@@ -402,14 +402,7 @@ pub fn restore(
         .filter(|p| !ck.fingerprint.contains(p))
         .map(|p| p.0.as_str())
         .collect();
-    if !differ.is_empty() {
-        bail!(
-            "{}: written by a different scenario; these parts differ: {}. A checkpoint \
-             continues only the scenario that wrote it (end_time and [output] may change).",
-            path.display(),
-            differ.join(", ")
-        );
-    }
+    super::fingerprint::refuse_if_different(path, &differ)?;
     let time = ck.state.time;
     w.restore(ck.state)
         .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
