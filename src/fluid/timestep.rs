@@ -78,11 +78,7 @@ pub fn max_speed(grid: &StaggeredGrid, a: usize, ua: &[f64]) -> f64 {
 pub fn max_cell_rate(grid: &StaggeredGrid, u: [&[f64]; 3]) -> f64 {
     let p = grid.padded();
     let s = grid.strides();
-    let inv_d = [
-        1.0 / grid.spacing.x,
-        1.0 / grid.spacing.y,
-        1.0 / grid.spacing.z,
-    ];
+    let inv_d = [1.0 / grid.spacing.x, 1.0 / grid.spacing.y, 1.0 / grid.spacing.z];
     let (rj, rk) = (grid.interior(1), grid.interior(2));
     reduce_chunks(
         u[0],
