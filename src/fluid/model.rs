@@ -15,9 +15,7 @@ use super::pressure::pcg::Solve;
 use super::pressure::{Passes, PressureFields, Projection};
 use super::sgs::Smagorinsky;
 use super::solids::Solids;
-use super::timestep::{
-    free_surface_step_at, max_cell_rate, max_speed, stable_time_step, TimeStepLimits,
-};
+use super::timestep::{free_surface_time_step, max_speed, stable_time_step, TimeStepLimits};
 use crate::math::Vec3;
 use serde::{Deserialize, Serialize};
 
@@ -708,6 +706,7 @@ impl Fluid {
     /// The stable time step of [`super::timestep`] for the current state [s].
     pub fn stable_time_step(&self) -> f64 {
         let u = self.velocity();
+        let speed = std::array::from_fn(|a| max_speed(&self.grid, a, u[a]));
         let rho = &self.state.mixture_density;
         let mut nu_t = 0.0f64;
         if self.parameters.smagorinsky.is_some() {
@@ -726,19 +725,13 @@ impl Fluid {
         }
         let nu = nu + nu_t;
         let limits = &self.parameters.time_step;
+        let dt = stable_time_step(&self.grid, speed, nu, limits);
         match self.parameters.air {
-            // With air the advective limit is the cells' own Courant number (R_cell of
-            // `max_cell_rate`), inside the free-surface step, which never exceeds C_adv/R.
             Some(_) => {
                 let g = self.parameters.gravity.length();
-                let rate = max_cell_rate(&self.grid, u);
-                let viscous = stable_time_step(&self.grid, [0.0; 3], nu, limits);
-                viscous.min(free_surface_step_at(&self.grid, rate, g, limits))
+                dt.min(free_surface_time_step(&self.grid, speed, g, limits))
             }
-            None => {
-                let speed = std::array::from_fn(|a| max_speed(&self.grid, a, u[a]));
-                stable_time_step(&self.grid, speed, nu, limits)
-            }
+            None => dt,
         }
     }
 

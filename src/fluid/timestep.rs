@@ -5,10 +5,6 @@
 //! Δt = min( C_adv / Σ_a (max|u_a| / Δ_a) ,  C_visc / (ν_max Σ_a 1/Δ_a²) ,  Δt_max )
 //! ```
 //!
-//! With air the advective limit is taken cell by cell instead (Σ_a max|u_a|/Δ_a replaced by
-//! the largest cell's rate, [`max_cell_rate`]) inside the free-surface step
-//! ([`free_surface_time_step`]).
-//!
 //! ν_max = ν + max(μ_SGS / ρ̄) [m² s⁻¹]. Justification of the defaults: AB2 is stable for real
 //! negative eigenvalues down to λΔt = −1, and the largest eigenvalue of the discrete viscous
 //! operator is 4 ν Σ 1/Δ², so the viscous limit is C_visc ≤ ¼; 0.2 keeps a 20 % margin.
@@ -64,43 +60,6 @@ pub fn max_speed(grid: &StaggeredGrid, a: usize, ua: &[f64]) -> f64 {
     )
 }
 
-/// The largest advective rate of a cell, the rate at which fluid crosses it [s⁻¹]:
-///
-/// ```text
-/// R_cell = max over cells c of Σ_a max(|u_a| on the two a-faces of c) / Δ_a
-/// ```
-///
-/// The Courant number of a cell is R_cell Δt. It is at most the sum of the per-axis maxima
-/// of [`max_speed`] (R of [`free_surface_time_step`]'s first form), which adds the fastest x
-/// flow of one place to the fastest z flow of another: under waves breaking on a slope
-/// (`examples/armour_lab.toml` at 5 s) R_cell is 0.62 to 0.70 of that sum. Deterministic
-/// (max is exact in any order).
-pub fn max_cell_rate(grid: &StaggeredGrid, u: [&[f64]; 3]) -> f64 {
-    let p = grid.padded();
-    let s = grid.strides();
-    let inv_d = [1.0 / grid.spacing.x, 1.0 / grid.spacing.y, 1.0 / grid.spacing.z];
-    let (rj, rk) = (grid.interior(1), grid.interior(2));
-    reduce_chunks(
-        u[0],
-        p[0],
-        0.0,
-        |row, _| {
-            if !(rj.contains(&(row % p[1])) && rk.contains(&(row / p[1]))) {
-                return 0.0;
-            }
-            let start = row * p[0];
-            (1..=grid.n[0]).fold(0.0f64, |m, i| {
-                let c = start + i;
-                let rate: f64 = (0..3)
-                    .map(|a| u[a][c].abs().max(u[a][c + s[a]].abs()) * inv_d[a])
-                    .sum();
-                m.max(rate)
-            })
-        },
-        f64::max,
-    )
-}
-
 /// The stable time step [s] for face speeds `max_speed[a]` [m s⁻¹] and the largest kinematic
 /// viscosity `nu_max` [m² s⁻¹], per the formula of the module docs.
 pub fn stable_time_step(
@@ -142,73 +101,6 @@ pub fn free_surface_time_step(
 ) -> f64 {
     let d = grid.spacing;
     let rate = max_speed[0] / d.x + max_speed[1] / d.y + max_speed[2] / d.z;
-    free_surface_step_at(grid, rate, gravity, limits)
-}
-
-/// [`free_surface_time_step`] for a given rate R [s⁻¹] (a flow's [`max_cell_rate`]).
-pub fn free_surface_step_at(
-    grid: &StaggeredGrid,
-    rate: f64,
-    gravity: f64,
-    limits: &TimeStepLimits,
-) -> f64 {
-    let d = grid.spacing;
     let g = gravity.abs() / d.x.min(d.y).min(d.z);
     2.0 * limits.cfl / (rate + (rate * rate + 4.0 * g).sqrt())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::math::Vec3;
-
-    /// A 6 × 4 × 5 grid of cells 0.1 × 0.2 × 0.1 m and its three zeroed face fields.
-    fn grid_and_flow() -> (StaggeredGrid, [Vec<f64>; 3]) {
-        let g = StaggeredGrid::new([6, 4, 5], Vec3::new(0.6, 0.8, 0.5), Vec3::ZERO);
-        let u = std::array::from_fn(|_| g.field());
-        (g, u)
-    }
-
-    #[test]
-    fn a_uniform_flow_crosses_every_cell_at_the_sum_of_its_axis_rates() {
-        let (g, mut u) = grid_and_flow();
-        for (a, v) in [(0, 1.5), (1, -0.4), (2, 0.3)] {
-            u[a].iter_mut().for_each(|x| *x = v);
-        }
-        let rate = max_cell_rate(&g, [&u[0], &u[1], &u[2]]);
-        let sum: f64 = (0..3).map(|a| max_speed(&g, a, &u[a]) / g.spacing[a]).sum();
-        // 1.5/0.1 + 0.4/0.2 + 0.3/0.1 = 20 s⁻¹ both ways.
-        assert!((rate - 20.0).abs() < 1e-12, "{rate}");
-        assert!((sum - 20.0).abs() < 1e-12, "{sum}");
-    }
-
-    #[test]
-    fn the_fastest_x_and_z_flows_in_different_cells_do_not_add_up() {
-        let (g, mut u) = grid_and_flow();
-        // 2 m/s through the low x-face of cell (1, 1, 1), 1 m/s through the high z-face of
-        // cell (4, 2, 3): the per-axis sum is 20 + 10 s⁻¹, each cell sees one of them.
-        u[0][g.cell(1, 1, 1)] = 2.0;
-        u[2][g.cell(4, 2, 4)] = -1.0;
-        let rate = max_cell_rate(&g, [&u[0], &u[1], &u[2]]);
-        let sum: f64 = (0..3).map(|a| max_speed(&g, a, &u[a]) / g.spacing[a]).sum();
-        assert!((rate - 20.0).abs() < 1e-12, "{rate}");
-        assert!((sum - 30.0).abs() < 1e-12, "{sum}");
-        // The same step as the per-axis form when that form sees one cell's rate.
-        let limits = TimeStepLimits::default();
-        let at = free_surface_step_at(&g, 30.0, 9.81, &limits);
-        let by_axis = free_surface_time_step(&g, [2.0, 0.0, 1.0], 9.81, &limits);
-        assert!((at - by_axis).abs() < 1e-15 * at, "{at} {by_axis}");
-        assert!(free_surface_step_at(&g, rate, 9.81, &limits) > at);
-    }
-
-    #[test]
-    fn a_faster_cell_behind_a_wall_ghost_is_not_counted() {
-        let (g, mut u) = grid_and_flow();
-        // Ghost rows (outside the cells along y and z) are not faces of any cell.
-        u[0][g.index(3, 0, 2)] = 50.0;
-        u[0][g.index(3, 2, 0)] = 50.0;
-        u[1][g.cell(2, 1, 2)] = 0.2;
-        let rate = max_cell_rate(&g, [&u[0], &u[1], &u[2]]);
-        assert!((rate - 1.0).abs() < 1e-12, "{rate}");
-    }
 }
