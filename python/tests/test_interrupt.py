@@ -11,8 +11,12 @@ import pytest
 
 SCRIPT = textwrap.dedent(
     """
-    import sys, riprap
+    import signal, sys, riprap
     from conftest import tiny
+    # A shell that starts this suite in the background (`python/ci.sh &`) ignores SIGINT, the
+    # child inherits that, and Python then installs no KeyboardInterrupt handler: the signal
+    # would be dropped before riprap saw it. A user's Ctrl-C reaches a Python that has one.
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     mode, out = sys.argv[1], sys.argv[2]
     sc = tiny(spheres=3, end_time=1000.0)
     print("ready", flush=True)
