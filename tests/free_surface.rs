@@ -573,7 +573,7 @@ fn a_stream_function_flume_is_checked_by_key() {
     );
 }
 
-/// The exact projection preconditioned by the multigrid V-cycle (`pressure_preconditioner =
+/// The exact projection preconditioned by the multigrid cycle (`pressure_preconditioner =
 /// "multigrid"`) gives the spectral one's pressure to the solver's tolerance: a column of
 /// water collapsing under air (density ratio 830) with walls along x, periodic along y, a wall
 /// floor and an open top, and a block inside the water (faces closed, cells solid), 20 steps.

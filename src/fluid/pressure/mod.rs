@@ -65,7 +65,7 @@ pub struct Projection {
 pub enum Preconditioner {
     /// The constant-coefficient FFT/DCT solve ([`fft`]).
     Spectral,
-    /// A geometric multigrid V-cycle of the variable-coefficient operator ([`multigrid`]):
+    /// A geometric multigrid cycle of the variable-coefficient operator ([`multigrid`]):
     /// the default, 4-6 times faster than the spectral one where the density jumps 830-fold.
     #[default]
     Multigrid,

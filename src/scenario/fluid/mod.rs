@@ -178,7 +178,7 @@ pub struct AirSection {
     /// with `[fluid.waves]`).
     pub interface: Option<crate::fluid::interface::Reconstruction>,
     /// The preconditioner of the pressure projection's conjugate gradients: "multigrid"
-    /// (default, a V-cycle of the variable-density operator, `fluid::pressure::multigrid`) or
+    /// (default, a multigrid cycle of the variable-density operator, `fluid::pressure::multigrid`) or
     /// "spectral" (the constant-coefficient FFT/DCT solve).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pressure_preconditioner: Option<crate::fluid::pressure::Preconditioner>,

@@ -102,8 +102,12 @@ fn preconditioner(p: Preconditioner, n: [usize; 3]) -> String {
                 .iter()
                 .map(|n| format!("{}×{}×{}", n[0], n[1], n[2]))
                 .collect();
+            let cycle = match multigrid::w_levels(n) {
+                0 => "V-cycle".to_string(),
+                w => format!("W-cycle below the first {w}"),
+            };
             format!(
-                "a multigrid V-cycle on {} levels ({}, the last solved directly)",
+                "a multigrid {cycle} on {} levels ({}, the last solved directly)",
                 sizes.len(),
                 sizes.join(", ")
             )

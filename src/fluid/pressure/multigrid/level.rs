@@ -20,7 +20,7 @@
 
 use crate::fluid::grid::for_each_chunk;
 
-/// One grid level: couplings, and the vectors of a V-cycle on it.
+/// One grid level: couplings, and the vectors of a cycle on it.
 pub(super) struct Level {
     /// Cells along x, y, z.
     pub n: [usize; 3],
@@ -43,6 +43,9 @@ pub(super) struct Level {
     /// Copies of the planes either side of each block of an in-place sweep
     /// ([`super::sweep`]; empty where the level cannot sweep in place).
     pub halo: Vec<f64>,
+    /// x after the first of a W-cycle's two visits, while the second is made
+    /// ([`Level::restart_from_residual`]).
+    saved: Vec<f64>,
 }
 
 /// The start of a row (j, k) and of its y and z neighbours (low, high), across the box
@@ -164,6 +167,7 @@ impl Level {
             x: zero(),
             next: zero(),
             halo: vec![0.0; halo],
+            saved: zero(),
         }
     }
 
@@ -245,8 +249,25 @@ impl Level {
         });
     }
 
+    /// For a second visit of a W-cycle: b ← b − Â x and x kept aside, so that the next
+    /// cycle from x = 0 solves for the correction, which [`Level::add_saved`] adds back.
+    pub fn restart_from_residual(&mut self) {
+        let mut ax = std::mem::take(&mut self.next);
+        self.apply(&self.x, &mut ax);
+        self.b.iter_mut().zip(&ax).for_each(|(b, a)| *b -= a);
+        self.next = ax;
+        std::mem::swap(&mut self.saved, &mut self.x);
+    }
+
+    /// x += the x kept by [`Level::restart_from_residual`].
+    pub fn add_saved(&mut self) {
+        self.x
+            .iter_mut()
+            .zip(&self.saved)
+            .for_each(|(x, s)| *x += s);
+    }
+
     /// out = Â x.
-    #[cfg(test)]
     pub fn apply(&self, x: &[f64], out: &mut [f64]) {
         let nx = self.n[0];
         for_each_chunk(out, nx, |row, line| {

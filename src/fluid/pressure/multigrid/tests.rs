@@ -276,3 +276,31 @@ fn the_in_place_sweep_gives_the_bits_of_two_half_sweeps() {
         }
     }
 }
+
+#[test]
+fn a_deep_3d_hierarchy_keeps_its_iterations_low() {
+    // The water and air column with an open top, refined in 3D from 3 to 6 levels: conjugate
+    // gradients preconditioned by the cycle (a W below its 3D levels) to 1e-10. Measured: 7,
+    // 9, 9 iterations; the V-cycle everywhere took 7, 12, 15 (the piecewise-constant
+    // transfers' loss compounding over the levels).
+    let open = Boundaries::periodic()
+        .with(0, Boundary::FreeSlip, Boundary::FreeSlip)
+        .with(1, Boundary::FreeSlip, Boundary::FreeSlip)
+        .with(2, Boundary::FreeSlip, Boundary::Open);
+    for n in [[32, 4, 16], [64, 8, 32], [256, 18, 86]] {
+        let size = Vec3::new(n[0] as f64, n[1] as f64, n[2] as f64) * 0.01;
+        let grid = StaggeredGrid::new(n, size, Vec3::ZERO);
+        let regions = projected_faces(&grid, &open);
+        let rho_f = column(&grid, &[]);
+        let (mut mg, mut op) = (Multigrid::default(), Multigrid::default());
+        mg.set_operator(&grid, &regions, [false; 3], &rho_f);
+        op.set_operator(&grid, &regions, [false; 3], &rho_f);
+        let b = noise(grid.cell_count(), 4);
+        let iterations = pcg_iterations(&op.levels[0], &b, |r, z| {
+            mg.precondition(r, z);
+            z.iter_mut().for_each(|z| *z = -*z);
+        });
+        eprintln!("{n:?}: {} levels, {iterations} iterations", mg.levels.len());
+        assert!(iterations <= 10, "{n:?}: {iterations} iterations");
+    }
+}
