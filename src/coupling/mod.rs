@@ -423,6 +423,7 @@ impl Coupling {
                                 &this.cell_phi,
                                 phases,
                                 this.gravity,
+                                (s.body[i] != NO_BODY).then_some(volume),
                             );
                             b + volume * drive
                         }

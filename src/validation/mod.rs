@@ -17,7 +17,8 @@
 //!   and [`absorption`] (the absorbing zone's reflection, kh 0.5 to 3), the wave flume, and
 //!   [`wavemaker`] (the height a piston or a flap makes), all on [`linear_flume`];
 //!   [`solitary_wave`] (a solitary wave's height and speed over ten depths of travel);
-//!   [`floating_sphere`] (the coupling under air: Archimedes' draft);
+//!   [`floating_sphere`] (the coupling under air: Archimedes' draft), [`floating_box`] (a
+//!   block's);
 //! * the shallow-water solver (`shallow`): [`shallow_lake_at_rest`] (well balanced over a
 //!   rough bed with dry islands), [`shallow_dam_break`] (Stoker and Ritter, L1 error and its
 //!   order), [`shallow_thacker`] (Thacker's moving shoreline in a paraboloid) and
@@ -31,6 +32,7 @@ pub mod cavity;
 pub mod channel180;
 pub mod cylinder_strouhal;
 pub mod dam_break;
+pub mod floating_box;
 pub mod floating_sphere;
 pub mod hopper_cloud;
 pub mod linear_flume;

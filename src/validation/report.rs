@@ -83,7 +83,7 @@ pub fn run_validation(out: &Path, quick: bool) -> anyhow::Result<(String, bool)>
 }
 
 /// The names `riprap validate --only` accepts.
-pub const CASES: [&str; 26] = [
+pub const CASES: [&str; 27] = [
     "cavity",
     "channel",
     "sphere_drag",
@@ -100,6 +100,7 @@ pub const CASES: [&str; 26] = [
     "wavemaker",
     "solitary_wave",
     "floating_sphere",
+    "floating_box",
     "sheet_flow",
     "sheet_flow_sensitivity",
     "sheet_flow_report",
@@ -189,6 +190,10 @@ pub fn run_validation_cases(
     // suite checks its static balance (tests/coupling.rs).
     if run("floating_sphere") && (!quick || only.is_some()) {
         all &= super::floating_sphere::report::section(out, quick, &mut md)?;
+    }
+    // As the sphere: minutes at its quick level.
+    if run("floating_box") && (!quick || only.is_some()) {
+        all &= super::floating_box::report::section(out, quick, &mut md)?;
     }
     if run("sheet_flow") {
         all &= sections::ensemble(out, quick, case5, &mut md)?;

@@ -15,8 +15,8 @@ pub const SCENARIO: &str = include_str!("scenario.toml");
 
 /// The sphere's radius R [m] and the densities [kg m⁻³] of the scenario.
 pub const RADIUS: f64 = 0.04;
-const RHO_W: f64 = 1000.0;
-const RHO_A: f64 = 1.204;
+pub(crate) const RHO_W: f64 = 1000.0;
+pub(crate) const RHO_A: f64 = 1.204;
 
 /// The volume of a cap of height h of a sphere of radius r: π h² (3r − h)/3 [m³].
 pub fn cap_volume(h: f64, r: f64) -> f64 {
@@ -93,9 +93,9 @@ pub fn scenario(rho_s: f64, quick: bool) -> String {
     }
 }
 
-/// The water level [m] averaged over the columns whose centres lie more than 2 R from the
-/// vertical through `centre` (x, y) [m]: Σ_k α Δz above the bed (no solid there).
-fn far_level(f: &Fluid, centre: (f64, f64)) -> f64 {
+/// The water level [m] averaged over the columns whose centres lie more than `away` [m] from
+/// the vertical through `centre` (x, y) [m]: Σ_k α Δz above the bed (no solid there).
+pub(crate) fn far_level(f: &Fluid, centre: (f64, f64), away: f64) -> f64 {
     let g = f.grid();
     let alpha = f.water_fraction();
     let (mut sum, mut n) = (0.0, 0usize);
@@ -103,7 +103,7 @@ fn far_level(f: &Fluid, centre: (f64, f64)) -> f64 {
         for i in 0..g.n[0] {
             let x = g.cell_centre(i, j, 0);
             let d = ((x.x - centre.0).powi(2) + (x.y - centre.1).powi(2)).sqrt();
-            if d <= 2.0 * RADIUS {
+            if d <= away {
                 continue;
             }
             let column: f64 = (0..g.n[2]).map(|k| alpha[g.cell(i, j, k)]).sum();
@@ -174,7 +174,7 @@ pub fn run_scenario(text: &str, rho_s: f64) -> anyhow::Result<Run> {
         sim.step_towards(t_end)?;
         let x = sim.dem.spheres.position[0];
         let f = fluid(&sim);
-        samples.push((sim.time, x.z, far_level(f, (x.x, x.y))));
+        samples.push((sim.time, x.z, far_level(f, (x.x, x.y), 2.0 * RADIUS)));
         if sim.time >= (1.0 - SETTLED) * t_end {
             max_speed = max_speed.max(f.max_cell_speed());
         }
