@@ -75,7 +75,13 @@ fn still_tank(top: Boundary) {
         f.clipped()
     );
     assert!(worst < 1e-9, "spurious velocity {worst:e} m/s");
-    assert!(((v1 - v0) / v0).abs() < 1e-13);
+    // Round-off: each projection leaves a divergence up to its tolerance (1e-13 of its
+    // right-hand side's norm), which the surface's transport turns into volume. Measured over
+    // the 200 steps, top closed and open: 2e-14 and 5e-15 of the volume with the multigrid
+    // V-cycle, 1.4e-13 and 6.5e-14 with the W below the 3D levels (0 or 1 CG iterations a
+    // step at residuals of 1e-14 in both: the sign of each step's leftover decides the sum).
+    // 1e-12 is still a millionth of a millionth; a scheme that lost volume would show 1e-6.
+    assert!(((v1 - v0) / v0).abs() < 1e-12);
     assert!(lo >= 0.0 && hi <= 1.0);
 }
 

@@ -61,9 +61,10 @@
 //! [59]'s sum by shares over every face a sphere touches would apply to a body thicker than
 //! the sphere: [59] takes the pressure less its hydrostatic part
 //! ([`resolved::FlowView::force_density`]), and the buoyancy is the weight of the water *and*
-//! air displaced, the sphere's own volume under the water line placed in each cell, shared
-//! where a block's members overlap ([`buoyancy`]): a block half out of the water is buoyed by
-//! its submerged half (validation case `floating_sphere`: Archimedes' draft). Unresolved
+//! air displaced, the sphere's own volume under the water line placed in each cell (a block's
+//! member: its share of the block's volume, split between water and air as its own volume is,
+//! [`buoyancy`]): a block half out of the water is buoyed by its submerged half (validation
+//! cases `floating_sphere` and `floating_box`: Archimedes' draft). Unresolved
 //! spheres take ρ(α) and ν(α) at their centre for the drag [5] and the buoyancy.
 //!
 //! **Sub-cycling.** The fluid force is *held* over the k DEM sub-steps of a fluid step: the
