@@ -588,9 +588,9 @@ fn a_stream_function_flume_is_checked_by_key() {
 /// (≈ 830 × (n_z/π)² ≈ 2e4 here) at most, 2e-9 relative; the 20 steps carry it along. That
 /// holds for the transport without exchange (`"weighted"`: 1e-8 asked). With the exchange
 /// (`"exchange"`; the default `"upwind"` exchanges too) a face exchanges or not as its cells'
-/// α fall either side of ½ (`fluid::exchange`): a difference at round-off in α can switch a face, and the two runs
-/// part by 1.2e-5 of the pressure and 3.5e-3 of the speed after 20 steps (measured
-/// 2026-12-07); 1e-4 and 1e-2 asked, with the iterations as before.
+/// α fall either side of ½ (`fluid::exchange`): a difference at round-off in α can switch a
+/// face, and the two runs part by 1.2e-5 of the pressure and 3.5e-3 of the speed after 20
+/// steps (measured 2026-12-07); 1e-4 and 1e-2 asked, with the iterations as before.
 #[test]
 fn the_multigrid_preconditioner_gives_the_spectral_pressure() {
     let (dp, du) = preconditioners_compared(Momentum::Weighted);
