@@ -45,7 +45,7 @@
 //! (a W-cycle, [`visits`]): the second visit starts from the first one's result and solves for
 //! its correction from the coarse residual. Piecewise-constant transfers lose a little at each
 //! level, which a V-cycle compounds over a deep hierarchy (the lab-scale armour example has
-//! seven levels) and a W-cycle does not. Two visits of the same symmetric cycle are again
+//! six levels) and a W-cycle does not. Two visits of the same symmetric cycle are again
 //! symmetric: x ← x + M_c (b − Â_c x) twice from zero is (2 M_c − M_c Â_c M_c) b, positive
 //! where M_c Â_c's eigenvalues lie in (0, 2), that is where one cycle reduces the error in
 //! Â_c's norm (`tests`: symmetry and sign on every boundary set-up).
@@ -106,8 +106,8 @@ pub fn level_sizes(n: [usize; 3]) -> Vec<[usize; 3]> {
 /// that level is a 3D grid coarsened along all three axes (its work is then 2/8 of this
 /// level's, and the W costs at most 4/3 of the finest level's sweeps), once where it is a
 /// slice (an axis of one cell) or the coarsest level, solved exactly. On the lab-scale armour
-/// example under breaking waves (seven levels) the W took 26.0 conjugate-gradient iterations
-/// a step against the V's 36.4, in 0.90 of the time; the dam break's slice at a/16 (80 × 2 ×
+/// example under breaking waves (six levels) the W took 26.0 conjugate-gradient iterations
+/// a step against the V's 36.4, in 0.87 of the time; the dam break's slice at a/16 (80 × 2 ×
 /// 40, then slices) took 9.9 against 10.3 with a W at its top level, in 1.15× the time.
 fn visits(n: [usize; 3], next_is_coarsest: bool) -> usize {
     // Every axis of the coarse level has more than one cell, so each was halved.
