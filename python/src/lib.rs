@@ -11,6 +11,7 @@
 
 mod blocks;
 mod dict;
+mod drive;
 mod flow;
 mod shallow;
 mod sim;

@@ -8,7 +8,6 @@
 //! `ids`.
 
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
 
 use numpy::{
     PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods,
@@ -28,62 +27,25 @@ use riprap::run::{checkpoint_of, flow, restore, series_row};
 use riprap::scenario::{build, Source};
 use riprap::simulation::Simulation;
 
+use crate::drive::OneStep;
 use crate::shallow::PyShallow;
-use crate::{instability, load, runtime_error, scenario_error, Loaded};
-
-/// A chunk of steps between two looks at Ctrl-C doubles until it takes this long.
-const CHUNK: Duration = Duration::from_millis(50);
+use crate::{load, runtime_error, scenario_error, Loaded};
 
 /// A scenario built into a running simulation (see the module docs).
 #[pyclass(name = "Simulation", module = "riprap")]
 pub struct PySimulation {
-    sim: Simulation,
+    pub(crate) sim: Simulation,
     src: Source,
     fingerprint: Fingerprint,
     report: String,
-    one_step: OneStep,
+    /// Where one-step chunks run (`drive`).
+    pub(crate) one_step: OneStep,
     /// The DEM steps of the next chunk (`drive`).
-    chunk: u64,
+    pub(crate) chunk: u64,
     /// `[output] displacement_reference_time` while it is ahead (the CLI's `DisplacementReference`).
-    reference: DisplacementReference,
+    pub(crate) reference: DisplacementReference,
     /// `[armour]`'s reference and rocking counters, which checkpoints carry (the CLI's).
-    armour: Option<ArmourCounters>,
-}
-
-/// Where a chunk of one step runs: on a worker of the pool, which costs a round trip to wake
-/// it and wait (about 20 µs on a busy 2-core machine: 24 µs per `advance(1)` of one sphere,
-/// against 2 µs on the calling thread), or on the calling thread, where each parallel loop of
-/// the step is handed to the pool (400 spheres: 94 µs per step, against 85 µs from a worker).
-/// The wall times of both, smoothed, choose; the other is timed again every
-/// `RETRY` one-step chunks, as the spheres change. Either gives the same bits.
-#[derive(Default)]
-struct OneStep {
-    worker: Option<f64>,
-    caller: Option<f64>,
-    chunks: u64,
-}
-
-const RETRY: u64 = 128;
-
-impl OneStep {
-    /// True when the next one-step chunk should run on the calling thread.
-    fn on_caller(&self) -> bool {
-        match (self.worker, self.caller) {
-            (None, _) => false,
-            (Some(_), None) => true,
-            (Some(w), Some(c)) => (c < w) != (self.chunks % RETRY == 0),
-        }
-    }
-
-    fn record(&mut self, on_caller: bool, seconds: f64) {
-        let t = if on_caller {
-            &mut self.caller
-        } else {
-            &mut self.worker
-        };
-        *t = Some(t.map_or(seconds, |x| 0.8 * x + 0.2 * seconds));
-        self.chunks += 1;
-    }
+    pub(crate) armour: Option<ArmourCounters>,
 }
 
 fn vec3_array<'py>(py: Python<'py>, v: &[Vec3]) -> PyResult<Bound<'py, PyArray2<f64>>> {
@@ -172,97 +134,6 @@ impl PySimulation {
             a.begin(&self.sim, self.reference.pending());
         }
         Ok(())
-    }
-
-    /// Whether each step must be followed by the bookkeeping (then steps go one by one, as the
-    /// CLI takes them).
-    fn per_step(&self) -> bool {
-        self.reference.pending() || self.armour.is_some()
-    }
-
-    /// Steps with the GIL released on a worker of rayon's pool (a one-step chunk perhaps on
-    /// this thread, [`OneStep`]), in chunks that double while they take less than `CHUNK` of
-    /// wall time (and halve above twice that), looking at Ctrl-C between them: `steps` steps,
-    /// or (`until` = (t, end)) fluid steps towards `end` until t is reached. A
-    /// KeyboardInterrupt leaves the state at the end of the last whole step. Any split of the
-    /// steps gives the same bits as one call (`Simulation::advance`).
-    fn drive(&mut self, py: Python<'_>, mut steps: u64, until: Option<(f64, f64)>) -> PyResult<()> {
-        // Within half a DEM step of t, or past it (a step towards a later end may overshoot).
-        let arrived = |sim: &Simulation, t: f64| sim.reached(t) || sim.time >= t;
-        // DEM steps start from the chunk the last call ended with (a step loop of advance(k)
-        // then runs each call as one chunk); fluid steps, long and varying, from one.
-        let mut chunk = if until.is_some() { 1 } else { self.chunk };
-        loop {
-            let done = match until {
-                Some((t, _)) => arrived(&self.sim, t),
-                None => steps == 0,
-            };
-            if done {
-                return Ok(());
-            }
-            let k = if until.is_some() {
-                chunk
-            } else {
-                chunk.min(steps)
-            };
-            let per_step = self.per_step();
-            let (sim, reference, armour) = (&mut self.sim, &mut self.reference, &mut self.armour);
-            // After each step, as the CLI's loop: the displacement reference, then the armour.
-            let mut after = |sim: &mut Simulation| {
-                reference.after_step(&mut sim.rigid, sim.time);
-                if let Some(a) = armour.as_mut() {
-                    a.after_step(sim, reference.pending());
-                }
-            };
-            let clock = Instant::now();
-            let on_caller = k == 1 && self.one_step.on_caller();
-            let r = py.detach(|| {
-                let mut work = || match until {
-                    Some((t, end)) => {
-                        for _ in 0..k {
-                            if arrived(sim, t) {
-                                break;
-                            }
-                            sim.step_towards(end)?;
-                            after(sim);
-                        }
-                        Ok(())
-                    }
-                    None if per_step => {
-                        for _ in 0..k {
-                            sim.advance(1)?;
-                            after(sim);
-                        }
-                        Ok(())
-                    }
-                    None => sim.advance(k),
-                };
-                if on_caller {
-                    work()
-                } else {
-                    rayon::scope(|_| work())
-                }
-            });
-            if k == 1 {
-                self.one_step
-                    .record(on_caller, clock.elapsed().as_secs_f64());
-            }
-            r.map_err(instability)?;
-            let took = clock.elapsed();
-            if took < CHUNK {
-                chunk = chunk.saturating_mul(2);
-            } else if took > 2 * CHUNK {
-                chunk = (chunk / 2).max(1);
-            }
-            if until.is_none() {
-                self.chunk = chunk;
-                steps -= k;
-                if steps == 0 {
-                    return Ok(());
-                }
-            }
-            py.check_signals()?;
-        }
     }
 
     /// Rebuilds the neighbour and wall lists after spheres were set, added or removed

@@ -17,10 +17,11 @@
 //! preconditioned operator's spectrum lies in [1/ρ_w, 1/ρ_a] with most eigenvalues clustered at
 //! its two ends (the cells of each phase), which conjugate gradients resolve quickly.
 //! Alternatively ([`super::Preconditioner::Multigrid`], `pressure_preconditioner =
-//! "multigrid"` under `[fluid.air]`) it is one multigrid cycle of A itself ([`super::multigrid`]),
-//! which sees the density jump: on the dam break at a/16 10 iterations per step instead of 73,
-//! the projection 4-6× faster (bench/HISTORY.md). The start is the extrapolated p̂ = (1 + r) pⁿ − r pⁿ⁻¹. The iteration stops when the residual's
-//! 2-norm falls below [`TOLERANCE`] times that of the right-hand side, when round-off stops it
+//! "multigrid"` under `[fluid.air]`) it is one multigrid cycle of A itself
+//! ([`super::multigrid`]), which sees the density jump: on the dam break at a/16 10 iterations
+//! per step instead of 73, the projection 4-6× faster (bench/HISTORY.md). The start is the
+//! extrapolated p̂ = (1 + r) pⁿ − r pⁿ⁻¹. The iteration stops when the residual's 2-norm
+//! falls below [`TOLERANCE`] times that of the right-hand side, when round-off stops it
 //! falling (no new low in [`STALL`] iterations), or after [`MAX_ITERATIONS`].
 //!
 //! Every sum runs over fixed blocks of cells (one z-plane each), the blocks' sums added in

@@ -7,7 +7,7 @@ pub mod report;
 
 use std::path::PathBuf;
 
-use super::floating_sphere::{far_level, whole_period_mean, RHO_A, RHO_W};
+use super::floating_sphere::{far_level, sampled_water_volume, whole_period_mean, RHO_A, RHO_W};
 use crate::math::Vec3;
 use crate::scenario::{build, Source};
 use crate::simulation::Simulation;
@@ -162,7 +162,7 @@ pub struct Run {
 /// The scenario with the box's density `rho_s` [kg m⁻³], released with its lowest point a
 /// quarter of its height above its floating position, and, for the quick level, Δ = 1.6 cm
 /// and a run of 2 s.
-pub fn scenario(rho_s: f64, quick: bool) -> String {
+pub fn scenario(rho_s: f64, quick: bool) -> anyhow::Result<String> {
     let s = SCENARIO.replace("density = 500.0", &format!("density = {rho_s:.1}"));
     let s = if quick {
         s.replace("cell_size = 0.01 ", "cell_size = 0.016")
@@ -171,20 +171,20 @@ pub fn scenario(rho_s: f64, quick: bool) -> String {
         s
     };
     // Archimedes' draft of the box as built (its mass from the scenario's own quadrature).
-    let z = match build_simulation(&s).map(|sim| expected_draft(&sim)) {
-        Ok(draft) => WATER_LEVEL - draft + 0.25 * HEIGHT + 0.5 * HEIGHT,
-        Err(_) => return s,
-    };
-    s.replace(
+    let draft = expected_draft(&load(&s)?.1);
+    let z = WATER_LEVEL - draft + 0.25 * HEIGHT + 0.5 * HEIGHT;
+    Ok(s.replace(
         "position = [0.34, 0.34, 0.13]",
         &format!("position = [0.34, 0.34, {z:.6}]"),
-    )
+    ))
 }
 
-fn build_simulation(text: &str) -> anyhow::Result<Simulation> {
+/// The scenario `text` (with the validation's momentum transport) and its simulation.
+fn load(text: &str) -> anyhow::Result<(Source, Simulation)> {
     let text = super::with_momentum(text);
     let src = Source::from_str(&text, "floating_box/scenario.toml", PathBuf::from("."))?;
-    Ok(build(&src)?.simulation)
+    let sim = build(&src)?.simulation;
+    Ok((src, sim))
 }
 
 /// The slots of block 0's member spheres.
@@ -220,50 +220,27 @@ fn lowest_point(sim: &Simulation) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
-/// The water's volume Σ α (1 − φ) ΔV [m³], φ from the members' exact geometry at 4³
-/// sub-samples per cell (a point in any member is solid).
+/// The water's volume Σ α (1 − φ) ΔV [m³], φ from the members' exact geometry (a point in
+/// any member is solid) at 4³ sub-samples per cell.
 fn water_volume(sim: &Simulation) -> f64 {
     let f = sim.fluid.as_ref().expect("the scenario has a fluid");
     let s = &sim.dem.spheres;
     let m = members(sim);
     let centre = sim.rigid.blocks.centre[0];
-    let inside = |p: Vec3| {
-        m.iter()
-            .any(|&i| (p - s.position[i]).length() < s.radius[i])
-    };
-    let g = f.grid();
-    let alpha = f.water_fraction();
-    let q = 4usize;
-    let reach = HALF_WIDTH * 2f64.sqrt() + HEIGHT + g.spacing.length();
-    let mut total = 0.0;
-    for k in 0..g.n[2] {
-        for j in 0..g.n[1] {
-            for i in 0..g.n[0] {
-                let c = g.cell_centre(i, j, k);
-                let phi = if (c - centre).length() > reach {
-                    0.0
-                } else {
-                    let solid = (0..q * q * q)
-                        .filter(|n| {
-                            let t = [n % q, (n / q) % q, n / (q * q)]
-                                .map(|t| (t as f64 + 0.5) / q as f64 - 0.5);
-                            inside(c + Vec3::from(t) * g.spacing)
-                        })
-                        .count();
-                    solid as f64 / (q * q * q) as f64
-                };
-                total += alpha[g.cell(i, j, k)] * (1.0 - phi);
-            }
-        }
-    }
-    total * g.cell_volume()
+    let reach = HALF_WIDTH * 2f64.sqrt() + HEIGHT + f.grid().spacing.length();
+    sampled_water_volume(
+        f,
+        |c| (c - centre).length() <= reach,
+        |p| {
+            m.iter()
+                .any(|&i| (p - s.position[i]).length() < s.radius[i])
+        },
+    )
 }
 
 /// Runs the case with a box of density `rho_s` [kg m⁻³].
 pub fn run(rho_s: f64, quick: bool) -> anyhow::Result<Run> {
-    let text = scenario(rho_s, quick);
-    let mut sim = build_simulation(&text)?;
-    let src = Source::from_str(&text, "floating_box/scenario.toml", PathBuf::from("."))?;
+    let (src, mut sim) = load(&scenario(rho_s, quick)?)?;
     let cell = src.scenario.fluid.as_ref().and_then(|f| f.cell_size);
     let t_end = src.scenario.run.end_time;
     let expected = expected_draft(&sim);
@@ -370,13 +347,13 @@ mod tests {
                 let text = SCENARIO
                     .replace("cell_size = 0.01 ", &format!("cell_size = {cell} "))
                     .replace("water_level = 0.12 ", &format!("water_level = {level} "));
-                let draft = expected_draft(&build_simulation(&text).unwrap());
+                let draft = expected_draft(&load(&text).unwrap().1);
                 let z = level - draft + 0.5 * HEIGHT;
                 let text = text.replace(
                     "position = [0.34, 0.34, 0.13]",
                     &format!("position = [0.34, 0.34, {z}]"),
                 );
-                let mut sim = build_simulation(&text).unwrap();
+                let mut sim = load(&text).unwrap().1;
                 sim.step().unwrap();
                 let s = &sim.dem.spheres;
                 let held: f64 = members(&sim).iter().map(|&i| s.fluid[i].force.z).sum();
@@ -396,7 +373,7 @@ mod tests {
     /// floats near half its height.
     #[test]
     fn the_box_as_columns_has_its_templates_volume() {
-        let sim = build_simulation(SCENARIO).unwrap();
+        let sim = load(SCENARIO).unwrap().1;
         let shape = shape(&sim);
         let template = sim.rigid.templates[0].volume;
         assert!(

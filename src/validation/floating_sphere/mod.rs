@@ -117,6 +117,21 @@ pub(crate) fn far_level(f: &Fluid, centre: (f64, f64), away: f64) -> f64 {
 /// The water's volume Σ α (1 − φ) ΔV [m³], φ from the sphere's exact geometry at the cell
 /// centres' sub-samples (4³ per cell).
 fn water_volume(f: &Fluid, centre: crate::math::Vec3) -> f64 {
+    let reach = RADIUS + f.grid().spacing.length();
+    sampled_water_volume(
+        f,
+        |c| (c - centre).length() <= reach,
+        |p| (p - centre).length() < RADIUS,
+    )
+}
+
+/// The water's volume Σ α (1 − φ) ΔV [m³] about a body: φ of the cells whose centres are
+/// `near` the fraction of 4³ sub-samples `inside` it, 0 elsewhere.
+pub(crate) fn sampled_water_volume(
+    f: &Fluid,
+    near: impl Fn(crate::math::Vec3) -> bool,
+    inside: impl Fn(crate::math::Vec3) -> bool,
+) -> f64 {
     let g = f.grid();
     let alpha = f.water_fraction();
     let m = 4usize;
@@ -126,10 +141,10 @@ fn water_volume(f: &Fluid, centre: crate::math::Vec3) -> f64 {
             for i in 0..g.n[0] {
                 let c = g.cell_centre(i, j, k);
                 let a = alpha[g.cell(i, j, k)];
-                let phi = if (c - centre).length() > RADIUS + g.spacing.length() {
+                let phi = if !near(c) {
                     0.0
                 } else {
-                    let mut inside = 0;
+                    let mut solid = 0;
                     for q in 0..m * m * m {
                         let s = [q % m, (q / m) % m, q / (m * m)];
                         let p = crate::math::Vec3::new(
@@ -137,9 +152,9 @@ fn water_volume(f: &Fluid, centre: crate::math::Vec3) -> f64 {
                             c.y + ((s[1] as f64 + 0.5) / m as f64 - 0.5) * g.spacing.y,
                             c.z + ((s[2] as f64 + 0.5) / m as f64 - 0.5) * g.spacing.z,
                         );
-                        inside += usize::from((p - centre).length() < RADIUS);
+                        solid += usize::from(inside(p));
                     }
-                    inside as f64 / (m * m * m) as f64
+                    solid as f64 / (m * m * m) as f64
                 };
                 total += a * (1.0 - phi);
             }

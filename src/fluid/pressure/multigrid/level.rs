@@ -44,7 +44,7 @@ pub(super) struct Level {
     /// ([`super::sweep`]; empty where the level cannot sweep in place).
     pub halo: Vec<f64>,
     /// x after the first of a W-cycle's two visits, while the second is made
-    /// ([`Level::restart_from_residual`]).
+    /// ([`Level::restart_from_residual`]; empty on a level visited once).
     saved: Vec<f64>,
 }
 
@@ -146,8 +146,8 @@ impl RowView<'_> {
 }
 
 impl Level {
-    /// A level of `n` cells, couplings zero.
-    pub fn new(n: [usize; 3], periodic: [bool; 3]) -> Level {
+    /// A level of `n` cells, couplings zero; `revisited` where a W-cycle visits it twice.
+    pub fn new(n: [usize; 3], periodic: [bool; 3], revisited: bool) -> Level {
         let len = n[0] * n[1] * n[2];
         let zero = || vec![0.0; len];
         // One block of planes per thread for the in-place sweeps.
@@ -167,7 +167,7 @@ impl Level {
             x: zero(),
             next: zero(),
             halo: vec![0.0; halo],
-            saved: zero(),
+            saved: if revisited { zero() } else { Vec::new() },
         }
     }
 
@@ -251,23 +251,33 @@ impl Level {
 
     /// For a second visit of a W-cycle: b ← b − Â x and x kept aside, so that the next
     /// cycle from x = 0 solves for the correction, which [`Level::add_saved`] adds back.
+    /// By rows in parallel, as [`Level::apply`].
     pub fn restart_from_residual(&mut self) {
-        let mut ax = std::mem::take(&mut self.next);
-        self.apply(&self.x, &mut ax);
-        self.b.iter_mut().zip(&ax).for_each(|(b, a)| *b -= a);
-        self.next = ax;
+        let nx = self.n[0];
+        let mut b = std::mem::take(&mut self.b);
+        for_each_chunk(&mut b, nx, |row, line| {
+            let r = self.rows(row);
+            let v = self.view(&r, &self.x);
+            for (i, b) in line.iter_mut().enumerate() {
+                let (lo, hi) = Self::along(i, nx);
+                *b -= self.diag[r.own + i] * v.x[i] - v.sum(i, lo, hi);
+            }
+        });
+        self.b = b;
         std::mem::swap(&mut self.saved, &mut self.x);
     }
 
     /// x += the x kept by [`Level::restart_from_residual`].
     pub fn add_saved(&mut self) {
-        self.x
-            .iter_mut()
-            .zip(&self.saved)
-            .for_each(|(x, s)| *x += s);
+        let (nx, saved) = (self.n[0], &self.saved);
+        for_each_chunk(&mut self.x, nx, |row, line| {
+            let s = &saved[row * nx..(row + 1) * nx];
+            line.iter_mut().zip(s).for_each(|(x, s)| *x += s);
+        });
     }
 
     /// out = Â x.
+    #[cfg(test)]
     pub fn apply(&self, x: &[f64], out: &mut [f64]) {
         let nx = self.n[0];
         for_each_chunk(out, nx, |row, line| {

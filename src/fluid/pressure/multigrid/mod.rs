@@ -148,9 +148,13 @@ impl Multigrid {
         rho_f: &[Vec<f64>; 3],
     ) {
         if self.levels.first().map(|l| (l.n, l.periodic)) != Some((grid.n, periodic)) {
-            self.levels = level_sizes(grid.n)
-                .into_iter()
-                .map(|n| Level::new(n, periodic))
+            let sizes = level_sizes(grid.n);
+            let last = sizes.len() - 1;
+            self.levels = (0..sizes.len())
+                .map(|l| {
+                    let revisited = l > 0 && visits(sizes[l - 1], l == last) == 2;
+                    Level::new(sizes[l], periodic, revisited)
+                })
                 .collect();
         }
         let h = [grid.spacing.x, grid.spacing.y, grid.spacing.z];
