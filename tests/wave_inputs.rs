@@ -97,6 +97,29 @@ fn a_fifth_order_stokes_flume() {
     );
 }
 
+/// `check` gives a regular wave's height as a fraction of its breaking limit, and warns below
+/// the resolution `validation::regular_waves` measured for a wave that steep: the example's
+/// wave (H = 4 cm, 0.21 of the highest wave of its length) at its 4 cells per H and 40 per L
+/// passes; the stream-function wave of H = 10 cm (0.52) on the same grid, 10 per H and 40
+/// per L, is warned (it needs 80 per L: at 40 it lost 8 % of its height over 5 L).
+#[test]
+fn check_warns_a_steep_wave_below_its_validated_resolution() {
+    let dir = std::env::temp_dir();
+    let linear = report_of(EXAMPLE, &dir).unwrap();
+    assert!(
+        linear.contains("H is 0.21 of the breaking limit"),
+        "{linear}"
+    );
+    assert!(!linear.contains("warning: below"), "{linear}");
+    let keys = "theory = \"stream_function\"\nheight = 0.10\nperiod = 1.0\n";
+    let steep = report_of(&flume_with(keys), &dir).unwrap();
+    assert!(steep.contains("H is 0.52 of the breaking limit"), "{steep}");
+    assert!(
+        steep.contains("warning: below 8 cells per H or 80 per L"),
+        "{steep}"
+    );
+}
+
 /// `theory = "solitary"`, H = 4 cm in h = 0.4 m: K = √(3H/4h³) = 0.685 m⁻¹, effective
 /// length 2π/K = 9.17 m (too long for the example's zones of 1 + 1.5 wavelengths: shorter
 /// zones given), c = √(g(h + H)) = 2.078 m/s. By default the crest starts 4.147/K behind

@@ -15,7 +15,7 @@
 //!   [`standing_wave`] (the first sloshing mode of a tank, against linear theory), the free
 //!   surface; [`regular_waves`] (a wave generated, carried five wavelengths and absorbed)
 //!   and [`absorption`] (the absorbing zone's reflection, kh 0.5 to 3), the wave flume, and
-//!   [`wavemaker`] (the height a piston or a flap makes), all on [`linear_flume`];
+//!   [`wavemaker`] (the height a piston or a flap makes), all on [`flume_case`];
 //!   [`solitary_wave`] (a solitary wave's height and speed over ten depths of travel);
 //!   [`floating_sphere`] (the coupling under air: Archimedes' draft), [`floating_box`] (a
 //!   block's);
@@ -34,8 +34,8 @@ pub mod cylinder_strouhal;
 pub mod dam_break;
 pub mod floating_box;
 pub mod floating_sphere;
+pub mod flume_case;
 pub mod hopper_cloud;
-pub mod linear_flume;
 pub mod morison_sphere;
 pub mod regular_waves;
 pub mod report;

@@ -171,7 +171,7 @@ pub fn run_validation_cases(
     if run("standing_wave") {
         all &= super::standing_wave::report::section(out, quick, &mut md)?;
     }
-    // Three quarters of an hour at its full level (src/validation/regular_waves/README.md):
+    // About an hour at its full level, 7 minutes at its quick one (src/validation/regular_waves/README.md):
     // only when named.
     if only == Some("regular_waves") {
         all &= super::regular_waves::report::section(out, quick, &mut md)?;

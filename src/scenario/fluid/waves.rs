@@ -637,17 +637,12 @@ pub(super) fn with_wavemaker(
     Ok(bcs)
 }
 
-/// Refuses a wave at or above the breaking limit: Miche's, or in shallow water, where
-/// Miche's 0.89 h is above what a steady wave reaches, the highest wave of Williams' (1981)
-/// solutions (Fenton's 1990 fit), which for a solitary wave (L → ∞) is 0.833 h.
-fn breaking(
-    src: &Source,
-    theory: Theory,
-    height: f64,
-    wavelength: f64,
-    h: f64,
-) -> Result<(), ScenarioError> {
-    let (breaking, by) = if theory == Theory::Solitary {
+/// The breaking limit [m] of a wave of length `wavelength` [m] in `h` [m], and whose limit it
+/// is: Miche's, or in shallow water, where Miche's 0.89 h is above what a steady wave reaches,
+/// the highest wave of Williams' (1981) solutions (Fenton's 1990 fit), which for a solitary
+/// wave (L → ∞) is 0.833 h.
+pub fn breaking_limit(theory: Theory, wavelength: f64, h: f64) -> (f64, &'static str) {
+    if theory == Theory::Solitary {
         (
             stream_function::highest_wave(1e6) * h,
             "the highest solitary wave, Williams 1981",
@@ -661,7 +656,18 @@ fn breaking(
         } else {
             (miche, "Miche")
         }
-    };
+    }
+}
+
+/// Refuses a wave at or above its [`breaking_limit`].
+fn breaking(
+    src: &Source,
+    theory: Theory,
+    height: f64,
+    wavelength: f64,
+    h: f64,
+) -> Result<(), ScenarioError> {
+    let (breaking, by) = breaking_limit(theory, wavelength, h);
     if height >= breaking {
         return Err(src.invalid(
             "fluid.waves.height",

@@ -4,7 +4,7 @@
 
 pub mod report;
 
-pub use super::linear_flume::{LinearFlume, Resolution, Run};
+pub use super::flume_case::{FlumeCase, Resolution, Run, Theory};
 
 /// Still-water depth h [m].
 pub const DEPTH: f64 = 0.4;
@@ -16,10 +16,11 @@ pub const LIMIT: f64 = 0.05;
 /// The flume for kh: a generating zone of 1 L, a test section of 2 L with one gauge array
 /// 0.75 L from the generating zone, an absorbing zone of 1.5 L; 0.1 m of air; a ramp of 2
 /// periods; the last 3 periods analysed.
-pub fn flume(kh: f64) -> LinearFlume {
-    LinearFlume {
+pub fn flume(kh: f64) -> FlumeCase {
+    FlumeCase {
+        theory: Theory::Linear,
         height: HEIGHT,
-        period: LinearFlume::period_for(kh, DEPTH),
+        period: FlumeCase::period_for(kh, DEPTH),
         depth: DEPTH,
         air: 0.1,
         generation: 1.0,

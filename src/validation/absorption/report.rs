@@ -23,7 +23,7 @@ pub fn section(out: &std::path::Path, quick: bool, md: &mut String) -> anyhow::R
     for (kh, res) in levels(quick) {
         let m: Measured = measure(kh, res);
         let name = format!("absorption_kh{kh}.csv");
-        super::LinearFlume::write_records(&m.run, &out.join(name))?;
+        super::FlumeCase::write_records(&m.run, &out.join(name))?;
         let ok = m.passes();
         all &= ok;
         let f = flume(kh);

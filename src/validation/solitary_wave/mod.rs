@@ -322,9 +322,9 @@ pub fn run(res: Resolution, reconstruction: Reconstruction) -> Run {
 }
 
 /// Writes the run's records to `path` as CSV: t [s], then η [m] at each gauge (named by its
-/// x [m]), one row per step (`linear_flume::write_gauges`).
+/// x [m]), one row per step (`flume_case::write_gauges`).
 pub fn write_records(run: &Run, path: &std::path::Path) -> std::io::Result<()> {
-    super::linear_flume::write_gauges(&run.gauges, &run.records, path)
+    super::flume_case::write_gauges(&run.gauges, &run.records, path)
 }
 
 #[cfg(test)]

@@ -7,7 +7,7 @@ pub mod report;
 
 use crate::fluid::wavemaker::{transfer, PaddleKind};
 
-pub use super::linear_flume::{LinearFlume, Resolution, Run};
+pub use super::flume_case::{FlumeCase, Resolution, Run, Theory};
 
 /// Still-water depth h [m].
 pub const DEPTH: f64 = 0.4;
@@ -20,10 +20,11 @@ pub const TOLERANCE: f64 = 0.03;
 /// gauge array 1 L from the paddle (past the evanescent modes, which die out within about
 /// 3 h), an absorbing zone of 1.5 L; 0.1 m of air; a ramp of 2 periods; the last 3 periods
 /// analysed.
-pub fn flume(kind: PaddleKind, kh: f64) -> LinearFlume {
-    LinearFlume {
+pub fn flume(kind: PaddleKind, kh: f64) -> FlumeCase {
+    FlumeCase {
+        theory: Theory::Linear,
         height: HEIGHT,
-        period: LinearFlume::period_for(kh, DEPTH),
+        period: FlumeCase::period_for(kh, DEPTH),
         depth: DEPTH,
         air: 0.1,
         generation: 0.0,

@@ -28,10 +28,7 @@ pub fn section(out: &std::path::Path, quick: bool, md: &mut String) -> anyhow::R
             PaddleKind::Piston => "piston",
             PaddleKind::Flap => "flap",
         };
-        super::LinearFlume::write_records(
-            &m.run,
-            &out.join(format!("wavemaker_{name}_kh{kh}.csv")),
-        )?;
+        super::FlumeCase::write_records(&m.run, &out.join(format!("wavemaker_{name}_kh{kh}.csv")))?;
         let ok = m.passes();
         all &= ok;
         let f = flume(kind, kh);
