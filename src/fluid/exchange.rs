@@ -66,6 +66,7 @@
 //! | solitary wave at 20, 8: crests, speed | 0.987-1.010, 0.9966 | 0.989-1.008, 0.9987 | 0.990-1.007, 0.9973 |
 //! | regular waves at L/Δx = 40, H/Δz = 4: heights (3 %), speed, steady wave | within 1.7 %, 1.0000, 0.997 | 0.979-1.001, 1.0062, 1.0029 | 0.982-1.001, 1.0089, 1.0057 |
 //! | regular waves at 80, 8: heights, speed / steady wave; reflection | 1.015-1.018, 0.9958 | 1.011-1.013, 1.0000; 0.016-0.036 | 0.989-1.014, 0.9995; 0.043-0.060 |
+//! | steep regular wave (H/L = 0.067) at 40, 4: height at 5 L (3 %), speed / steady wave | | 0.996, 0.9971 | 0.924, 1.0172 (fails; at 80, 8: 0.988, 1.0039) |
 //! | absorption, K_r at kh 0.5, 1, 2, 3 (5 %) | 0.020, 0.012, 0.011, 0.012 | 0.020, 0.020, 0.009, 0.009 | 0.020, 0.020, 0.011, 0.010 |
 //! | wavemakers, piston and flap at kh 0.5, 1, 2: height / first-order theory (3 %) | piston kh 1: 0.997 (the quick level only) | 0.978-1.003, all six pass | 0.980-1.007, all six pass |
 //! | floating sphere at d/Δ = 8, 500 and 250 kg/m³: draft error (1 %) | +0.16 %, +0.89 % | −0.07 %, +0.06 % | +0.02 %, −0.31 % |
