@@ -477,7 +477,7 @@ fn a_current_is_checked() {
 /// slowest component's group, 0.49 m/s, crosses the half metre in 1.0 s). Its 4σ must be
 /// H_s to 10 % and the record must follow the sea's own elevation there (correlation above
 /// 0.9). The tolerance: this grid is coarser than the 4 cells per H and 40 per L at which
-/// regular waves kept their height to 2.6 % over 5 L (`validation::regular_waves`), and the
+/// regular waves kept their height to 1.8 % over 5 L (`validation::regular_waves`), and the
 /// 4σ measured here moved by up to 4 % between set-ups (−0.8 % and correlation 0.970 here;
 /// +3.3 % with a ramp of two periods, −3.7 % and 0.916 at 2.4 cells per H_s): 10 % is about
 /// twice that. Run cost: about 900 steps, 30 s of CPU on this 2-core machine (printed).

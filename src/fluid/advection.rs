@@ -76,7 +76,7 @@
 //! cells at least half water) keep the bounded central form and its second order, so a wave's
 //! water is carried as before up to its surface faces (the validation figures in
 //! `exchange`). The first order costs a steep wave: at H/L = 0.067, 40 cells per L and 4 per
-//! H, it loses 8 % of its height over 5 L (0.4 % with the bounded form everywhere) and needs
+//! H, it loses 8 % of its height over 5 L (0.5 % with the bounded form everywhere) and needs
 //! 80 and 8 (`validation/regular_waves/README.md`).
 //!
 //! Units: u [m s⁻¹], Δ [m], ρ [kg m⁻³], A_a [m s⁻²].

@@ -13,7 +13,8 @@
 //!   the measurements of Gondret et al. 2002), the lubrication film of wet contacts;
 //!   [`dam_break`] (a water column collapsing under air, against Martin & Moyce 1952) and
 //!   [`standing_wave`] (the first sloshing mode of a tank, against linear theory), the free
-//!   surface; [`regular_waves`] (a wave generated, carried five wavelengths and absorbed)
+//!   surface; [`regular_waves`] (a linear and a steep wave generated, carried five
+//!   wavelengths and absorbed)
 //!   and [`absorption`] (the absorbing zone's reflection, kh 0.5 to 3), the wave flume, and
 //!   [`wavemaker`] (the height a piston or a flap makes), all on [`flume_case`];
 //!   [`solitary_wave`] (a solitary wave's height and speed over ten depths of travel);

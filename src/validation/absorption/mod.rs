@@ -34,7 +34,8 @@ pub fn flume(kh: f64) -> FlumeCase {
 }
 
 /// The cases of a level: kh and the resolution. Quick: kh = 2; full: 0.5, 1, 2 and 3. Always
-/// L/Δx = 40 and H/Δz = 4, the resolution of `regular_waves`' quick level.
+/// L/Δx = 40 and H/Δz = 4, the resolution of `regular_waves`'
+/// linear wave at its quick level.
 pub fn levels(quick: bool) -> Vec<(f64, Resolution)> {
     let res = Resolution {
         per_wavelength: 40,

@@ -38,7 +38,8 @@ pub fn flume(kind: PaddleKind, kh: f64) -> FlumeCase {
 }
 
 /// The cases of a level. Quick: the piston at kh = 1; full: the piston and the flap at kh =
-/// 0.5, 1 and 2. Always L/Δx = 40 and H/Δz = 4, the resolution of `regular_waves`' quick level.
+/// 0.5, 1 and 2. Always L/Δx = 40 and H/Δz = 4, the resolution of `regular_waves`'
+/// linear wave at its quick level.
 pub fn levels(quick: bool) -> Vec<(PaddleKind, f64, Resolution)> {
     let res = Resolution {
         per_wavelength: 40,
