@@ -12,6 +12,19 @@ use crate::sim::PySimulation;
 /// A chunk of steps between two looks at Ctrl-C doubles until it takes this long.
 const CHUNK: Duration = Duration::from_millis(50);
 
+/// The next chunk's steps after one of `chunk` steps took `took`: doubled below [`CHUNK`],
+/// halved above twice it (at least one step), else the same. Shared with the shallow-water
+/// solver's loop (`shallow`).
+pub(crate) fn next_chunk(chunk: u64, took: Duration) -> u64 {
+    if took < CHUNK {
+        chunk.saturating_mul(2)
+    } else if took > 2 * CHUNK {
+        (chunk / 2).max(1)
+    } else {
+        chunk
+    }
+}
+
 /// Where a chunk of one step runs: on a worker of the pool, which costs a round trip to wake
 /// it and wait (about 20 µs on a busy 2-core machine: 24 µs per `advance(1)` of one sphere,
 /// against 2 µs on the calling thread), or on the calling thread, where each parallel loop of
@@ -128,12 +141,7 @@ impl PySimulation {
                     .record(on_caller, clock.elapsed().as_secs_f64());
             }
             r.map_err(instability)?;
-            let took = clock.elapsed();
-            if took < CHUNK {
-                chunk = chunk.saturating_mul(2);
-            } else if took > 2 * CHUNK {
-                chunk = (chunk / 2).max(1);
-            }
+            chunk = next_chunk(chunk, clock.elapsed());
             if until.is_none() {
                 self.chunk = chunk;
                 steps -= k;

@@ -7,7 +7,7 @@
 //! bits of `riprap run --steps n`. The fields are copies, (ny, nx) with x along a row.
 
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
@@ -20,9 +20,6 @@ use riprap::scenario::shallow::{build, ShallowSource};
 use riprap::shallow::ShallowWater;
 
 use crate::{load, scenario_error, InstabilityError, Loaded};
-
-/// A chunk of steps between two looks at Ctrl-C doubles until it takes this long.
-const CHUNK: Duration = Duration::from_millis(50);
 
 /// A shallow-water scenario built into a running solver (see the module docs).
 #[pyclass(name = "ShallowSimulation", module = "riprap")]
@@ -67,8 +64,8 @@ impl PyShallow {
     }
 
     /// Steps towards `end` [s] with the GIL released on a worker of rayon's pool, in chunks
-    /// that double while they take less than `CHUNK` (and halve above twice that), looking
-    /// at Ctrl-C between them: `steps` steps, or (`until` = t) until the time reaches t; never
+    /// that double while they take less than `drive::CHUNK` (and halve above twice that),
+    /// looking at Ctrl-C between them: `steps` steps, or (`until` = t) until the time reaches t; never
     /// past `end`. A KeyboardInterrupt leaves the state at the end of the last whole step.
     fn drive(
         &mut self,
@@ -105,12 +102,7 @@ impl PyShallow {
                 })
             });
             r.map_err(|e| failure(e, &self.w))?;
-            let took = clock.elapsed();
-            if took < CHUNK {
-                chunk = chunk.saturating_mul(2);
-            } else if took > 2 * CHUNK {
-                chunk = (chunk / 2).max(1);
-            }
+            chunk = crate::drive::next_chunk(chunk, clock.elapsed());
             if until.is_none() {
                 steps -= taken;
             }

@@ -84,7 +84,15 @@ impl Verdict {
 /// harmonics.
 pub fn verdict(case: &FlumeCase, run: &Run) -> Verdict {
     let k = case.wavenumber();
-    let stations = case.separate(run);
+    let harmonics = match case.theory {
+        Theory::Linear => 1,
+        Theory::StreamFunction => HARMONICS,
+    };
+    // Per harmonic, per station; the first harmonic's give the reflection and the phase.
+    let parts: Vec<Vec<Separation>> = (1..=harmonics)
+        .map(|n| case.separate_harmonic(run, n))
+        .collect();
+    let stations = &parts[0];
     let heights = match case.theory {
         Theory::Linear => stations
             .iter()
@@ -96,9 +104,6 @@ pub fn verdict(case: &FlumeCase, run: &Run) -> Verdict {
                 .map(|&e| Complex64::new(e, 0.0))
                 .collect();
             let h0 = crest_to_trough(&theory);
-            let parts: Vec<Vec<Separation>> = (1..=HARMONICS)
-                .map(|n| case.separate_harmonic(run, n))
-                .collect();
             (0..stations.len())
                 .map(|s| {
                     let z: Vec<Complex64> = parts.iter().map(|p| p[s].incident).collect();
